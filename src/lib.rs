@@ -1,0 +1,15 @@
+//! cellstudio: battery design optimisation and parameterisation.
+//!
+//! The pipeline is model -> problem -> cost -> optimiser/sampler, fed by parameter sets and
+//! protocols, reported by plots.
+
+pub mod data;
+pub mod error;
+pub mod geometry;
+pub mod models;
+pub mod params;
+pub mod protocol;
+pub mod simulation;
+pub mod solver;
+
+pub use error::{Error, Result};

@@ -1,0 +1,369 @@
+//! Doyle-Fuller-Newman (pseudo-two-dimensional) model.
+//!
+//! States, in order: negative particle shells (x-node major), positive particle shells,
+//! electrolyte concentration `c_e` over all x volumes (mol/m^3), then the algebraic
+//! potentials `phi_e` over all x volumes, `phi_s` in the negative and in the positive
+//! electrode (V), and `T` (K) when the thermal submodel is on.
+//!
+//! Equations (x through the cell, r in each particle, SI units):
+//! - particles: `dc_s/dt = 1/r^2 d/dr (r^2 D_s dc_s/dr)`, `-D_s dc_s/dr|_R = j / F`;
+//! - electrolyte: `eps dc_e/dt = d/dx (eps^b D_e dc_e/dx) + (1 - t+) a j / F`, no flux at
+//!   the current collectors;
+//! - `d i_e/dx = a j`, `i_e = -kappa_eff (dphi_e/dx - 2 (1 - t+) chi R T / F dln c_e/dx)`;
+//! - `d i_s/dx = -a j`, `i_s = -sigma_eff dphi_s/dx`, `phi_s(0) = 0`, `i_s(L) = I / A`;
+//! - `j = 2 j0 sinh(alpha F (phi_s - phi_e - U) / (R T))`.
+//!
+//! Voltage: `phi_s(L) - phi_s(0) - I R_contact`.
+
+use super::electrochem::{Electrochem, Side};
+use super::electrolyte::ElectrolyteOp;
+use super::kinetics::butler_volmer;
+use super::submodels::thermal::bernardi_heat;
+use super::{Model, PhysicsModel};
+use crate::params::ParameterSet;
+
+#[derive(Clone, Debug)]
+pub struct Dfn {
+    pub ec: Electrochem,
+    /// Index ranges of the state blocks.
+    pub layout: Layout,
+    electrolyte: ElectrolyteOp,
+    mass: Vec<f64>,
+    scale: Vec<f64>,
+}
+
+/// Where each block of the DFN state vector starts.
+#[derive(Clone, Copy, Debug)]
+pub struct Layout {
+    pub nxn: usize,
+    pub nxs: usize,
+    pub nxp: usize,
+    pub nrn: usize,
+    pub nrp: usize,
+    pub cs_n: usize,
+    pub cs_p: usize,
+    pub ce: usize,
+    pub phie: usize,
+    pub phis_n: usize,
+    pub phis_p: usize,
+    pub temp: Option<usize>,
+    pub len: usize,
+}
+
+impl Layout {
+    fn new(ec: &Electrochem) -> Self {
+        let d = &ec.disc;
+        let (nxn, nxs, nxp) = (d.x_n.len(), d.x_s.len(), d.x_p.len());
+        let (nrn, nrp) = (d.sphere_n.len(), d.sphere_p.len());
+        let nx = nxn + nxs + nxp;
+        let cs_n = 0;
+        let cs_p = cs_n + nxn * nrn;
+        let ce = cs_p + nxp * nrp;
+        let phie = ce + nx;
+        let phis_n = phie + nx;
+        let phis_p = phis_n + nxn;
+        let end = phis_p + nxp;
+        let temp = ec.submodels.thermal.then_some(end);
+        Self { nxn, nxs, nxp, nrn, nrp, cs_n, cs_p, ce, phie, phis_n, phis_p, temp, len: end + usize::from(temp.is_some()) }
+    }
+
+    pub fn nx(&self) -> usize {
+        self.nxn + self.nxs + self.nxp
+    }
+
+    /// For x volume `i`: the electrode it lies in, its index within that electrode, and the
+    /// start of its particle shells.
+    pub fn electrode_of(&self, i: usize) -> Option<(Side, usize, usize)> {
+        if i < self.nxn {
+            Some((Side::Negative, i, self.cs_n + i * self.nrn))
+        } else if i >= self.nxn + self.nxs {
+            let k = i - self.nxn - self.nxs;
+            Some((Side::Positive, k, self.cs_p + k * self.nrp))
+        } else {
+            None
+        }
+    }
+
+    fn nr(&self, side: Side) -> usize {
+        match side {
+            Side::Negative => self.nrn,
+            Side::Positive => self.nrp,
+        }
+    }
+
+    fn phis(&self, side: Side, k: usize) -> usize {
+        match side {
+            Side::Negative => self.phis_n + k,
+            Side::Positive => self.phis_p + k,
+        }
+    }
+}
+
+impl Dfn {
+    pub fn new(ec: Electrochem) -> Self {
+        let layout = Layout::new(&ec);
+        let mut mass = vec![0.0; layout.len];
+        mass[..layout.phie].iter_mut().for_each(|m| *m = 1.0);
+        let p = &ec.params;
+        let mut scale = vec![0.0; layout.len];
+        scale[layout.cs_n..layout.cs_p].iter_mut().for_each(|s| *s = p.negative.max_concentration);
+        scale[layout.cs_p..layout.ce].iter_mut().for_each(|s| *s = p.positive.max_concentration);
+        scale[layout.ce..layout.phie].iter_mut().for_each(|s| *s = p.electrolyte.initial_concentration);
+        scale[layout.phie..layout.phis_p + layout.nxp].iter_mut().for_each(|s| *s = 1.0);
+        if let Some(t) = layout.temp {
+            mass[t] = 1.0;
+            scale[t] = p.thermal.ambient_temperature;
+        }
+        let electrolyte = ElectrolyteOp::new(&ec);
+        Self { ec, layout, electrolyte, mass, scale }
+    }
+
+    fn temp(&self, y: &[f64]) -> f64 {
+        match self.layout.temp {
+            Some(t) => y[t],
+            None => self.ec.params.thermal.ambient_temperature,
+        }
+    }
+
+    /// Surface concentration of the particle at electrode volume starting at `start`.
+    fn surface(&self, side: Side, y: &[f64], start: usize) -> f64 {
+        self.ec.sphere(side).surface(&y[start..start + self.layout.nr(side)])
+    }
+
+    /// Interfacial current density (A/m^2) at x volume `i` of electrode `side`.
+    fn interfacial_current(&self, y: &[f64], i: usize, side: Side, k: usize, start: usize, temp: f64) -> f64 {
+        let l = &self.layout;
+        let c_s = self.surface(side, y, start);
+        let c_e = y[l.ce + i];
+        let eta = y[l.phis(side, k)] - y[l.phie + i] - self.ec.ocp(side, c_s);
+        let alpha = self.ec.electrode(side).charge_transfer_coefficient;
+        butler_volmer(self.ec.j0(side, c_e, c_s, temp), eta, alpha, temp)
+    }
+
+    /// Effective solid conductivity (S/m) of an electrode.
+    fn sigma_eff(&self, side: Side) -> f64 {
+        let e = self.ec.electrode(side);
+        e.conductivity * (1.0 - e.porosity).powf(e.bruggeman_solid)
+    }
+}
+
+impl Model for Dfn {
+    fn name(&self) -> String {
+        "DFN".into()
+    }
+
+    fn len(&self) -> usize {
+        self.layout.len
+    }
+
+    fn mass(&self) -> &[f64] {
+        &self.mass
+    }
+
+    fn scale(&self) -> &[f64] {
+        &self.scale
+    }
+
+    fn jacobian_pattern(&self) -> Vec<(usize, usize)> {
+        let l = &self.layout;
+        let nx = l.nx();
+        let mut p = Vec::new();
+        let neighbours = |i: usize| i.saturating_sub(1)..(i + 2).min(nx);
+        for i in 0..nx {
+            let kinetics: Vec<usize> = match l.electrode_of(i) {
+                Some((side, k, start)) => {
+                    let nr = l.nr(side);
+                    vec![start + nr - 2, start + nr - 1, l.ce + i, l.phie + i, l.phis(side, k)]
+                }
+                None => Vec::new(),
+            };
+            // electrolyte concentration and potential rows
+            for m in neighbours(i) {
+                p.push((l.ce + i, l.ce + m));
+                p.push((l.phie + i, l.phie + m));
+                p.push((l.phie + i, l.ce + m));
+            }
+            for &c in &kinetics {
+                p.push((l.ce + i, c));
+                p.push((l.phie + i, c));
+            }
+            if let Some((side, k, start)) = l.electrode_of(i) {
+                let nr = l.nr(side);
+                for s in 0..nr {
+                    for m in s.saturating_sub(1)..(s + 2).min(nr) {
+                        p.push((start + s, start + m));
+                    }
+                }
+                for &c in &kinetics {
+                    p.push((start + nr - 1, c));
+                    p.push((l.phis(side, k), c));
+                }
+                let ne = if side == Side::Negative { l.nxn } else { l.nxp };
+                for m in k.saturating_sub(1)..(k + 2).min(ne) {
+                    p.push((l.phis(side, k), l.phis(side, m)));
+                }
+            }
+        }
+        if let Some(t) = l.temp {
+            for r in 0..l.len {
+                p.push((r, t));
+            }
+        }
+        p
+    }
+
+    fn initial_state(&self) -> Vec<f64> {
+        let l = &self.layout;
+        let p = &self.ec.params;
+        let mut y = vec![0.0; l.len];
+        y[l.cs_n..l.cs_p].iter_mut().for_each(|v| *v = p.negative.initial_concentration);
+        y[l.cs_p..l.ce].iter_mut().for_each(|v| *v = p.positive.initial_concentration);
+        y[l.ce..l.phie].iter_mut().for_each(|v| *v = p.electrolyte.initial_concentration);
+        // Potentials at open circuit: phi_s_n = 0, phi_e = -U_n, phi_s_p = U_p - U_n.
+        let un = self.ec.ocp(Side::Negative, p.negative.initial_concentration);
+        let up = self.ec.ocp(Side::Positive, p.positive.initial_concentration);
+        y[l.phie..l.phis_n].iter_mut().for_each(|v| *v = -un);
+        y[l.phis_p..l.phis_p + l.nxp].iter_mut().for_each(|v| *v = up - un);
+        if let Some(t) = l.temp {
+            y[t] = p.thermal.initial_temperature;
+        }
+        y
+    }
+
+    fn rhs(&self, y: &[f64], current: f64, out: &mut [f64]) {
+        let l = &self.layout;
+        let ec = &self.ec;
+        let nx = l.nx();
+        let temp = self.temp(y);
+        let i_app = current / ec.area();
+        let vols = &self.electrolyte.vols;
+
+        // Interfacial current a*j per x volume (A/m^3), and particles.
+        let mut aj = vec![0.0; nx];
+        for i in 0..nx {
+            if let Some((side, k, start)) = l.electrode_of(i) {
+                let j = self.interfacial_current(y, i, side, k, start, temp);
+                aj[i] = vols[i].a * j;
+                let nr = l.nr(side);
+                ec.sphere(side).diffusion(
+                    &y[start..start + nr],
+                    ec.diffusivity(side, temp),
+                    Electrochem::molar_flux(j),
+                    &mut out[start..start + nr],
+                );
+            }
+        }
+
+        // Electrolyte: concentration, then charge conservation with face-averaged coefficients.
+        let ce = &y[l.ce..l.phie];
+        let phie = &y[l.phie..l.phis_n];
+        self.electrolyte.concentration_rhs(ec, ce, &aj, temp, &mut out[l.ce..l.phie]);
+        let (kappa, kd) = self.electrolyte.conductivities(ec, ce, temp);
+        let mut i_left = 0.0;
+        for i in 0..nx {
+            let i_right = if i + 1 < nx {
+                let g = self.electrolyte.gaps[i];
+                -0.5 * (kappa[i] + kappa[i + 1]) * (phie[i + 1] - phie[i]) / g
+                    + 0.5 * (kd[i] + kd[i + 1]) * (ce[i + 1] - ce[i]) / g
+            } else {
+                0.0
+            };
+            out[l.phie + i] = aj[i] - (i_right - i_left) / vols[i].dx;
+            i_left = i_right;
+        }
+
+        // Solid potentials.
+        for (side, n, first) in [(Side::Negative, l.nxn, 0), (Side::Positive, l.nxp, l.nxn + l.nxs)] {
+            let sigma = self.sigma_eff(side);
+            let phis = &y[l.phis(side, 0)..l.phis(side, 0) + n];
+            let dx = vols[first].dx;
+            for k in 0..n {
+                // current density i_s at the left and right faces of volume k
+                let left = if k > 0 {
+                    -sigma * (phis[k] - phis[k - 1]) / dx
+                } else if side == Side::Negative {
+                    -sigma * (phis[0] - 0.0) / (0.5 * dx)
+                } else {
+                    0.0
+                };
+                let right = if k + 1 < n {
+                    -sigma * (phis[k + 1] - phis[k]) / dx
+                } else if side == Side::Positive {
+                    i_app
+                } else {
+                    0.0
+                };
+                out[l.phis(side, k)] = -(right - left) / dx - aj[first + k];
+            }
+        }
+
+        if let Some(t) = l.temp {
+            let v = self.voltage(y, current);
+            let heat = bernardi_heat(current, self.mean_surface_ocv(y), v, temp, ec.docv_dt());
+            out[t] = ec.thermal.rate(heat, temp);
+        }
+    }
+
+    fn voltage(&self, y: &[f64], current: f64) -> f64 {
+        let l = &self.layout;
+        let dx = self.electrolyte.vols[l.nx() - 1].dx;
+        let last = y[l.phis_p + l.nxp - 1];
+        // phi_s at x = L from the last volume and the known boundary current I / A.
+        let phi_l = last - current / self.ec.area() / self.sigma_eff(Side::Positive) * 0.5 * dx;
+        phi_l - current * self.ec.contact_resistance()
+    }
+
+    fn temperature(&self, y: &[f64]) -> f64 {
+        self.temp(y)
+    }
+
+    fn solid_lithium(&self, y: &[f64]) -> f64 {
+        let l = &self.layout;
+        let mut total = 0.0;
+        for i in 0..l.nx() {
+            if let Some((side, _, start)) = l.electrode_of(i) {
+                let c = &y[start..start + l.nr(side)];
+                total += self.ec.particle_lithium(side, c, self.electrolyte.vols[i].dx);
+            }
+        }
+        total
+    }
+
+    fn open_circuit_voltage(&self, y: &[f64]) -> f64 {
+        let l = &self.layout;
+        let mut mean = [0.0; 2];
+        for i in 0..l.nx() {
+            if let Some((side, _, start)) = l.electrode_of(i) {
+                let c = self.ec.sphere(side).average(&y[start..start + l.nr(side)]);
+                let (slot, n) = if side == Side::Negative { (0, l.nxn) } else { (1, l.nxp) };
+                mean[slot] += c / n as f64;
+            }
+        }
+        self.ec.ocp(Side::Positive, mean[1]) - self.ec.ocp(Side::Negative, mean[0])
+    }
+}
+
+impl Dfn {
+    /// OCV from the x-averaged surface OCPs (V), used by the heat source.
+    fn mean_surface_ocv(&self, y: &[f64]) -> f64 {
+        let l = &self.layout;
+        let mut u = [0.0; 2];
+        for i in 0..l.nx() {
+            if let Some((side, _, start)) = l.electrode_of(i) {
+                let (slot, n) = if side == Side::Negative { (0, l.nxn) } else { (1, l.nxp) };
+                u[slot] += self.ec.ocp(side, self.surface(side, y, start)) / n as f64;
+            }
+        }
+        u[1] - u[0]
+    }
+}
+
+impl PhysicsModel for Dfn {
+    fn electrochem(&self) -> &Electrochem {
+        &self.ec
+    }
+    fn set_params(&mut self, params: ParameterSet) {
+        self.ec.set_params(params);
+        self.electrolyte.refresh(&self.ec);
+    }
+}

@@ -1,0 +1,112 @@
+//! What the physics-based models share: the parameter set, the discretisation, and the
+//! electrode-level closures (OCP, exchange current, diffusivities with temperature).
+
+use super::Submodels;
+use super::kinetics::{arrhenius, exchange_current};
+use super::submodels::LumpedThermal;
+use crate::geometry::{Discretisation, SphereMesh};
+use crate::params::{Electrode, FARADAY, ParameterSet};
+
+/// Which electrode.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Side {
+    Negative,
+    Positive,
+}
+
+/// Parameters plus discretisation, shared by SPM, SPMe and DFN.
+#[derive(Clone, Debug)]
+pub struct Electrochem {
+    pub params: ParameterSet,
+    pub disc: Discretisation,
+    pub submodels: Submodels,
+    pub thermal: LumpedThermal,
+}
+
+impl Electrochem {
+    pub fn new(params: ParameterSet, disc: Discretisation, submodels: Submodels) -> Self {
+        let thermal = LumpedThermal::new(&params);
+        Self { params, disc, submodels, thermal }
+    }
+
+    /// Replaces the parameters (geometry must be unchanged) and refreshes derived constants.
+    pub fn set_params(&mut self, params: ParameterSet) {
+        self.thermal = LumpedThermal::new(&params);
+        self.params = params;
+    }
+
+    pub fn electrode(&self, side: Side) -> &Electrode {
+        match side {
+            Side::Negative => &self.params.negative,
+            Side::Positive => &self.params.positive,
+        }
+    }
+
+    pub fn sphere(&self, side: Side) -> &SphereMesh {
+        match side {
+            Side::Negative => &self.disc.sphere_n,
+            Side::Positive => &self.disc.sphere_p,
+        }
+    }
+
+    /// Plate area (m^2).
+    pub fn area(&self) -> f64 {
+        self.params.cell.area()
+    }
+
+    /// Open-circuit potential (V) at particle concentration `c_s` (mol/m^3).
+    pub fn ocp(&self, side: Side, c_s: f64) -> f64 {
+        let e = self.electrode(side);
+        e.ocp.eval(c_s / e.max_concentration)
+    }
+
+    /// Particle diffusivity (m^2/s) at temperature `t` (K).
+    pub fn diffusivity(&self, side: Side, t: f64) -> f64 {
+        let e = self.electrode(side);
+        e.diffusivity * arrhenius(e.diffusivity_activation_energy, self.t_ref(), t)
+    }
+
+    /// Exchange-current density (A/m^2).
+    pub fn j0(&self, side: Side, c_e: f64, c_s: f64, t: f64) -> f64 {
+        let e = self.electrode(side);
+        let k = e.rate_constant * arrhenius(e.rate_activation_energy, self.t_ref(), t);
+        exchange_current(k, c_e, c_s, e.max_concentration)
+    }
+
+    /// Electrode-averaged interfacial current density (A/m^2) for cell current `current` (A):
+    /// positive (deintercalation) in the negative electrode on discharge.
+    pub fn mean_interfacial_current(&self, side: Side, current: f64) -> f64 {
+        let e = self.electrode(side);
+        let j = current / (self.area() * e.surface_area_density() * e.thickness);
+        match side {
+            Side::Negative => j,
+            Side::Positive => -j,
+        }
+    }
+
+    /// Series resistance of the contact-resistance submodel (ohm), zero when it is off.
+    pub fn contact_resistance(&self) -> f64 {
+        if self.submodels.contact_resistance { self.params.cell.contact_resistance } else { 0.0 }
+    }
+
+    pub fn t_ref(&self) -> f64 {
+        self.params.thermal.reference_temperature
+    }
+
+    /// Lithium (mol) in the particles of one electrode region of thickness `thickness` (m)
+    /// whose particles hold shell concentrations `c`.
+    pub fn particle_lithium(&self, side: Side, c: &[f64], thickness: f64) -> f64 {
+        let e = self.electrode(side);
+        self.sphere(side).average(c) * e.active_fraction * thickness * self.area()
+    }
+
+    /// Molar flux out of the particle surface (mol/(m^2 s)) for interfacial current `j`.
+    pub fn molar_flux(j: f64) -> f64 {
+        j / FARADAY
+    }
+
+    /// Entropic coefficient of the cell's OCV, dU_p/dT - dU_n/dT (V/K).
+    pub fn docv_dt(&self) -> f64 {
+        self.params.positive.ocp_entropic_change - self.params.negative.ocp_entropic_change
+    }
+}

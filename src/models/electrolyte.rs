@@ -1,0 +1,111 @@
+//! Finite-volume electrolyte transport through negative electrode, separator and positive
+//! electrode, shared by SPMe and DFN.
+
+use super::electrochem::{Electrochem, Side};
+use super::kinetics::arrhenius;
+use crate::params::{FARADAY, GAS_CONSTANT};
+
+/// Per-x-volume material properties.
+#[derive(Clone, Debug)]
+pub struct Volume {
+    /// Electrode the volume lies in (`None` in the separator).
+    pub side: Option<Side>,
+    /// Porosity (-).
+    pub eps: f64,
+    /// Transport factor eps^b (-).
+    pub tortuosity: f64,
+    /// Specific interfacial area (1/m), zero in the separator.
+    pub a: f64,
+    /// Width (m).
+    pub dx: f64,
+}
+
+/// The x-direction operator of the electrolyte.
+#[derive(Clone, Debug)]
+pub struct ElectrolyteOp {
+    pub vols: Vec<Volume>,
+    /// Centre-to-centre distances between neighbouring volumes (m), `n_x - 1` of them.
+    pub gaps: Vec<f64>,
+}
+
+impl ElectrolyteOp {
+    pub fn new(ec: &Electrochem) -> Self {
+        let centres = ec.disc.x_centres();
+        let gaps = centres.windows(2).map(|w| w[1] - w[0]).collect();
+        let mut op = Self { vols: Vec::new(), gaps };
+        op.refresh(ec);
+        op
+    }
+
+    /// Recomputes the material properties after a parameter change.
+    pub fn refresh(&mut self, ec: &Electrochem) {
+        let p = &ec.params;
+        let d = &ec.disc;
+        let widths = d.x_widths();
+        let (nxn, nxs) = (d.x_n.len(), d.x_s.len());
+        self.vols = widths
+            .iter()
+            .enumerate()
+            .map(|(i, &dx)| {
+                let side = if i < nxn {
+                    Some(Side::Negative)
+                } else if i >= nxn + nxs {
+                    Some(Side::Positive)
+                } else {
+                    None
+                };
+                let (eps, b, a) = match side {
+                    Some(s) => {
+                        let e = ec.electrode(s);
+                        (e.porosity, e.bruggeman_electrolyte, e.surface_area_density())
+                    }
+                    None => (p.separator.porosity, p.separator.bruggeman, 0.0),
+                };
+                Volume { side, eps, tortuosity: eps.powf(b), a, dx }
+            })
+            .collect();
+    }
+
+    pub fn len(&self) -> usize {
+        self.vols.len()
+    }
+
+    /// `dc_e/dt` (mol/(m^3 s)) for concentrations `ce` and volumetric reaction currents `aj`
+    /// (A/m^3) at temperature `temp` (K).
+    pub fn concentration_rhs(&self, ec: &Electrochem, ce: &[f64], aj: &[f64], temp: f64, out: &mut [f64]) {
+        let p = &ec.params.electrolyte;
+        let arr = arrhenius(p.activation_energy, ec.t_ref(), temp);
+        let nx = self.len();
+        let mut prev_node = self.vols[0].tortuosity * p.diffusivity.eval(ce[0]) * arr;
+        let mut flux_left = 0.0;
+        for i in 0..nx {
+            let flux_right = if i + 1 < nx {
+                let node = self.vols[i + 1].tortuosity * p.diffusivity.eval(ce[i + 1]) * arr;
+                let f = -0.5 * (prev_node + node) * (ce[i + 1] - ce[i]) / self.gaps[i];
+                prev_node = node;
+                f
+            } else {
+                0.0
+            };
+            let v = &self.vols[i];
+            out[i] = ((flux_left - flux_right) / v.dx + (1.0 - p.transference_number) * aj[i] / FARADAY) / v.eps;
+            flux_left = flux_right;
+        }
+    }
+
+    /// Effective conductivity `eps^b kappa(c_e)` (S/m) at each volume, and the coefficient of
+    /// `dc_e/dx` in the ionic current, `kappa_eff 2 (1 - t+) chi R T / (F c_e)` (A m/mol).
+    pub fn conductivities(&self, ec: &Electrochem, ce: &[f64], temp: f64) -> (Vec<f64>, Vec<f64>) {
+        let p = &ec.params.electrolyte;
+        let arr = arrhenius(p.activation_energy, ec.t_ref(), temp);
+        let factor = 2.0 * (1.0 - p.transference_number) * p.thermodynamic_factor * GAS_CONSTANT * temp / FARADAY;
+        let kappa: Vec<f64> = self
+            .vols
+            .iter()
+            .zip(ce)
+            .map(|(v, &c)| v.tortuosity * p.conductivity.eval(c) * arr)
+            .collect();
+        let kd = kappa.iter().zip(ce).map(|(k, &c)| k * factor / c.max(1e-6)).collect();
+        (kappa, kd)
+    }
+}

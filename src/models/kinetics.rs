@@ -1,0 +1,27 @@
+//! Butler-Volmer kinetics and Arrhenius temperature dependence.
+
+use crate::params::{FARADAY, GAS_CONSTANT};
+
+/// Arrhenius factor `exp(E / R (1/T_ref - 1/T))` for activation energy `e` (J/mol).
+pub fn arrhenius(e: f64, t_ref: f64, t: f64) -> f64 {
+    if e == 0.0 { 1.0 } else { (e / GAS_CONSTANT * (1.0 / t_ref - 1.0 / t)).exp() }
+}
+
+/// Exchange-current density `j0 = k c_e^0.5 c_s^0.5 (c_max - c_s)^0.5` (A/m^2), with rate
+/// constant `k` (A/m^2 (m^3/mol)^1.5) already temperature-corrected. Concentrations are
+/// clamped at zero so that a Newton iterate outside the physical range stays finite.
+pub fn exchange_current(k: f64, c_e: f64, c_s: f64, c_max: f64) -> f64 {
+    k * (c_e.max(0.0) * c_s.max(0.0) * (c_max - c_s).max(0.0)).sqrt()
+}
+
+/// Symmetric Butler-Volmer interfacial current density `2 j0 sinh(alpha F eta / (R T))`
+/// (A/m^2) for overpotential `eta` (V).
+pub fn butler_volmer(j0: f64, eta: f64, alpha: f64, t: f64) -> f64 {
+    2.0 * j0 * (alpha * FARADAY * eta / (GAS_CONSTANT * t)).sinh()
+}
+
+/// Overpotential (V) that drives interfacial current density `j` (A/m^2): the inverse of
+/// [`butler_volmer`].
+pub fn overpotential(j: f64, j0: f64, alpha: f64, t: f64) -> f64 {
+    GAS_CONSTANT * t / (alpha * FARADAY) * (j / (2.0 * j0)).asinh()
+}

@@ -1,0 +1,101 @@
+//! Battery models sharing one state/output interface: SPM, SPMe, DFN and a Thevenin ECM,
+//! with switchable submodels (contact resistance, lumped thermal).
+
+pub mod dfn;
+
+pub mod electrochem;
+pub mod electrolyte;
+pub mod kinetics;
+pub mod spm;
+pub mod spme;
+pub mod submodels;
+
+use serde::{Deserialize, Serialize};
+
+pub use electrochem::Electrochem;
+
+use crate::params::ParameterSet;
+
+/// Which physics-based model to build.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum ModelKind {
+    /// Single particle model.
+    Spm,
+    /// Single particle model with electrolyte.
+    Spme,
+    /// Doyle-Fuller-Newman pseudo-two-dimensional model.
+    Dfn,
+}
+
+impl std::str::FromStr for ModelKind {
+    type Err = crate::error::Error;
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        match s.to_ascii_lowercase().as_str() {
+            "spm" => Ok(ModelKind::Spm),
+            "spme" => Ok(ModelKind::Spme),
+            "dfn" => Ok(ModelKind::Dfn),
+            other => Err(crate::error::Error::InvalidSetting {
+                field: "model".into(),
+                reason: format!("unknown model `{other}` (expected spm, spme or dfn)"),
+            }),
+        }
+    }
+}
+
+impl std::fmt::Display for ModelKind {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            ModelKind::Spm => "SPM",
+            ModelKind::Spme => "SPMe",
+            ModelKind::Dfn => "DFN",
+        })
+    }
+}
+
+/// Optional submodels.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct Submodels {
+    /// Series contact resistance `cell.contact_resistance` (ohm).
+    pub contact_resistance: bool,
+    /// Lumped (0-D) thermal model with Arrhenius-dependent diffusivities and rate constants.
+    pub thermal: bool,
+}
+
+/// The state/output interface every model offers to the solver and to reports.
+///
+/// States are laid out by the model; `current` is the applied current (A, discharge
+/// positive) at the time of the call.
+pub trait Model: Send + Sync {
+    /// Short name, e.g. "DFN".
+    fn name(&self) -> String;
+    /// Number of states.
+    fn len(&self) -> usize;
+    /// Mass-matrix diagonal: 1 for differential states, 0 for algebraic ones.
+    fn mass(&self) -> &[f64];
+    /// Typical magnitude of each state (for tolerances and difference steps).
+    fn scale(&self) -> &[f64];
+    /// Structural non-zeros `(row, col)` of `df/dy` (may omit weak dense couplings).
+    fn jacobian_pattern(&self) -> Vec<(usize, usize)>;
+    /// Initial state; algebraic states hold a guess that `consistent_initialisation` refines.
+    fn initial_state(&self) -> Vec<f64>;
+    /// Right-hand side `f` of `M y' = f(y)`.
+    fn rhs(&self, y: &[f64], current: f64, out: &mut [f64]);
+    /// Terminal voltage (V).
+    fn voltage(&self, y: &[f64], current: f64) -> f64;
+    /// Cell temperature (K).
+    fn temperature(&self, y: &[f64]) -> f64;
+    /// Lithium held in the solid phases (mol).
+    fn solid_lithium(&self, y: &[f64]) -> f64;
+    /// Open-circuit voltage at the particles' average stoichiometries (V).
+    fn open_circuit_voltage(&self, y: &[f64]) -> f64;
+}
+
+/// A physics-based model built on a parameter set, whose non-geometric parameters can be
+/// replaced without rebuilding it.
+pub trait PhysicsModel: Model {
+    fn electrochem(&self) -> &Electrochem;
+    /// Replaces the parameters; the caller guarantees the geometry is unchanged.
+    fn set_params(&mut self, params: ParameterSet);
+}

@@ -1,0 +1,159 @@
+//! Single particle model: one representative particle per electrode, uniform interfacial
+//! current, electrolyte at its initial concentration.
+//!
+//! States: negative shells `c_n` (mol/m^3), positive shells `c_p`, then `T` (K) when the
+//! thermal submodel is on.
+
+use super::electrochem::{Electrochem, Side};
+use super::kinetics::overpotential;
+use super::submodels::thermal::bernardi_heat;
+use super::{Model, PhysicsModel};
+use crate::params::ParameterSet;
+
+#[derive(Clone, Debug)]
+pub struct Spm {
+    pub ec: Electrochem,
+    mass: Vec<f64>,
+    scale: Vec<f64>,
+}
+
+impl Spm {
+    pub fn new(ec: Electrochem) -> Self {
+        let (nn, np) = (ec.disc.sphere_n.len(), ec.disc.sphere_p.len());
+        let n = nn + np + usize::from(ec.submodels.thermal);
+        let mut scale = vec![ec.params.negative.max_concentration; nn];
+        scale.extend(std::iter::repeat_n(ec.params.positive.max_concentration, np));
+        if ec.submodels.thermal {
+            scale.push(ec.params.thermal.ambient_temperature);
+        }
+        Self { ec, mass: vec![1.0; n], scale }
+    }
+
+    fn split<'a>(&self, y: &'a [f64]) -> (&'a [f64], &'a [f64]) {
+        let nn = self.ec.disc.sphere_n.len();
+        let np = self.ec.disc.sphere_p.len();
+        (&y[..nn], &y[nn..nn + np])
+    }
+
+    /// Surface concentrations (mol/m^3) of the negative and positive particles.
+    pub fn surface_concentrations(&self, y: &[f64]) -> (f64, f64) {
+        let (cn, cp) = self.split(y);
+        (self.ec.disc.sphere_n.surface(cn), self.ec.disc.sphere_p.surface(cp))
+    }
+}
+
+impl Model for Spm {
+    fn name(&self) -> String {
+        "SPM".into()
+    }
+
+    fn len(&self) -> usize {
+        self.mass.len()
+    }
+
+    fn mass(&self) -> &[f64] {
+        &self.mass
+    }
+
+    fn scale(&self) -> &[f64] {
+        &self.scale
+    }
+
+    fn jacobian_pattern(&self) -> Vec<(usize, usize)> {
+        let nn = self.ec.disc.sphere_n.len();
+        let np = self.ec.disc.sphere_p.len();
+        let mut p = Vec::new();
+        for (start, len) in [(0, nn), (nn, np)] {
+            for k in 0..len {
+                for m in k.saturating_sub(1)..(k + 2).min(len) {
+                    p.push((start + k, start + m));
+                }
+            }
+        }
+        if self.ec.submodels.thermal {
+            let t = nn + np;
+            for i in 0..t {
+                p.push((i, t));
+            }
+            for i in [nn - 2, nn - 1, t - 2, t - 1, t] {
+                p.push((t, i));
+            }
+        }
+        p
+    }
+
+    fn initial_state(&self) -> Vec<f64> {
+        let p = &self.ec.params;
+        let mut y = vec![p.negative.initial_concentration; self.ec.disc.sphere_n.len()];
+        y.extend(std::iter::repeat_n(p.positive.initial_concentration, self.ec.disc.sphere_p.len()));
+        if self.ec.submodels.thermal {
+            y.push(p.thermal.initial_temperature);
+        }
+        y
+    }
+
+    fn rhs(&self, y: &[f64], current: f64, out: &mut [f64]) {
+        let ec = &self.ec;
+        let nn = ec.disc.sphere_n.len();
+        let np = ec.disc.sphere_p.len();
+        let temp = self.temperature(y);
+        let (cn, cp) = self.split(y);
+        for (side, c, range) in [(Side::Negative, cn, 0..nn), (Side::Positive, cp, nn..nn + np)] {
+            let flux = Electrochem::molar_flux(ec.mean_interfacial_current(side, current));
+            ec.sphere(side).diffusion(c, ec.diffusivity(side, temp), flux, &mut out[range]);
+        }
+        if ec.submodels.thermal {
+            let (sn, sp) = self.surface_concentrations(y);
+            let ocv = ec.ocp(Side::Positive, sp) - ec.ocp(Side::Negative, sn);
+            let v = self.voltage(y, current);
+            let heat = bernardi_heat(current, ocv, v, temp, ec.docv_dt());
+            out[nn + np] = ec.thermal.rate(heat, temp);
+        }
+    }
+
+    fn voltage(&self, y: &[f64], current: f64) -> f64 {
+        let ec = &self.ec;
+        let temp = self.temperature(y);
+        let (sn, sp) = self.surface_concentrations(y);
+        let c_e = ec.params.electrolyte.initial_concentration;
+        let eta = |side: Side, c_s: f64| {
+            let e = ec.electrode(side);
+            let j = ec.mean_interfacial_current(side, current);
+            overpotential(j, ec.j0(side, c_e, c_s, temp), e.charge_transfer_coefficient, temp)
+        };
+        ec.ocp(Side::Positive, sp) + eta(Side::Positive, sp)
+            - ec.ocp(Side::Negative, sn)
+            - eta(Side::Negative, sn)
+            - current * ec.contact_resistance()
+    }
+
+    fn temperature(&self, y: &[f64]) -> f64 {
+        if self.ec.submodels.thermal {
+            y[y.len() - 1]
+        } else {
+            self.ec.params.thermal.ambient_temperature
+        }
+    }
+
+    fn solid_lithium(&self, y: &[f64]) -> f64 {
+        let (cn, cp) = self.split(y);
+        let p = &self.ec.params;
+        self.ec.particle_lithium(Side::Negative, cn, p.negative.thickness)
+            + self.ec.particle_lithium(Side::Positive, cp, p.positive.thickness)
+    }
+
+    fn open_circuit_voltage(&self, y: &[f64]) -> f64 {
+        let (cn, cp) = self.split(y);
+        self.ec.ocp(Side::Positive, self.ec.disc.sphere_p.average(cp))
+            - self.ec.ocp(Side::Negative, self.ec.disc.sphere_n.average(cn))
+    }
+}
+
+impl PhysicsModel for Spm {
+    fn electrochem(&self) -> &Electrochem {
+        &self.ec
+    }
+    fn set_params(&mut self, params: ParameterSet) {
+        self.ec.set_params(params);
+    }
+}

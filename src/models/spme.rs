@@ -1,0 +1,244 @@
+//! Single particle model with electrolyte: one representative particle per electrode with
+//! uniform interfacial current, plus electrolyte diffusion through the cell; the voltage adds
+//! the electrolyte's concentration and ohmic overpotentials (composite form) and the solid
+//! phase's ohmic drop.
+//!
+//! States: negative shells, positive shells (mol/m^3), electrolyte concentration over all x
+//! volumes (mol/m^3), then `T` (K) when the thermal submodel is on.
+
+use super::electrochem::{Electrochem, Side};
+use super::electrolyte::ElectrolyteOp;
+use super::kinetics::overpotential;
+use super::submodels::thermal::bernardi_heat;
+use super::{Model, PhysicsModel};
+use crate::params::ParameterSet;
+
+#[derive(Clone, Debug)]
+pub struct Spme {
+    pub ec: Electrochem,
+    electrolyte: ElectrolyteOp,
+    mass: Vec<f64>,
+    scale: Vec<f64>,
+}
+
+impl Spme {
+    pub fn new(ec: Electrochem) -> Self {
+        let electrolyte = ElectrolyteOp::new(&ec);
+        let (nn, np, nx) = (ec.disc.sphere_n.len(), ec.disc.sphere_p.len(), electrolyte.len());
+        let p = &ec.params;
+        let mut scale = vec![p.negative.max_concentration; nn];
+        scale.extend(std::iter::repeat_n(p.positive.max_concentration, np));
+        scale.extend(std::iter::repeat_n(p.electrolyte.initial_concentration, nx));
+        if ec.submodels.thermal {
+            scale.push(p.thermal.ambient_temperature);
+        }
+        let mass = vec![1.0; scale.len()];
+        Self { ec, electrolyte, mass, scale }
+    }
+
+    fn blocks<'a>(&self, y: &'a [f64]) -> (&'a [f64], &'a [f64], &'a [f64]) {
+        let nn = self.ec.disc.sphere_n.len();
+        let np = self.ec.disc.sphere_p.len();
+        let nx = self.electrolyte.len();
+        (&y[..nn], &y[nn..nn + np], &y[nn + np..nn + np + nx])
+    }
+
+    fn temp(&self, y: &[f64]) -> f64 {
+        if self.ec.submodels.thermal { y[y.len() - 1] } else { self.ec.params.thermal.ambient_temperature }
+    }
+
+    /// Volumetric reaction current `a j` (A/m^3) in each x volume: uniform in each electrode.
+    fn reaction(&self, current: f64) -> Vec<f64> {
+        self.electrolyte
+            .vols
+            .iter()
+            .map(|v| match v.side {
+                Some(side) => v.a * self.ec.mean_interfacial_current(side, current),
+                None => 0.0,
+            })
+            .collect()
+    }
+
+    /// Mean of `f` over the x volumes of one electrode.
+    fn electrode_mean(&self, side: Side, f: impl Fn(usize) -> f64) -> f64 {
+        let mut sum = 0.0;
+        let mut width = 0.0;
+        for (i, v) in self.electrolyte.vols.iter().enumerate() {
+            if v.side == Some(side) {
+                sum += f(i) * v.dx;
+                width += v.dx;
+            }
+        }
+        sum / width
+    }
+
+    /// Electrolyte potential difference between the positive and negative electrodes,
+    /// x-averaged over each (V): ohmic part from the ionic current through the local
+    /// effective conductivity, plus the concentration (diffusion) potential.
+    fn electrolyte_overpotential(&self, ce: &[f64], current: f64, temp: f64) -> f64 {
+        let op = &self.electrolyte;
+        let (kappa, kd) = op.conductivities(&self.ec, ce, temp);
+        let i_app = current / self.ec.area();
+        // Ionic current density at each volume centre: rises linearly through the negative
+        // electrode, constant in the separator, falls through the positive.
+        let ln = self.ec.params.negative.thickness;
+        let ls = self.ec.params.separator.thickness;
+        let lp = self.ec.params.positive.thickness;
+        let centres = self.ec.disc.x_centres();
+        let i_e: Vec<f64> = centres
+            .iter()
+            .map(|&x| {
+                if x < ln {
+                    i_app * x / ln
+                } else if x < ln + ls {
+                    i_app
+                } else {
+                    i_app * (ln + ls + lp - x) / lp
+                }
+            })
+            .collect();
+        // phi_e at volume centres relative to the first centre, by the trapezoid rule on
+        // dphi_e/dx = -i_e/kappa_eff + (kd/kappa_eff) dc_e/dx.
+        let mut phi = vec![0.0; ce.len()];
+        for i in 1..ce.len() {
+            let g = op.gaps[i - 1];
+            let grad_ohm = 0.5 * (i_e[i] / kappa[i] + i_e[i - 1] / kappa[i - 1]);
+            let coef = 0.5 * (kd[i] / kappa[i] + kd[i - 1] / kappa[i - 1]);
+            phi[i] = phi[i - 1] - grad_ohm * g + coef * (ce[i] - ce[i - 1]);
+        }
+        self.electrode_mean(Side::Positive, |i| phi[i]) - self.electrode_mean(Side::Negative, |i| phi[i])
+    }
+
+    /// Solid-phase ohmic drop between the x-averaged and current-collector potentials (V).
+    fn solid_ohmic(&self, current: f64) -> f64 {
+        let i_app = current / self.ec.area();
+        [Side::Negative, Side::Positive]
+            .iter()
+            .map(|&s| {
+                let e = self.ec.electrode(s);
+                let sigma = e.conductivity * (1.0 - e.porosity).powf(e.bruggeman_solid);
+                i_app * e.thickness / (3.0 * sigma)
+            })
+            .sum()
+    }
+
+    fn surfaces(&self, y: &[f64]) -> (f64, f64) {
+        let (cn, cp, _) = self.blocks(y);
+        (self.ec.disc.sphere_n.surface(cn), self.ec.disc.sphere_p.surface(cp))
+    }
+}
+
+impl Model for Spme {
+    fn name(&self) -> String {
+        "SPMe".into()
+    }
+
+    fn len(&self) -> usize {
+        self.mass.len()
+    }
+
+    fn mass(&self) -> &[f64] {
+        &self.mass
+    }
+
+    fn scale(&self) -> &[f64] {
+        &self.scale
+    }
+
+    fn jacobian_pattern(&self) -> Vec<(usize, usize)> {
+        let nn = self.ec.disc.sphere_n.len();
+        let np = self.ec.disc.sphere_p.len();
+        let nx = self.electrolyte.len();
+        let mut p = Vec::new();
+        for (start, len) in [(0, nn), (nn, np), (nn + np, nx)] {
+            for k in 0..len {
+                for m in k.saturating_sub(1)..(k + 2).min(len) {
+                    p.push((start + k, start + m));
+                }
+            }
+        }
+        if self.ec.submodels.thermal {
+            let t = nn + np + nx;
+            for i in 0..=t {
+                p.push((i, t));
+            }
+        }
+        p
+    }
+
+    fn initial_state(&self) -> Vec<f64> {
+        let p = &self.ec.params;
+        let mut y = vec![p.negative.initial_concentration; self.ec.disc.sphere_n.len()];
+        y.extend(std::iter::repeat_n(p.positive.initial_concentration, self.ec.disc.sphere_p.len()));
+        y.extend(std::iter::repeat_n(p.electrolyte.initial_concentration, self.electrolyte.len()));
+        if self.ec.submodels.thermal {
+            y.push(p.thermal.initial_temperature);
+        }
+        y
+    }
+
+    fn rhs(&self, y: &[f64], current: f64, out: &mut [f64]) {
+        let ec = &self.ec;
+        let nn = ec.disc.sphere_n.len();
+        let np = ec.disc.sphere_p.len();
+        let nx = self.electrolyte.len();
+        let temp = self.temp(y);
+        let (cn, cp, ce) = self.blocks(y);
+        for (side, c, range) in [(Side::Negative, cn, 0..nn), (Side::Positive, cp, nn..nn + np)] {
+            let flux = Electrochem::molar_flux(ec.mean_interfacial_current(side, current));
+            ec.sphere(side).diffusion(c, ec.diffusivity(side, temp), flux, &mut out[range]);
+        }
+        let aj = self.reaction(current);
+        self.electrolyte.concentration_rhs(ec, ce, &aj, temp, &mut out[nn + np..nn + np + nx]);
+        if ec.submodels.thermal {
+            let (sn, sp) = self.surfaces(y);
+            let ocv = ec.ocp(Side::Positive, sp) - ec.ocp(Side::Negative, sn);
+            let heat = bernardi_heat(current, ocv, self.voltage(y, current), temp, ec.docv_dt());
+            out[nn + np + nx] = ec.thermal.rate(heat, temp);
+        }
+    }
+
+    fn voltage(&self, y: &[f64], current: f64) -> f64 {
+        let ec = &self.ec;
+        let temp = self.temp(y);
+        let (_, _, ce) = self.blocks(y);
+        let (sn, sp) = self.surfaces(y);
+        let eta = |side: Side, c_s: f64| {
+            let e = ec.electrode(side);
+            let c_e = self.electrode_mean(side, |i| ce[i]);
+            let j = ec.mean_interfacial_current(side, current);
+            overpotential(j, ec.j0(side, c_e, c_s, temp), e.charge_transfer_coefficient, temp)
+        };
+        ec.ocp(Side::Positive, sp) + eta(Side::Positive, sp) - ec.ocp(Side::Negative, sn) - eta(Side::Negative, sn)
+            + self.electrolyte_overpotential(ce, current, temp)
+            - self.solid_ohmic(current)
+            - current * ec.contact_resistance()
+    }
+
+    fn temperature(&self, y: &[f64]) -> f64 {
+        self.temp(y)
+    }
+
+    fn solid_lithium(&self, y: &[f64]) -> f64 {
+        let (cn, cp, _) = self.blocks(y);
+        let p = &self.ec.params;
+        self.ec.particle_lithium(Side::Negative, cn, p.negative.thickness)
+            + self.ec.particle_lithium(Side::Positive, cp, p.positive.thickness)
+    }
+
+    fn open_circuit_voltage(&self, y: &[f64]) -> f64 {
+        let (cn, cp, _) = self.blocks(y);
+        self.ec.ocp(Side::Positive, self.ec.disc.sphere_p.average(cp))
+            - self.ec.ocp(Side::Negative, self.ec.disc.sphere_n.average(cn))
+    }
+}
+
+impl PhysicsModel for Spme {
+    fn electrochem(&self) -> &Electrochem {
+        &self.ec
+    }
+    fn set_params(&mut self, params: ParameterSet) {
+        self.ec.set_params(params);
+        self.electrolyte.refresh(&self.ec);
+    }
+}

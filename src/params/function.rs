@@ -1,0 +1,95 @@
+//! Scalar functions of one variable used by parameter sets: open-circuit potentials (V) of
+//! stoichiometry, and electrolyte transport properties of concentration (mol/m^3).
+
+use serde::{Deserialize, Serialize};
+
+use crate::error::Error;
+
+/// A parameter that is a function of one variable.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
+pub enum Function1D {
+    /// A constant value.
+    Constant { value: f64 },
+    /// Linear interpolation in a table (x strictly increasing), clamped-slope extrapolation.
+    Table { x: Vec<f64>, y: Vec<f64> },
+    /// Graphite-SiOx OCP of the LG M50 negative electrode (Chen et al. 2020), V vs stoichiometry.
+    Chen2020GraphiteOcp,
+    /// NMC 811 OCP of the LG M50 positive electrode (Chen et al. 2020), V vs stoichiometry.
+    Chen2020Nmc811Ocp,
+    /// LiPF6 in EC:EMC electrolyte diffusivity (Nyman et al. 2008), m^2/s vs mol/m^3.
+    Nyman2008Diffusivity,
+    /// LiPF6 in EC:EMC electrolyte conductivity (Nyman et al. 2008), S/m vs mol/m^3.
+    Nyman2008Conductivity,
+}
+
+impl Function1D {
+    /// Evaluates the function at `x`.
+    pub fn eval(&self, x: f64) -> f64 {
+        match self {
+            Function1D::Constant { value } => *value,
+            Function1D::Table { x: xs, y: ys } => interpolate(xs, ys, x),
+            Function1D::Chen2020GraphiteOcp => {
+                1.9793 * (-39.3631 * x).exp() + 0.2482
+                    - 0.0909 * (29.8538 * (x - 0.1234)).tanh()
+                    - 0.04478 * (14.9159 * (x - 0.2769)).tanh()
+                    - 0.0205 * (30.4444 * (x - 0.6103)).tanh()
+            }
+            Function1D::Chen2020Nmc811Ocp => {
+                -0.8090 * x + 4.4875
+                    - 0.0428 * (18.5138 * (x - 0.5542)).tanh()
+                    - 17.7326 * (15.7890 * (x - 0.3117)).tanh()
+                    + 17.5842 * (15.9308 * (x - 0.3120)).tanh()
+            }
+            Function1D::Nyman2008Diffusivity => {
+                let c = x / 1000.0;
+                8.794e-11 * c * c - 3.972e-10 * c + 4.862e-10
+            }
+            Function1D::Nyman2008Conductivity => {
+                let c = x / 1000.0;
+                0.1297 * c * c * c - 2.51 * c.powf(1.5) + 3.329 * c
+            }
+        }
+    }
+
+    /// Checks a table's shape and values; `field` names it in the error.
+    pub fn validate(&self, field: &str) -> Result<(), Error> {
+        match self {
+            Function1D::Constant { value } if !value.is_finite() => {
+                Err(Error::invalid(field, *value, "must be finite"))
+            }
+            Function1D::Table { x, y } => {
+                if x.len() < 2 || x.len() != y.len() {
+                    return Err(Error::InvalidSetting {
+                        field: field.into(),
+                        reason: format!(
+                            "table needs at least 2 points and equal lengths (x: {}, y: {})",
+                            x.len(),
+                            y.len()
+                        ),
+                    });
+                }
+                if let Some(w) = x.windows(2).find(|w| !(w[1] > w[0])) {
+                    return Err(Error::invalid(field, w[1], "table x must be strictly increasing"));
+                }
+                if let Some(v) = x.iter().chain(y).find(|v| !v.is_finite()) {
+                    return Err(Error::invalid(field, *v, "table values must be finite"));
+                }
+                Ok(())
+            }
+            _ => Ok(()),
+        }
+    }
+}
+
+/// Piecewise-linear interpolation with linear extrapolation from the end segments.
+pub fn interpolate(xs: &[f64], ys: &[f64], x: f64) -> f64 {
+    let n = xs.len();
+    let i = match xs.partition_point(|&v| v <= x) {
+        0 => 0,
+        k if k >= n => n - 2,
+        k => k - 1,
+    };
+    let w = (x - xs[i]) / (xs[i + 1] - xs[i]);
+    ys[i] + w * (ys[i + 1] - ys[i])
+}

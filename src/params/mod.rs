@@ -1,0 +1,12 @@
+//! Parameter sets: typed structs in SI units, the embedded Chen 2020 default, BPX exchange,
+//! and the cell's mass and volume budget.
+
+mod chen2020;
+pub mod function;
+pub mod mass;
+mod set;
+
+pub use chen2020::chen2020;
+pub use function::Function1D;
+pub use mass::CellBudget;
+pub use set::{Cell, Electrode, Electrolyte, FARADAY, GAS_CONSTANT, ParameterSet, Separator, Thermal};

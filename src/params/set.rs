@@ -1,0 +1,396 @@
+//! The typed parameter set of a lithium-ion cell (SI units throughout).
+
+use serde::{Deserialize, Serialize};
+
+use super::function::Function1D;
+use crate::error::Error;
+
+/// Gas constant (J/(mol K)).
+pub const GAS_CONSTANT: f64 = 8.314462618;
+/// Faraday constant (C/mol).
+pub const FARADAY: f64 = 96485.33212;
+
+/// One porous electrode.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Electrode {
+    /// Coating thickness (m). Geometric.
+    pub thickness: f64,
+    /// Particle radius (m). Geometric.
+    pub particle_radius: f64,
+    /// Active-material volume fraction (-).
+    pub active_fraction: f64,
+    /// Electrolyte volume fraction (porosity) (-). Binder and carbon fill the rest.
+    pub porosity: f64,
+    /// Bruggeman exponent of the electrolyte transport (-).
+    pub bruggeman_electrolyte: f64,
+    /// Bruggeman exponent of the solid conductivity (-).
+    pub bruggeman_solid: f64,
+    /// Solid-phase electronic conductivity (S/m).
+    pub conductivity: f64,
+    /// Maximum lithium concentration in the active material (mol/m^3).
+    pub max_concentration: f64,
+    /// Initial (uniform) lithium concentration in the particles (mol/m^3).
+    pub initial_concentration: f64,
+    /// Particle diffusivity at the reference temperature (m^2/s).
+    pub diffusivity: f64,
+    /// Activation energy of the particle diffusivity (J/mol).
+    pub diffusivity_activation_energy: f64,
+    /// Open-circuit potential vs stoichiometry (V).
+    pub ocp: Function1D,
+    /// Entropic change of the OCP (V/K).
+    pub ocp_entropic_change: f64,
+    /// Reaction rate constant m_ref in j0 = m_ref c_e^a c_s^a (c_max - c_s)^(1-a)
+    /// (A/m^2 (m^3/mol)^1.5).
+    pub rate_constant: f64,
+    /// Activation energy of the reaction rate constant (J/mol).
+    pub rate_activation_energy: f64,
+    /// Charge-transfer coefficient (-).
+    pub charge_transfer_coefficient: f64,
+    /// Density of the active material (kg/m^3), for the cell mass.
+    pub active_density: f64,
+    /// Density of the binder and conductive additive (kg/m^3), for the cell mass.
+    pub inactive_density: f64,
+    /// Volumetric heat capacity of the coating (J/(m^3 K)).
+    pub volumetric_heat_capacity: f64,
+    /// Double-layer capacitance (F/m^2).
+    pub double_layer_capacitance: f64,
+}
+
+impl Electrode {
+    /// Binder + conductive-additive volume fraction, `1 - active - porosity` (-).
+    pub fn inactive_fraction(&self) -> f64 {
+        1.0 - self.active_fraction - self.porosity
+    }
+
+    /// Specific interfacial area `3 eps_s / R` (1/m).
+    pub fn surface_area_density(&self) -> f64 {
+        3.0 * self.active_fraction / self.particle_radius
+    }
+
+    /// Theoretical capacity between stoichiometries 0 and 1 per unit electrode area (C/m^2).
+    pub fn areal_capacity(&self) -> f64 {
+        self.active_fraction * self.max_concentration * self.thickness * FARADAY
+    }
+
+    fn validate(&self, name: &str) -> Result<(), Error> {
+        let f = |field: &str| format!("{name}.{field}");
+        positive(&f("thickness"), self.thickness)?;
+        positive(&f("particle_radius"), self.particle_radius)?;
+        open_unit(&f("porosity"), self.porosity)?;
+        open_unit(&f("active_fraction"), self.active_fraction)?;
+        if self.inactive_fraction() < -1e-12 {
+            return Err(Error::invalid(
+                f("active_fraction"),
+                self.active_fraction,
+                format!(
+                    "active fraction + porosity = {} exceeds 1",
+                    self.active_fraction + self.porosity
+                ),
+            ));
+        }
+        non_negative(&f("bruggeman_electrolyte"), self.bruggeman_electrolyte)?;
+        non_negative(&f("bruggeman_solid"), self.bruggeman_solid)?;
+        positive(&f("conductivity"), self.conductivity)?;
+        positive(&f("max_concentration"), self.max_concentration)?;
+        positive(&f("diffusivity"), self.diffusivity)?;
+        non_negative(&f("diffusivity_activation_energy"), self.diffusivity_activation_energy)?;
+        positive(&f("rate_constant"), self.rate_constant)?;
+        non_negative(&f("rate_activation_energy"), self.rate_activation_energy)?;
+        open_unit(&f("charge_transfer_coefficient"), self.charge_transfer_coefficient)?;
+        positive(&f("active_density"), self.active_density)?;
+        positive(&f("inactive_density"), self.inactive_density)?;
+        positive(&f("volumetric_heat_capacity"), self.volumetric_heat_capacity)?;
+        non_negative(&f("double_layer_capacitance"), self.double_layer_capacitance)?;
+        let sto = self.initial_concentration / self.max_concentration;
+        if !(sto > 0.0 && sto < 1.0) {
+            return Err(Error::invalid(
+                f("initial_concentration"),
+                self.initial_concentration,
+                format!("must lie strictly between 0 and max_concentration = {}", self.max_concentration),
+            ));
+        }
+        self.ocp.validate(&f("ocp"))
+    }
+}
+
+/// The separator.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Separator {
+    /// Thickness (m). Geometric.
+    pub thickness: f64,
+    /// Porosity (-).
+    pub porosity: f64,
+    /// Bruggeman exponent (-).
+    pub bruggeman: f64,
+    /// Density of the separator's solid material (kg/m^3).
+    pub solid_density: f64,
+    /// Volumetric heat capacity (J/(m^3 K)).
+    pub volumetric_heat_capacity: f64,
+}
+
+/// The electrolyte.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Electrolyte {
+    /// Initial (uniform) salt concentration (mol/m^3).
+    pub initial_concentration: f64,
+    /// Cation transference number (-).
+    pub transference_number: f64,
+    /// Thermodynamic factor (1 + d ln f / d ln c) (-).
+    pub thermodynamic_factor: f64,
+    /// Salt diffusivity vs concentration at the reference temperature (m^2/s).
+    pub diffusivity: Function1D,
+    /// Ionic conductivity vs concentration at the reference temperature (S/m).
+    pub conductivity: Function1D,
+    /// Activation energy of diffusivity and conductivity (J/mol).
+    pub activation_energy: f64,
+    /// Density (kg/m^3), for the cell mass.
+    pub density: f64,
+}
+
+/// Cell-level geometry, current collectors, packaging and operating limits.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Cell {
+    /// Electrode height (m). Geometric.
+    pub electrode_height: f64,
+    /// Electrode width (m), unrolled. Geometric.
+    pub electrode_width: f64,
+    /// Negative (copper) current-collector thickness (m).
+    pub negative_collector_thickness: f64,
+    /// Positive (aluminium) current-collector thickness (m).
+    pub positive_collector_thickness: f64,
+    /// Negative current-collector density (kg/m^3).
+    pub negative_collector_density: f64,
+    /// Positive current-collector density (kg/m^3).
+    pub positive_collector_density: f64,
+    /// Mass of tabs, can and packaging as a fraction of the electrode-stack mass (-).
+    pub packaging_mass_fraction: f64,
+    /// Volume of tabs, can and free space as a fraction of the electrode-stack volume (-).
+    pub packaging_volume_fraction: f64,
+    /// Nominal capacity (A h): the current of 1C in amperes.
+    pub nominal_capacity: f64,
+    /// Lower voltage cut-off (V).
+    pub lower_cutoff: f64,
+    /// Upper voltage cut-off (V).
+    pub upper_cutoff: f64,
+    /// Contact (series) resistance (ohm), used when the contact-resistance submodel is on.
+    pub contact_resistance: f64,
+}
+
+impl Cell {
+    /// Electrode (plate) area (m^2).
+    pub fn area(&self) -> f64 {
+        self.electrode_height * self.electrode_width
+    }
+}
+
+/// Thermal environment and lumped heat capacity.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Thermal {
+    /// Reference temperature of the Arrhenius laws (K).
+    pub reference_temperature: f64,
+    /// Ambient temperature (K).
+    pub ambient_temperature: f64,
+    /// Initial cell temperature (K).
+    pub initial_temperature: f64,
+    /// Heat-transfer coefficient to the ambient (W/(m^2 K)).
+    pub heat_transfer_coefficient: f64,
+    /// Cooling surface area (m^2).
+    pub cooling_area: f64,
+    /// Cell volume used by the lumped thermal model (m^3).
+    pub cell_volume: f64,
+    /// Volumetric heat capacity of the negative current collector (J/(m^3 K)).
+    pub negative_collector_heat_capacity: f64,
+    /// Volumetric heat capacity of the positive current collector (J/(m^3 K)).
+    pub positive_collector_heat_capacity: f64,
+}
+
+/// A complete parameter set.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ParameterSet {
+    /// Human-readable name.
+    pub name: String,
+    pub cell: Cell,
+    pub negative: Electrode,
+    pub separator: Separator,
+    pub positive: Electrode,
+    pub electrolyte: Electrolyte,
+    pub thermal: Thermal,
+}
+
+impl ParameterSet {
+    /// Checks every field is physical; the error names the first offending field and value.
+    pub fn validate(&self) -> Result<(), Error> {
+        self.negative.validate("negative")?;
+        self.positive.validate("positive")?;
+        let s = &self.separator;
+        positive("separator.thickness", s.thickness)?;
+        open_unit("separator.porosity", s.porosity)?;
+        non_negative("separator.bruggeman", s.bruggeman)?;
+        positive("separator.solid_density", s.solid_density)?;
+        positive("separator.volumetric_heat_capacity", s.volumetric_heat_capacity)?;
+        let e = &self.electrolyte;
+        positive("electrolyte.initial_concentration", e.initial_concentration)?;
+        open_unit("electrolyte.transference_number", e.transference_number)?;
+        positive("electrolyte.thermodynamic_factor", e.thermodynamic_factor)?;
+        non_negative("electrolyte.activation_energy", e.activation_energy)?;
+        positive("electrolyte.density", e.density)?;
+        e.diffusivity.validate("electrolyte.diffusivity")?;
+        e.conductivity.validate("electrolyte.conductivity")?;
+        let c = &self.cell;
+        positive("cell.electrode_height", c.electrode_height)?;
+        positive("cell.electrode_width", c.electrode_width)?;
+        non_negative("cell.negative_collector_thickness", c.negative_collector_thickness)?;
+        non_negative("cell.positive_collector_thickness", c.positive_collector_thickness)?;
+        positive("cell.negative_collector_density", c.negative_collector_density)?;
+        positive("cell.positive_collector_density", c.positive_collector_density)?;
+        non_negative("cell.packaging_mass_fraction", c.packaging_mass_fraction)?;
+        non_negative("cell.packaging_volume_fraction", c.packaging_volume_fraction)?;
+        positive("cell.nominal_capacity", c.nominal_capacity)?;
+        positive("cell.lower_cutoff", c.lower_cutoff)?;
+        if !(c.upper_cutoff > c.lower_cutoff) {
+            return Err(Error::invalid(
+                "cell.upper_cutoff",
+                c.upper_cutoff,
+                format!("must exceed cell.lower_cutoff = {}", c.lower_cutoff),
+            ));
+        }
+        non_negative("cell.contact_resistance", c.contact_resistance)?;
+        let t = &self.thermal;
+        positive("thermal.reference_temperature", t.reference_temperature)?;
+        positive("thermal.ambient_temperature", t.ambient_temperature)?;
+        positive("thermal.initial_temperature", t.initial_temperature)?;
+        non_negative("thermal.heat_transfer_coefficient", t.heat_transfer_coefficient)?;
+        non_negative("thermal.cooling_area", t.cooling_area)?;
+        positive("thermal.cell_volume", t.cell_volume)?;
+        positive("thermal.negative_collector_heat_capacity", t.negative_collector_heat_capacity)?;
+        positive("thermal.positive_collector_heat_capacity", t.positive_collector_heat_capacity)?;
+        Ok(())
+    }
+
+    /// Reads a parameter set from a TOML file and validates it.
+    pub fn from_toml_file(path: &std::path::Path) -> Result<Self, Error> {
+        let text = std::fs::read_to_string(path)
+            .map_err(|source| Error::Io { path: path.display().to_string(), source })?;
+        let set: ParameterSet = toml::from_str(&text)
+            .map_err(|e| Error::Parse { path: path.display().to_string(), message: e.to_string() })?;
+        set.validate()?;
+        Ok(set)
+    }
+
+    /// Sets a scalar parameter by its dotted path (e.g. `positive.thickness`).
+    pub fn set(&mut self, path: &str, value: f64) -> Result<(), Error> {
+        *self.field_mut(path)? = value;
+        Ok(())
+    }
+
+    /// Reads a scalar parameter by its dotted path.
+    pub fn get(&self, path: &str) -> Result<f64, Error> {
+        let mut copy = self.clone();
+        Ok(*copy.field_mut(path)?)
+    }
+
+    fn field_mut(&mut self, path: &str) -> Result<&mut f64, Error> {
+        let unknown = || Error::InvalidSetting {
+            field: path.into(),
+            reason: "not a scalar parameter of the set".into(),
+        };
+        let (group, name) = path.split_once('.').ok_or_else(unknown)?;
+        let slot = match group {
+            "negative" | "positive" => {
+                let e = if group == "negative" { &mut self.negative } else { &mut self.positive };
+                match name {
+                    "thickness" => &mut e.thickness,
+                    "particle_radius" => &mut e.particle_radius,
+                    "active_fraction" => &mut e.active_fraction,
+                    "porosity" => &mut e.porosity,
+                    "bruggeman_electrolyte" => &mut e.bruggeman_electrolyte,
+                    "bruggeman_solid" => &mut e.bruggeman_solid,
+                    "conductivity" => &mut e.conductivity,
+                    "max_concentration" => &mut e.max_concentration,
+                    "initial_concentration" => &mut e.initial_concentration,
+                    "diffusivity" => &mut e.diffusivity,
+                    "diffusivity_activation_energy" => &mut e.diffusivity_activation_energy,
+                    "ocp_entropic_change" => &mut e.ocp_entropic_change,
+                    "rate_constant" => &mut e.rate_constant,
+                    "rate_activation_energy" => &mut e.rate_activation_energy,
+                    "charge_transfer_coefficient" => &mut e.charge_transfer_coefficient,
+                    "active_density" => &mut e.active_density,
+                    "inactive_density" => &mut e.inactive_density,
+                    "volumetric_heat_capacity" => &mut e.volumetric_heat_capacity,
+                    "double_layer_capacitance" => &mut e.double_layer_capacitance,
+                    _ => return Err(unknown()),
+                }
+            }
+            "separator" => match name {
+                "thickness" => &mut self.separator.thickness,
+                "porosity" => &mut self.separator.porosity,
+                "bruggeman" => &mut self.separator.bruggeman,
+                "solid_density" => &mut self.separator.solid_density,
+                "volumetric_heat_capacity" => &mut self.separator.volumetric_heat_capacity,
+                _ => return Err(unknown()),
+            },
+            "electrolyte" => match name {
+                "initial_concentration" => &mut self.electrolyte.initial_concentration,
+                "transference_number" => &mut self.electrolyte.transference_number,
+                "thermodynamic_factor" => &mut self.electrolyte.thermodynamic_factor,
+                "activation_energy" => &mut self.electrolyte.activation_energy,
+                "density" => &mut self.electrolyte.density,
+                _ => return Err(unknown()),
+            },
+            "cell" => match name {
+                "electrode_height" => &mut self.cell.electrode_height,
+                "electrode_width" => &mut self.cell.electrode_width,
+                "negative_collector_thickness" => &mut self.cell.negative_collector_thickness,
+                "positive_collector_thickness" => &mut self.cell.positive_collector_thickness,
+                "negative_collector_density" => &mut self.cell.negative_collector_density,
+                "positive_collector_density" => &mut self.cell.positive_collector_density,
+                "packaging_mass_fraction" => &mut self.cell.packaging_mass_fraction,
+                "packaging_volume_fraction" => &mut self.cell.packaging_volume_fraction,
+                "nominal_capacity" => &mut self.cell.nominal_capacity,
+                "lower_cutoff" => &mut self.cell.lower_cutoff,
+                "upper_cutoff" => &mut self.cell.upper_cutoff,
+                "contact_resistance" => &mut self.cell.contact_resistance,
+                _ => return Err(unknown()),
+            },
+            "thermal" => match name {
+                "reference_temperature" => &mut self.thermal.reference_temperature,
+                "ambient_temperature" => &mut self.thermal.ambient_temperature,
+                "initial_temperature" => &mut self.thermal.initial_temperature,
+                "heat_transfer_coefficient" => &mut self.thermal.heat_transfer_coefficient,
+                "cooling_area" => &mut self.thermal.cooling_area,
+                "cell_volume" => &mut self.thermal.cell_volume,
+                "negative_collector_heat_capacity" => {
+                    &mut self.thermal.negative_collector_heat_capacity
+                }
+                "positive_collector_heat_capacity" => {
+                    &mut self.thermal.positive_collector_heat_capacity
+                }
+                _ => return Err(unknown()),
+            },
+            _ => return Err(unknown()),
+        };
+        Ok(slot)
+    }
+}
+
+fn check(field: &str, value: f64, ok: bool, reason: &str) -> Result<(), Error> {
+    if ok && value.is_finite() { Ok(()) } else { Err(Error::invalid(field, value, reason)) }
+}
+
+fn positive(field: &str, value: f64) -> Result<(), Error> {
+    check(field, value, value > 0.0, "must be positive")
+}
+
+fn non_negative(field: &str, value: f64) -> Result<(), Error> {
+    check(field, value, value >= 0.0, "must not be negative")
+}
+
+fn open_unit(field: &str, value: f64) -> Result<(), Error> {
+    check(field, value, value > 0.0 && value < 1.0, "must lie strictly between 0 and 1")
+}

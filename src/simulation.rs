@@ -1,0 +1,306 @@
+//! Runs a model through a protocol: consistent initialisation of algebraic states at every
+//! step start, stiff integration, cut-off events, and the recorded outputs.
+
+use serde::Serialize;
+
+use crate::error::Error;
+use crate::models::Model;
+use crate::protocol::{Protocol, Step};
+use crate::solver::{Dae, DenseOutput, SolverOptions, SolverStats, Workspace, integrate};
+
+/// Options of a simulation.
+#[derive(Clone, Debug)]
+pub struct SimOptions {
+    pub solver: SolverOptions,
+    /// Output times (s), increasing. `None` records every solver step.
+    pub t_eval: Option<Vec<f64>>,
+    /// Keep the full state at every output (for spatial fields and conservation checks).
+    pub keep_states: bool,
+    /// Lower and upper voltage cut-offs (V).
+    pub cutoffs: (f64, f64),
+    /// Nominal capacity (A h) that converts C-rates to amperes.
+    pub capacity: f64,
+}
+
+impl SimOptions {
+    /// Cut-offs and capacity of a parameter set, default solver, every step recorded.
+    pub fn for_cell(p: &crate::params::ParameterSet) -> Self {
+        Self {
+            solver: SolverOptions::default(),
+            t_eval: None,
+            keep_states: false,
+            cutoffs: (p.cell.lower_cutoff, p.cell.upper_cutoff),
+            capacity: p.cell.nominal_capacity,
+        }
+    }
+}
+
+/// Recorded outputs of a simulation.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct Solution {
+    /// Time (s).
+    pub time: Vec<f64>,
+    /// Applied current (A, discharge positive).
+    pub current: Vec<f64>,
+    /// Terminal voltage (V).
+    pub voltage: Vec<f64>,
+    /// Charge discharged since the start (A h).
+    pub capacity: Vec<f64>,
+    /// Energy delivered since the start (W h).
+    pub energy: Vec<f64>,
+    /// Cell temperature (K).
+    pub temperature: Vec<f64>,
+    /// Full states at each output, when requested.
+    #[serde(skip)]
+    pub states: Vec<Vec<f64>>,
+    /// Solver work counters.
+    pub stats: SolverStats,
+    /// Times (s) at which a voltage cut-off ended a step.
+    pub cutoff_times: Vec<f64>,
+}
+
+impl Solution {
+    /// Discharged capacity at the end (A h).
+    pub fn final_capacity(&self) -> f64 {
+        self.capacity.last().copied().unwrap_or(0.0)
+    }
+
+    /// Delivered energy at the end (W h).
+    pub fn final_energy(&self) -> f64 {
+        self.energy.last().copied().unwrap_or(0.0)
+    }
+
+    /// Terminal voltage at the end (V).
+    pub fn final_voltage(&self) -> f64 {
+        self.voltage.last().copied().unwrap_or(f64::NAN)
+    }
+
+    /// Writes the outputs as CSV.
+    pub fn write_csv(&self, path: &std::path::Path) -> Result<(), Error> {
+        use std::fmt::Write;
+        let mut s =
+            String::from("time_s,current_A,voltage_V,discharge_capacity_Ah,energy_Wh,temperature_K\n");
+        for i in 0..self.time.len() {
+            let _ = writeln!(
+                s,
+                "{},{},{},{},{},{}",
+                self.time[i],
+                self.current[i],
+                self.voltage[i],
+                self.capacity[i],
+                self.energy[i],
+                self.temperature[i]
+            );
+        }
+        std::fs::write(path, s).map_err(|source| Error::Io { path: path.display().to_string(), source })
+    }
+}
+
+/// A model driven by one protocol step's current.
+struct Driven<'a> {
+    model: &'a dyn Model,
+    step: &'a Step,
+    t0: f64,
+    capacity: f64,
+}
+
+impl Driven<'_> {
+    fn current(&self, t: f64) -> f64 {
+        self.step.current_at(t - self.t0, self.capacity)
+    }
+}
+
+impl Dae for Driven<'_> {
+    fn len(&self) -> usize {
+        self.model.len()
+    }
+    fn mass(&self) -> &[f64] {
+        self.model.mass()
+    }
+    fn scale(&self) -> &[f64] {
+        self.model.scale()
+    }
+    fn rhs(&self, t: f64, y: &[f64], out: &mut [f64]) {
+        self.model.rhs(y, self.current(t), out)
+    }
+}
+
+/// Solves the algebraic rows `f_alg(y) = 0` for the algebraic states by Newton's method,
+/// holding the differential states fixed.
+pub fn consistent_initialisation(
+    model: &dyn Model,
+    ws: &mut Workspace,
+    current: f64,
+    y: &mut [f64],
+) -> Result<(), Error> {
+    let mass = model.mass();
+    if mass.iter().all(|&m| m != 0.0) {
+        return Ok(());
+    }
+    let n = y.len();
+    let scale = model.scale();
+    let mut f = vec![0.0; n];
+    let mut g = |yy: &[f64], out: &mut [f64]| model.rhs(yy, current, out);
+    for _ in 0..50 {
+        g(y, &mut f);
+        ws.factorise_algebraic(&mut g, y, &f, scale, mass)?;
+        let mut dy: Vec<f64> = f.iter().zip(mass).map(|(v, &m)| if m == 0.0 { -v } else { 0.0 }).collect();
+        ws.solve(&mut dy);
+        let mut step = 0.0f64;
+        for i in 0..n {
+            if mass[i] == 0.0 {
+                y[i] += dy[i];
+                step = step.max((dy[i] / scale[i]).abs());
+            }
+        }
+        if !step.is_finite() {
+            break;
+        }
+        if std::env::var("CS_DEBUG").is_ok() { eprintln!("init step {step:e}"); }
+        if step < 1e-12 {
+            return Ok(());
+        }
+    }
+    Err(Error::Solver { t: 0.0, reason: "consistent initialisation of algebraic states did not converge".into() })
+}
+
+/// Running totals and recording of outputs.
+struct Recorder<'a> {
+    model: &'a dyn Model,
+    keep_states: bool,
+    sol: Solution,
+    /// Discharged charge (A h) and delivered energy (W h) at the start of the current step.
+    q: f64,
+    e: f64,
+}
+
+impl Recorder<'_> {
+    fn record(&mut self, t: f64, y: &[f64], i: f64, q: f64, e: f64) {
+        let s = &mut self.sol;
+        s.time.push(t);
+        s.current.push(i);
+        s.voltage.push(self.model.voltage(y, i));
+        s.capacity.push(q);
+        s.energy.push(e);
+        s.temperature.push(self.model.temperature(y));
+        if self.keep_states {
+            s.states.push(y.to_vec());
+        }
+    }
+
+    /// Charge (A h) and energy (W h) over `[a, b]` by 2-point Gauss-Legendre on the interpolant.
+    fn integrals(&self, dense: &DenseOutput, drive: &Driven, a: f64, b: f64, buf: &mut [f64]) -> (f64, f64) {
+        let g = 0.5 / 3f64.sqrt();
+        let h = b - a;
+        let mut q = 0.0;
+        let mut e = 0.0;
+        for t in [a + (0.5 - g) * h, a + (0.5 + g) * h] {
+            dense.eval(t, buf);
+            let i = drive.current(t);
+            q += 0.5 * h * i;
+            e += 0.5 * h * i * self.model.voltage(buf, i);
+        }
+        (q / 3600.0, e / 3600.0)
+    }
+}
+
+/// Simulates `model` through `protocol` from `y0` (or the model's initial state).
+pub fn simulate(
+    model: &dyn Model,
+    ws: &mut Workspace,
+    protocol: &Protocol,
+    opts: &SimOptions,
+    y0: Option<Vec<f64>>,
+) -> Result<Solution, Error> {
+    protocol.validate()?;
+    let mut y = y0.unwrap_or_else(|| model.initial_state());
+    let n = y.len();
+    let (lower, upper) = opts.cutoffs;
+    let t_eval = opts.t_eval.as_deref();
+    if let Some(te) = t_eval {
+        if let Some(w) = te.windows(2).find(|w| !(w[1] > w[0])) {
+            return Err(Error::invalid("t_eval", w[1], "output times must increase strictly"));
+        }
+    }
+    let mut rec = Recorder { model, keep_states: opts.keep_states, sol: Solution::default(), q: 0.0, e: 0.0 };
+    let mut next_eval = 0usize;
+    let mut buf = vec![0.0; n];
+    let mut t0 = 0.0;
+    for (k, step) in protocol.steps.iter().enumerate() {
+        let drive = Driven { model, step, t0, capacity: opts.capacity };
+        let i0 = drive.current(t0);
+        consistent_initialisation(model, ws, i0, &mut y).map_err(|err| at_time(err, t0))?;
+        let v0 = model.voltage(&y, i0);
+        if step.has_cutoffs() && i0 > 0.0 && v0 <= lower {
+            return Err(Error::invalid(
+                "cell.lower_cutoff",
+                lower,
+                format!("voltage at the start of step {k} (t = {t0} s) is {v0:.4} V, already at or below the cut-off"),
+            ));
+        }
+        if step.has_cutoffs() && i0 < 0.0 && v0 >= upper {
+            return Err(Error::invalid(
+                "cell.upper_cutoff",
+                upper,
+                format!("voltage at the start of step {k} (t = {t0} s) is {v0:.4} V, already at or above the cut-off"),
+            ));
+        }
+        match t_eval {
+            None if k == 0 => rec.record(t0, &y, i0, 0.0, 0.0),
+            Some(te) => {
+                while next_eval < te.len() && te[next_eval] <= t0 {
+                    if k == 0 {
+                        rec.record(t0, &y, i0, rec.q, rec.e);
+                    }
+                    next_eval += 1;
+                }
+            }
+            _ => {}
+        }
+        let event_fn = |t: f64, yy: &[f64]| {
+            let v = model.voltage(yy, drive.current(t));
+            (v - lower).min(upper - v)
+        };
+        let event: Option<&dyn Fn(f64, &[f64]) -> f64> = if step.has_cutoffs() { Some(&event_fn) } else { None };
+        let mut observer = |t_old: f64, dense: &DenseOutput| {
+            let t_new = dense.t_end();
+            if let Some(te) = t_eval {
+                while next_eval < te.len() && te[next_eval] <= t_new {
+                    let t = te[next_eval];
+                    let (dq, de) = rec.integrals(dense, &drive, t_old, t, &mut buf);
+                    dense.eval(t, &mut buf);
+                    let (q, e) = (rec.q + dq, rec.e + de);
+                    rec.record(t, &buf, drive.current(t), q, e);
+                    next_eval += 1;
+                }
+            }
+            let (dq, de) = rec.integrals(dense, &drive, t_old, t_new, &mut buf);
+            rec.q += dq;
+            rec.e += de;
+            if t_eval.is_none() {
+                dense.eval(t_new, &mut buf);
+                let (q, e) = (rec.q, rec.e);
+                rec.record(t_new, &buf, drive.current(t_new), q, e);
+            }
+        };
+        let t_end = t0 + step.duration();
+        let mut stats = SolverStats::default();
+        let reason = integrate(&drive, ws, &opts.solver, t0, &mut y, t_end, event, &mut observer, &mut stats);
+        rec.sol.stats.add(&stats);
+        match reason? {
+            crate::solver::StopReason::Event(t) => {
+                rec.sol.cutoff_times.push(t);
+                t0 = t;
+            }
+            crate::solver::StopReason::EndTime => t0 = t_end,
+        }
+    }
+    Ok(rec.sol)
+}
+
+fn at_time(err: Error, t: f64) -> Error {
+    match err {
+        Error::Solver { reason, .. } => Error::Solver { t, reason },
+        other => other,
+    }
+}

@@ -1,0 +1,512 @@
+//! Variable-order (1-5), variable-step BDF/NDF integrator for semi-explicit index-1 DAEs
+//! `M y' = f(t, y)` with a diagonal 0/1 mass matrix `M`.
+//!
+//! The step, order and error-control logic follows Shampine & Reichelt's NDF
+//! (the scheme of MATLAB `ode15s` and SciPy `BDF`), written on a backward-difference array so
+//! that step-size changes are O(order^2) and dense output is free. Newton matrices are
+//! sparse (see [`SparseSystem`]) and the Jacobian is a coloured finite difference (see
+//! [`ColouredPattern`]); both are reused across steps until Newton convergence slows.
+
+use super::jacobian::ColouredPattern;
+use super::sparse::SparseSystem;
+use crate::error::Error;
+
+const MAX_ORDER: usize = 5;
+const NEWTON_MAXITER: usize = 4;
+const MIN_FACTOR: f64 = 0.2;
+const MAX_FACTOR: f64 = 10.0;
+/// NDF coefficients kappa_k of Shampine & Reichelt (1997).
+const KAPPA: [f64; 6] = [0.0, -0.1850, -1.0 / 9.0, -0.0823, -0.0415, 0.0];
+
+/// A semi-explicit DAE `M y' = f(t, y)`.
+pub trait Dae {
+    /// Number of states.
+    fn len(&self) -> usize;
+    /// Diagonal of the mass matrix: 1 for differential rows, 0 for algebraic rows.
+    fn mass(&self) -> &[f64];
+    /// Typical magnitude of each state (absolute tolerance and difference steps scale by it).
+    fn scale(&self) -> &[f64];
+    /// Evaluates `f(t, y)` into `out`.
+    fn rhs(&self, t: f64, y: &[f64], out: &mut [f64]);
+}
+
+/// Tolerances and limits of the integrator.
+#[derive(Clone, Debug, serde::Serialize, serde::Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct SolverOptions {
+    /// Relative tolerance.
+    pub rtol: f64,
+    /// Absolute tolerance, relative to each state's typical magnitude.
+    pub atol: f64,
+    /// Largest step (s).
+    pub max_step: f64,
+    /// Largest number of accepted steps per call.
+    pub max_steps: usize,
+}
+
+impl Default for SolverOptions {
+    fn default() -> Self {
+        Self { rtol: 1e-6, atol: 1e-6, max_step: f64::INFINITY, max_steps: 100_000 }
+    }
+}
+
+/// Counters of the work done, for benchmarks and performance-regression tests.
+#[derive(Clone, Copy, Debug, Default, serde::Serialize)]
+pub struct SolverStats {
+    pub steps: usize,
+    pub rejected_steps: usize,
+    pub rhs_evals: usize,
+    pub jacobian_evals: usize,
+    pub factorisations: usize,
+}
+
+impl SolverStats {
+    pub fn add(&mut self, other: &SolverStats) {
+        self.steps += other.steps;
+        self.rejected_steps += other.rejected_steps;
+        self.rhs_evals += other.rhs_evals;
+        self.jacobian_evals += other.jacobian_evals;
+        self.factorisations += other.factorisations;
+    }
+}
+
+/// Why an integration call returned.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum StopReason {
+    /// The end time was reached.
+    EndTime,
+    /// The event function crossed zero at this time (s).
+    Event(f64),
+}
+
+/// The interpolating polynomial of the last step, valid on `[t_old, end]`.
+pub struct DenseOutput<'a> {
+    t: f64,
+    h: f64,
+    order: usize,
+    d: &'a [Vec<f64>],
+    end: f64,
+}
+
+impl DenseOutput<'_> {
+    /// End of the interval this step covers (s): the step end, or the event time.
+    pub fn t_end(&self) -> f64 {
+        self.end
+    }
+
+    /// Writes `y(t)` into `out`.
+    pub fn eval(&self, t: f64, out: &mut [f64]) {
+        out.copy_from_slice(&self.d[0]);
+        let mut p = 1.0;
+        for j in 0..self.order {
+            let shift = self.t - self.h * j as f64;
+            p *= (t - shift) / (self.h * (j + 1) as f64);
+            for (o, dj) in out.iter_mut().zip(&self.d[j + 1]) {
+                *o += dj * p;
+            }
+        }
+    }
+}
+
+/// Reusable work space for one model build: Jacobian pattern, colouring and sparse LU.
+pub struct Workspace {
+    pattern: ColouredPattern,
+    system: SparseSystem,
+    jac: Vec<f64>,
+}
+
+impl Workspace {
+    /// Builds the work space for `n` states and Jacobian entries `(row, col)` (duplicates
+    /// are merged).
+    pub fn new(n: usize, mut entries: Vec<(usize, usize)>) -> Result<Self, Error> {
+        entries.sort_unstable();
+        entries.dedup();
+        let system = SparseSystem::new(n, &entries)?;
+        let jac = vec![0.0; entries.len()];
+        Ok(Self { pattern: ColouredPattern::new(n, entries), system, jac })
+    }
+
+    /// Residual evaluations per Jacobian.
+    pub fn n_colours(&self) -> usize {
+        self.pattern.n_colours()
+    }
+
+    /// Factorises the Newton matrix of the algebraic rows alone, `diag(mass) + J_aa`
+    /// (identity on differential rows), for consistent initialisation; `f0 = f(y)`.
+    pub fn factorise_algebraic(
+        &mut self,
+        f: &mut dyn FnMut(&[f64], &mut [f64]),
+        y: &[f64],
+        f0: &[f64],
+        scale: &[f64],
+        mass: &[f64],
+    ) -> Result<(), Error> {
+        self.pattern.evaluate(f, y, f0, scale, &mut self.jac);
+        for (v, &(r, c)) in self.jac.iter_mut().zip(&self.pattern.entries) {
+            if mass[r] != 0.0 || mass[c] != 0.0 {
+                *v = 0.0;
+            }
+        }
+        self.system.factorise(mass, -1.0, &self.jac)
+    }
+
+    /// Solves with the last factorisation.
+    pub fn solve(&self, rhs: &mut [f64]) {
+        self.system.solve(rhs)
+    }
+}
+
+fn rms(x: &[f64], scale: &[f64]) -> f64 {
+    let s: f64 = x.iter().zip(scale).map(|(a, b)| (a / b) * (a / b)).sum();
+    (s / x.len() as f64).sqrt()
+}
+
+/// Rescales the difference array `d` for a step-size change by `factor`.
+fn change_d(d: &mut [Vec<f64>], order: usize, factor: f64) {
+    let r = compute_r(order, factor);
+    let u = compute_r(order, 1.0);
+    // RU = R * U; D[:order+1] = RU^T D[:order+1]
+    let k = order + 1;
+    let mut ru = vec![0.0; k * k];
+    for i in 0..k {
+        for j in 0..k {
+            ru[i * k + j] = (0..k).map(|m| r[i * k + m] * u[m * k + j]).sum();
+        }
+    }
+    let n = d[0].len();
+    let mut new = vec![vec![0.0; n]; k];
+    for (j, row) in new.iter_mut().enumerate() {
+        for i in 0..k {
+            let w = ru[i * k + j];
+            if w != 0.0 {
+                for (a, b) in row.iter_mut().zip(&d[i]) {
+                    *a += w * b;
+                }
+            }
+        }
+    }
+    for (j, row) in new.into_iter().enumerate() {
+        d[j] = row;
+    }
+}
+
+fn compute_r(order: usize, factor: f64) -> Vec<f64> {
+    let k = order + 1;
+    let mut m = vec![0.0; k * k];
+    for j in 0..k {
+        m[j] = 1.0;
+    }
+    for i in 1..k {
+        for j in 1..k {
+            m[i * k + j] = (i as f64 - 1.0 - factor * j as f64) / i as f64;
+        }
+    }
+    // cumulative product down the columns
+    for i in 1..k {
+        for j in 0..k {
+            m[i * k + j] *= m[(i - 1) * k + j];
+        }
+    }
+    m
+}
+
+/// Integrates `dae` from `(t0, y0)` to `t_end`, or until `event(t, y)` changes sign.
+///
+/// `y0` must be consistent (algebraic rows satisfied). After every accepted step,
+/// `observer(t_old, dense)` is called with the step's interpolant; on return `y0` holds the
+/// final state (at the event time if one fired).
+pub fn integrate(
+    dae: &dyn Dae,
+    ws: &mut Workspace,
+    opts: &SolverOptions,
+    t0: f64,
+    y0: &mut [f64],
+    t_end: f64,
+    event: Option<&dyn Fn(f64, &[f64]) -> f64>,
+    observer: &mut dyn FnMut(f64, &DenseOutput),
+    stats: &mut SolverStats,
+) -> Result<StopReason, Error> {
+    let n = dae.len();
+    let mass = dae.mass();
+    let state_scale = dae.scale();
+    let atol: Vec<f64> = state_scale.iter().map(|s| opts.atol * s).collect();
+    let rtol = opts.rtol;
+    let newton_tol = (10.0 * f64::EPSILON / rtol).max(0.03f64.min(rtol.sqrt()));
+
+    let mut gamma = [0.0; MAX_ORDER + 1];
+    for k in 1..=MAX_ORDER {
+        gamma[k] = gamma[k - 1] + 1.0 / k as f64;
+    }
+    let alpha: Vec<f64> = (0..=MAX_ORDER).map(|k| (1.0 - KAPPA[k]) * gamma[k]).collect();
+    let error_const: Vec<f64> =
+        (0..=MAX_ORDER).map(|k| KAPPA[k] * gamma[k] + 1.0 / (k + 1) as f64).collect();
+
+    let mut t = t0;
+    let span = t_end - t0;
+    if span <= 0.0 {
+        return Ok(StopReason::EndTime);
+    }
+    let mut f0 = vec![0.0; n];
+    dae.rhs(t, y0, &mut f0);
+    stats.rhs_evals += 1;
+    if f0.iter().any(|v| !v.is_finite()) {
+        return Err(Error::Solver { t, reason: "non-finite right-hand side at start".into() });
+    }
+    let fdiff: Vec<f64> = f0.iter().zip(mass).map(|(f, m)| f * m).collect();
+
+    // Initial step (Hairer, Norsett & Wanner, with algebraic rows masked).
+    let scale0: Vec<f64> = y0.iter().zip(&atol).map(|(y, a)| a + rtol * y.abs()).collect();
+    let d0 = rms(y0, &scale0);
+    let d1 = rms(&fdiff, &scale0);
+    let h0 = if d0 < 1e-5 || d1 < 1e-5 { 1e-6 } else { 0.01 * d0 / d1 };
+    let h0 = h0.min(span);
+    let y1: Vec<f64> = y0.iter().zip(&fdiff).map(|(y, f)| y + h0 * f).collect();
+    let mut f1 = vec![0.0; n];
+    dae.rhs(t + h0, &y1, &mut f1);
+    stats.rhs_evals += 1;
+    let df: Vec<f64> =
+        f1.iter().zip(&fdiff).zip(mass).map(|((a, b), m)| (a * m - b) / h0).collect();
+    let d2 = rms(&df, &scale0);
+    let h1 = if d1 <= 1e-15 && d2 <= 1e-15 {
+        (h0 * 1e-3).max(1e-6)
+    } else {
+        (0.01 / d1.max(d2)).powf(0.5)
+    };
+    let mut h_abs = (100.0 * h0).min(h1).min(opts.max_step).min(span);
+
+    let mut d: Vec<Vec<f64>> = vec![vec![0.0; n]; MAX_ORDER + 3];
+    d[0].copy_from_slice(y0);
+    for i in 0..n {
+        d[1][i] = fdiff[i] * h_abs;
+    }
+    let mut order = 1usize;
+    let mut n_equal_steps = 0usize;
+    let mut lu_valid = false;
+    let mut jac_current = false;
+    let mut have_jac = false;
+
+    let mut f = vec![0.0; n];
+    let mut rhs = vec![0.0; n];
+    let mut y_pred = vec![0.0; n];
+    let mut psi = vec![0.0; n];
+    let mut y_new = vec![0.0; n];
+    let mut dvec = vec![0.0; n];
+    let mut scale = vec![0.0; n];
+    let mut err = vec![0.0; n];
+    let mut g_old = event.map(|g| g(t, y0));
+    let mut steps = 0usize;
+
+    loop {
+        let min_step = 10.0 * (t.abs() * f64::EPSILON).max(f64::MIN_POSITIVE);
+        if h_abs > opts.max_step {
+            change_d(&mut d, order, opts.max_step / h_abs);
+            h_abs = opts.max_step;
+            n_equal_steps = 0;
+            lu_valid = false;
+        }
+        let mut accepted = false;
+        let mut h = h_abs;
+        let mut t_new = t;
+        let mut n_iter = 0;
+        let mut error_norm = 0.0;
+        let mut safety = 0.9;
+        while !accepted {
+            if h_abs < min_step {
+                return Err(Error::Solver { t, reason: "step size fell below its minimum".into() });
+            }
+            t_new = t + h_abs;
+            // Snap to the end rather than leave a sliver of a step.
+            if t_new >= t_end - 1e-3 * h_abs {
+                t_new = t_end;
+                change_d(&mut d, order, (t_new - t) / h_abs);
+                n_equal_steps = 0;
+                lu_valid = false;
+            }
+            h = t_new - t;
+            h_abs = h;
+            for i in 0..n {
+                y_pred[i] = (0..=order).map(|k| d[k][i]).sum();
+                scale[i] = atol[i] + rtol * y_pred[i].abs();
+                psi[i] = (1..=order).map(|k| d[k][i] * gamma[k]).sum::<f64>() / alpha[order];
+            }
+            let c = h / alpha[order];
+            let mut converged = false;
+            loop {
+                if !have_jac {
+                    let mut g = |yy: &[f64], out: &mut [f64]| dae.rhs(t_new, yy, out);
+                    dae.rhs(t_new, &y_pred, &mut f);
+                    ws.pattern.evaluate(&mut g, &y_pred, &f, state_scale, &mut ws.jac);
+                    stats.rhs_evals += 1 + ws.pattern.n_colours();
+                    stats.jacobian_evals += 1;
+                    have_jac = true;
+                    jac_current = true;
+                    lu_valid = false;
+                }
+                if !lu_valid {
+                    ws.system.factorise(mass, c, &ws.jac)?;
+                    stats.factorisations += 1;
+                    lu_valid = true;
+                }
+                // Newton iteration on M (psi + d) - c f(y_pred + d) = 0.
+                y_new.copy_from_slice(&y_pred);
+                dvec.iter_mut().for_each(|v| *v = 0.0);
+                let mut dy_norm_old: Option<f64> = None;
+                converged = false;
+                n_iter = 0;
+                for k in 0..NEWTON_MAXITER {
+                    n_iter = k + 1;
+                    dae.rhs(t_new, &y_new, &mut f);
+                    stats.rhs_evals += 1;
+                    if f.iter().any(|v| !v.is_finite()) {
+                        break;
+                    }
+                    for i in 0..n {
+                        rhs[i] = c * f[i] - mass[i] * (psi[i] + dvec[i]);
+                    }
+                    ws.system.solve(&mut rhs);
+                    let dy_norm = rms(&rhs, &scale);
+                    let rate = dy_norm_old.map(|old| dy_norm / old);
+                    if let Some(r) = rate {
+                        if r >= 1.0
+                            || r.powi((NEWTON_MAXITER - k) as i32) / (1.0 - r) * dy_norm > newton_tol
+                        {
+                            break;
+                        }
+                    }
+                    for i in 0..n {
+                        y_new[i] += rhs[i];
+                        dvec[i] += rhs[i];
+                    }
+                    if dy_norm == 0.0 || rate.is_some_and(|r| r / (1.0 - r) * dy_norm < newton_tol)
+                    {
+                        converged = true;
+                        break;
+                    }
+                    dy_norm_old = Some(dy_norm);
+                }
+                if converged || jac_current {
+                    break;
+                }
+                have_jac = false;
+            }
+            if !converged {
+                h_abs *= 0.5;
+                change_d(&mut d, order, 0.5);
+                n_equal_steps = 0;
+                lu_valid = false;
+                stats.rejected_steps += 1;
+                continue;
+            }
+            safety = 0.9 * (2 * NEWTON_MAXITER + 1) as f64 / (2 * NEWTON_MAXITER + n_iter) as f64;
+            for i in 0..n {
+                scale[i] = atol[i] + rtol * y_new[i].abs();
+                err[i] = error_const[order] * dvec[i];
+            }
+            error_norm = rms(&err, &scale);
+            if error_norm > 1.0 {
+                let factor = MIN_FACTOR.max(safety * error_norm.powf(-1.0 / (order as f64 + 1.0)));
+                h_abs *= factor;
+                change_d(&mut d, order, factor);
+                n_equal_steps = 0;
+                stats.rejected_steps += 1;
+            } else {
+                accepted = true;
+            }
+        }
+        let t_old = t;
+        t = t_new;
+        steps += 1;
+        stats.steps += 1;
+        jac_current = false;
+        n_equal_steps += 1;
+        // Update the difference array.
+        for i in 0..n {
+            d[order + 2][i] = dvec[i] - d[order + 1][i];
+            d[order + 1][i] = dvec[i];
+        }
+        for k in (0..=order).rev() {
+            let (lo, hi) = d.split_at_mut(k + 1);
+            for (a, b) in lo[k].iter_mut().zip(&hi[0]) {
+                *a += b;
+            }
+        }
+        let dense = DenseOutput { t, h, order, d: &d, end: t };
+        // Event location on the interpolant (Illinois false position).
+        if let (Some(g), Some(go)) = (event, g_old) {
+            let g_new = g(t, &d[0]);
+            if go.signum() != g_new.signum() && g_new != go {
+                let mut buf = vec![0.0; n];
+                let (mut ta, mut ga, mut tb, mut gb) = (t_old, go, t, g_new);
+                let mut side = 0i32;
+                for _ in 0..100 {
+                    let tc = (ta * gb - tb * ga) / (gb - ga);
+                    dense.eval(tc, &mut buf);
+                    let gc = g(tc, &buf);
+                    if gc.signum() == gb.signum() {
+                        tb = tc;
+                        gb = gc;
+                        if side == -1 {
+                            ga *= 0.5;
+                        }
+                        side = -1;
+                    } else {
+                        ta = tc;
+                        ga = gc;
+                        if side == 1 {
+                            gb *= 0.5;
+                        }
+                        side = 1;
+                    }
+                    if (tb - ta).abs() <= 1e-12 * t.abs().max(1.0) || gc == 0.0 {
+                        break;
+                    }
+                }
+                let t_event = if ga.abs() < gb.abs() { ta } else { tb };
+                observer(t_old, &DenseOutput { t, h, order, d: &d, end: t_event });
+                dense.eval(t_event, y0);
+                return Ok(StopReason::Event(t_event));
+            }
+            g_old = Some(g_new);
+        }
+        observer(t_old, &dense);
+        if t >= t_end {
+            y0.copy_from_slice(&d[0]);
+            return Ok(StopReason::EndTime);
+        }
+        if steps >= opts.max_steps {
+            return Err(Error::Solver { t, reason: format!("exceeded {} steps", opts.max_steps) });
+        }
+        if n_equal_steps < order + 1 {
+            continue;
+        }
+        let error_m_norm = if order > 1 {
+            let e: Vec<f64> = d[order].iter().map(|v| error_const[order - 1] * v).collect();
+            rms(&e, &scale)
+        } else {
+            f64::INFINITY
+        };
+        let error_p_norm = if order < MAX_ORDER {
+            let e: Vec<f64> = d[order + 2].iter().map(|v| error_const[order + 1] * v).collect();
+            rms(&e, &scale)
+        } else {
+            f64::INFINITY
+        };
+        let norms = [error_m_norm, error_norm, error_p_norm];
+        let mut best = 0;
+        let mut best_factor = f64::NEG_INFINITY;
+        for (k, e) in norms.iter().enumerate() {
+            let fac = e.powf(-1.0 / (order + k) as f64);
+            let fac = if fac.is_nan() { 0.0 } else { fac };
+            if fac > best_factor {
+                best_factor = fac;
+                best = k;
+            }
+        }
+        order = (order as isize + best as isize - 1) as usize;
+        let factor = MAX_FACTOR.min(safety * best_factor);
+        h_abs *= factor;
+        change_d(&mut d, order, factor);
+        n_equal_steps = 0;
+        lu_valid = false;
+    }
+}

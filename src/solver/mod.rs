@@ -1,0 +1,8 @@
+//! Stiff time integration: BDF/NDF with sparse LU, coloured finite-difference Jacobians,
+//! dense output and event location.
+
+pub mod bdf;
+pub mod jacobian;
+pub mod sparse;
+
+pub use bdf::{Dae, DenseOutput, SolverOptions, SolverStats, StopReason, Workspace, integrate};
