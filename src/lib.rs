@@ -9,6 +9,7 @@ pub mod geometry;
 pub mod models;
 pub mod params;
 pub mod protocol;
+pub mod report;
 pub mod simulation;
 pub mod solver;
 

@@ -1,1 +1,141 @@
-fn main() {}
+//! Command-line interface (thin: parsing and printing only).
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+use std::time::Instant;
+
+use clap::{Parser, Subcommand};
+
+use cellstudio::geometry::{MeshSizes, ModelBuilder};
+use cellstudio::models::{ModelKind, Submodels};
+use cellstudio::params::{ParameterSet, chen2020};
+use cellstudio::protocol::Protocol;
+use cellstudio::report::plot::{Series, line_plot};
+use cellstudio::simulation::{SimOptions, simulate};
+use cellstudio::Error;
+
+#[derive(Parser)]
+#[command(name = "cellstudio", about = "Battery design optimisation and parameterisation studio")]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Simulate a discharge or a protocol and write CSV + voltage plot.
+    Simulate {
+        /// spm, spme or dfn.
+        #[arg(long, default_value = "spme")]
+        model: ModelKind,
+        /// Constant-current discharge rate (C) to the lower cut-off.
+        #[arg(long, default_value_t = 1.0)]
+        c_rate: f64,
+        /// Protocol TOML file (overrides --c-rate), e.g. protocols/pulse_1C.toml.
+        #[arg(long)]
+        protocol: Option<PathBuf>,
+        /// Parameter-set TOML file (default: embedded Chen 2020).
+        #[arg(long)]
+        params: Option<PathBuf>,
+        /// Switch on the contact-resistance submodel with this resistance (ohm).
+        #[arg(long)]
+        contact_resistance: Option<f64>,
+        /// Switch on the lumped thermal submodel.
+        #[arg(long)]
+        thermal: bool,
+        /// Volumes per domain and per particle (x_n = x_s = x_p = r_n = r_p).
+        #[arg(long, default_value_t = 20)]
+        mesh: usize,
+        /// Output folder.
+        #[arg(long, default_value = "out")]
+        out: PathBuf,
+        /// Solve this many times and report the median wall time.
+        #[arg(long, default_value_t = 1)]
+        repeat: usize,
+        /// Print the summary as one JSON object.
+        #[arg(long)]
+        json: bool,
+    },
+}
+
+fn main() -> ExitCode {
+    match run(Cli::parse()) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+fn read_toml<T: serde::de::DeserializeOwned>(path: &PathBuf) -> Result<T, Error> {
+    let text = std::fs::read_to_string(path).map_err(|source| Error::Io { path: path.display().to_string(), source })?;
+    toml::from_str(&text).map_err(|e| Error::Parse { path: path.display().to_string(), message: e.to_string() })
+}
+
+fn run(cli: Cli) -> Result<(), Error> {
+    match cli.command {
+        Command::Simulate { model, c_rate, protocol, params, contact_resistance, thermal, mesh, out, repeat, json } => {
+            let mut p: ParameterSet = match &params {
+                Some(path) => ParameterSet::from_toml_file(path)?,
+                None => chen2020(),
+            };
+            if let Some(r) = contact_resistance {
+                p.cell.contact_resistance = r;
+            }
+            let protocol = match &protocol {
+                Some(path) => read_toml::<Protocol>(path)?,
+                None => Protocol::discharge(c_rate),
+            };
+            let submodels = Submodels { contact_resistance: contact_resistance.is_some(), thermal };
+            let sizes = MeshSizes { x_n: mesh, x_s: mesh, x_p: mesh, r_n: mesh, r_p: mesh };
+            let mut builder = ModelBuilder::new(model, submodels, sizes);
+            let t_build = Instant::now();
+            let built = builder.build(&p)?;
+            let build_time = t_build.elapsed().as_secs_f64();
+            let opts = SimOptions::for_cell(&p);
+            let mut times = Vec::new();
+            let mut sol = None;
+            for _ in 0..repeat.max(1) {
+                let t = Instant::now();
+                sol = Some(simulate(built.model.as_ref(), &mut built.workspace, &protocol, &opts, None)?);
+                times.push(t.elapsed().as_secs_f64());
+            }
+            let sol = sol.expect("at least one run");
+            times.sort_by(f64::total_cmp);
+            let median = times[times.len() / 2];
+            std::fs::create_dir_all(&out).map_err(|source| Error::Io { path: out.display().to_string(), source })?;
+            let stem = format!("{}_simulation", model.to_string().to_lowercase());
+            let csv = out.join(format!("{stem}.csv"));
+            let svg = out.join(format!("{stem}_voltage.svg"));
+            sol.write_csv(&csv)?;
+            let label = format!("{model} {}", p.name);
+            line_plot(&svg, "Terminal voltage", "Time (s)", "Voltage (V)", &[Series { label, x: &sol.time, y: &sol.voltage }])?;
+            if json {
+                let summary = serde_json::json!({
+                    "model": model.to_string(),
+                    "capacity_Ah": sol.final_capacity(),
+                    "energy_Wh": sol.final_energy(),
+                    "final_voltage_V": sol.final_voltage(),
+                    "end_time_s": sol.time.last(),
+                    "build_time_s": build_time,
+                    "solve_time_s_median": median,
+                    "repeats": times.len(),
+                    "steps": sol.stats.steps,
+                    "csv": csv.display().to_string(),
+                });
+                println!("{summary}");
+            } else {
+                println!("model            {model} ({})", p.name);
+                println!("capacity         {:.4} A h", sol.final_capacity());
+                println!("energy           {:.4} W h", sol.final_energy());
+                println!("final voltage    {:.4} V at t = {:.1} s", sol.final_voltage(), sol.time.last().copied().unwrap_or(0.0));
+                println!("build time       {:.3} ms", build_time * 1e3);
+                println!("solve time       {:.3} ms (median of {})", median * 1e3, times.len());
+                println!("solver steps     {} ({} Jacobians, {} rhs evaluations)", sol.stats.steps, sol.stats.jacobian_evals, sol.stats.rhs_evals);
+                println!("wrote            {} and {}", csv.display(), svg.display());
+            }
+            Ok(())
+        }
+    }
+}

@@ -1,0 +1,3 @@
+//! Reports: plots (SVG via plotters) and summaries.
+
+pub mod plot;
