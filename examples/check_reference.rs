@@ -9,14 +9,15 @@ use cellstudio::simulation::{SimOptions, simulate};
 fn main() {
     let p = chen2020();
     for kind in [ModelKind::Spm, ModelKind::Spme, ModelKind::Dfn] {
-        for (rate, tag) in [(0.5, "0.5C"), (1.0, "1C"), (2.0, "2C")] {
+        let pulse: Protocol = toml::from_str(&std::fs::read_to_string("protocols/pulse_1C.toml").unwrap()).unwrap();
+        for (proto, tag) in [(Protocol::discharge(0.5), "0.5C"), (Protocol::discharge(1.0), "1C"), (Protocol::discharge(2.0), "2C"), (pulse, "pulse")] {
             let name = format!("{}_{}", kind.to_string().to_lowercase(), tag);
             let rec = Recording::from_csv(format!("tests/data/{name}.csv").as_ref()).unwrap();
             let mut b = ModelBuilder::new(kind, Submodels::default(), MeshSizes::default());
             let built = b.build(&p).unwrap();
-            let opts = SimOptions { t_eval: Some(rec.time.clone()), ..SimOptions::for_cell(&p) };
+            let opts = SimOptions { t_eval: Some(rec.distinct_times()), ..SimOptions::for_cell(&p) };
             let t = std::time::Instant::now();
-            let sol = simulate(built.model.as_ref(), &mut built.workspace, &Protocol::discharge(rate), &opts, None);
+            let sol = simulate(built.model.as_ref(), &mut built.workspace, &proto, &opts, None);
             let el = t.elapsed();
             match sol {
                 Ok(sol) => {

@@ -156,7 +156,6 @@ pub fn consistent_initialisation(
         if !step.is_finite() {
             break;
         }
-        if std::env::var("CS_DEBUG").is_ok() { eprintln!("init step {step:e}"); }
         if step < 1e-12 {
             return Ok(());
         }
@@ -246,7 +245,11 @@ pub fn simulate(
             ));
         }
         match t_eval {
-            None if k == 0 => rec.record(t0, &y, i0, 0.0, 0.0),
+            // Every step start is recorded, so a current jump shows as a vertical edge.
+            None => {
+                let (q, e) = (rec.q, rec.e);
+                rec.record(t0, &y, i0, q, e)
+            }
             Some(te) => {
                 while next_eval < te.len() && te[next_eval] <= t0 {
                     if k == 0 {
@@ -255,7 +258,6 @@ pub fn simulate(
                     next_eval += 1;
                 }
             }
-            _ => {}
         }
         let event_fn = |t: f64, yy: &[f64]| {
             let v = model.voltage(yy, drive.current(t));

@@ -6,8 +6,8 @@ use std::path::Path;
 use crate::error::Error;
 use crate::params::function::interpolate;
 
-/// A recording: time (s, strictly increasing), current (A, discharge positive), voltage (V),
-/// and optionally temperature (K).
+/// A recording: time (s, non-decreasing; a repeated time marks a current step, as PyBaMM
+/// writes them), current (A, discharge positive), voltage (V), and optionally temperature (K).
 #[derive(Clone, Debug, Default)]
 pub struct Recording {
     pub time: Vec<f64>,
@@ -62,7 +62,7 @@ impl Recording {
         if rec.time.len() < 2 {
             return Err(parse_err(format!("needs at least 2 data rows, found {}", rec.time.len())));
         }
-        if let Some(k) = rec.time.windows(2).position(|w| !(w[1] > w[0])) {
+        if let Some(k) = rec.time.windows(2).position(|w| !(w[1] >= w[0])) {
             return Err(parse_err(format!(
                 "line {}: `time_s` = {} does not increase (previous {})",
                 k + 3,
@@ -73,14 +73,24 @@ impl Recording {
         Ok(rec)
     }
 
+    /// Distinct recorded times (s), strictly increasing: output times for a simulation.
+    pub fn distinct_times(&self) -> Vec<f64> {
+        let mut t = self.time.clone();
+        t.dedup();
+        t
+    }
+
     /// Compares simulated voltage `(t, v)` with the recording over the common time span.
+    /// Points at a repeated time (either side of a current step) are ambiguous and skipped.
     pub fn voltage_error(&self, t: &[f64], v: &[f64]) -> VoltageError {
         let (t0, t1) = (t[0].max(self.time[0]), t[t.len() - 1].min(self.time[self.time.len() - 1]));
         let mut sum = 0.0;
         let mut max = 0.0f64;
         let mut points = 0;
-        for (&tr, &vr) in self.time.iter().zip(&self.voltage) {
-            if tr < t0 || tr > t1 {
+        let n = self.time.len();
+        for (k, (&tr, &vr)) in self.time.iter().zip(&self.voltage).enumerate() {
+            let repeated = (k > 0 && self.time[k - 1] == tr) || (k + 1 < n && self.time[k + 1] == tr);
+            if tr < t0 || tr > t1 || repeated {
                 continue;
             }
             let d = interpolate(t, v, tr) - vr;

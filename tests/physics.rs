@@ -1,0 +1,113 @@
+//! Analytic limits and invariants: lithium conservation, the open-circuit limit, and the
+//! ordering of SPM / SPMe / DFN with rate.
+
+mod common;
+
+use cellstudio::geometry::{MeshSizes, ModelBuilder};
+use cellstudio::models::{ModelKind, Submodels};
+use cellstudio::params::chen2020;
+use cellstudio::protocol::{Protocol, Step};
+use cellstudio::simulation::{SimOptions, simulate};
+use common::{pulse, run};
+
+const KINDS: [ModelKind; 3] = [ModelKind::Spm, ModelKind::Spme, ModelKind::Dfn];
+
+/// Solid-phase lithium is conserved to round-off under any current: discharge, rest,
+/// charge, and a drive-cycle-like table, with and without the thermal submodel.
+#[test]
+fn solid_lithium_is_conserved() {
+    let p = chen2020();
+    let protocol = Protocol {
+        steps: vec![
+            Step::CRate { rate: 2.0, duration: 600.0 },
+            Step::Rest { duration: 300.0 },
+            Step::Current { current: -3.0, duration: 300.0 },
+            Step::Table { time: vec![0.0, 30.0, 60.0, 90.0, 120.0], current: vec![5.0, -5.0, 8.0, 0.0, 2.0] },
+        ],
+    };
+    for kind in KINDS {
+        for thermal in [false, true] {
+            let sub = Submodels { thermal, contact_resistance: false };
+            let mut b = ModelBuilder::new(kind, sub, MeshSizes::default());
+            let built = b.build(&p).unwrap();
+            let opts = SimOptions { keep_states: true, ..SimOptions::for_cell(&p) };
+            let sol = simulate(built.model.as_ref(), &mut built.workspace, &protocol, &opts, None).unwrap();
+            let li0 = built.model.solid_lithium(&sol.states[0]);
+            let worst = sol
+                .states
+                .iter()
+                .map(|y| (built.model.solid_lithium(y) - li0).abs() / li0)
+                .fold(0.0, f64::max);
+            println!("{kind} thermal={thermal}: Li {li0:.6} mol, worst relative drift {worst:.2e}");
+            assert!(sol.final_capacity().abs() > 0.1, "{kind}: protocol moved no charge");
+            assert!(worst < 1e-10, "{kind} thermal={thermal}: lithium drift {worst:e}");
+        }
+    }
+}
+
+/// At vanishing current the terminal voltage tends to the OCV of the particle
+/// stoichiometries, linearly in current (overpotentials are linear at small current).
+#[test]
+fn low_current_voltage_tends_to_ocv() {
+    let p = chen2020();
+    for kind in KINDS {
+        let gaps: Vec<f64> = [0.01, 0.001]
+            .iter()
+            .map(|&rate| {
+                let protocol = Protocol { steps: vec![Step::CRate { rate, duration: 600.0 }] };
+                let mut b = ModelBuilder::new(kind, Submodels::default(), MeshSizes::default());
+                let built = b.build(&p).unwrap();
+                let opts = SimOptions { keep_states: true, ..SimOptions::for_cell(&p) };
+                let sol = simulate(built.model.as_ref(), &mut built.workspace, &protocol, &opts, None).unwrap();
+                let y = sol.states.last().unwrap();
+                (sol.final_voltage() - built.model.open_circuit_voltage(y)).abs()
+            })
+            .collect();
+        println!("{kind}: |V - OCV| = {:.4} mV at C/100, {:.4} mV at C/1000", gaps[0] * 1e3, gaps[1] * 1e3);
+        assert!(gaps[1] < 0.5e-3, "{kind}: {} V from OCV at C/1000", gaps[1]);
+        let ratio = gaps[0] / gaps[1];
+        assert!((7.0..13.0).contains(&ratio), "{kind}: gap should scale with current, ratio {ratio}");
+    }
+}
+
+/// SPM, SPMe and DFN agree at C/20 and diverge as the rate grows, SPM first.
+#[test]
+fn models_agree_at_low_rate_and_diverge_in_order() {
+    let p = chen2020();
+    let mut spm_gap = Vec::new();
+    let mut spme_gap = Vec::new();
+    for rate in [0.05, 1.0, 2.0] {
+        let protocol = Protocol::discharge(rate);
+        let t: Vec<f64> = (0..200).map(|k| k as f64 * 0.9 / rate * 3600.0 / 200.0 * 0.95).collect();
+        let v = |kind| run(kind, Submodels::default(), MeshSizes::default(), &p, &protocol, Some(t.clone()), false).voltage;
+        let (spm, spme, dfn) = (v(ModelKind::Spm), v(ModelKind::Spme), v(ModelKind::Dfn));
+        let rms = |a: &[f64]| (a.iter().zip(&dfn).map(|(x, y)| (x - y) * (x - y)).sum::<f64>() / a.len() as f64).sqrt();
+        spm_gap.push(rms(&spm));
+        spme_gap.push(rms(&spme));
+        println!("{rate}C: SPM-DFN {:.2} mV, SPMe-DFN {:.2} mV", spm_gap.last().unwrap() * 1e3, spme_gap.last().unwrap() * 1e3);
+    }
+    // Overpotentials are nearly linear in current, so the C/20 gaps should be about 1/20 of
+    // the 1C gaps; allow 1/10, and a few mV in absolute terms.
+    assert!(spm_gap[0] < 5e-3 && spme_gap[0] < 1e-3, "models disagree at C/20");
+    assert!(spm_gap[0] < spm_gap[1] / 10.0 && spme_gap[0] < spme_gap[1] / 10.0, "C/20 gap not small vs 1C");
+    for k in 0..3 {
+        assert!(spme_gap[k] < spm_gap[k], "SPMe should be closer to DFN than SPM");
+    }
+    for g in [&spm_gap, &spme_gap] {
+        assert!(g[0] < g[1] && g[1] < g[2], "gap should grow with rate: {g:?}");
+    }
+}
+
+/// The pulse protocol relaxes back towards the OCV during each rest.
+#[test]
+fn pulse_relaxes_to_ocv() {
+    let p = chen2020();
+    for kind in KINDS {
+        let sol = run(kind, Submodels::default(), MeshSizes::default(), &p, &pulse(), None, true);
+        let mut b = ModelBuilder::new(kind, Submodels::default(), MeshSizes::default());
+        let model = &b.build(&p).unwrap().model;
+        let y = sol.states.last().unwrap();
+        let gap = (sol.final_voltage() - model.open_circuit_voltage(y)).abs();
+        assert!(gap < 1e-3, "{kind}: {gap} V from OCV after 10 min rest");
+    }
+}
