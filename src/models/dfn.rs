@@ -258,13 +258,16 @@ impl Model for Dfn {
         let ce = &y[l.ce..l.phie];
         let phie = &y[l.phie..l.phis_n];
         self.electrolyte.concentration_rhs(ec, ce, &aj, temp, &mut out[l.ce..l.phie]);
-        let (kappa, kd) = self.electrolyte.conductivities(ec, ce, temp);
+        let (kappa, coef) = self.electrolyte.conductivities(ec, ce, temp);
+        let op = &self.electrolyte;
         let mut i_left = 0.0;
         for i in 0..nx {
+            // Face coefficients as PyBaMM discretises kappa_eff (coef grad c_e - grad phi_e).
             let i_right = if i + 1 < nx {
-                let g = self.electrolyte.gaps[i];
-                -0.5 * (kappa[i] + kappa[i + 1]) * (phie[i + 1] - phie[i]) / g
-                    + 0.5 * (kd[i] + kd[i + 1]) * (ce[i + 1] - ce[i]) / g
+                let g = op.gaps[i];
+                op.arithmetic(i, kappa[i], kappa[i + 1])
+                    * (op.harmonic(i, coef[i], coef[i + 1]) * (ce[i + 1] - ce[i]) / g
+                        - (phie[i + 1] - phie[i]) / g)
             } else {
                 0.0
             };

@@ -70,6 +70,23 @@ impl ElectrolyteOp {
         self.vols.len()
     }
 
+    /// Width-weighted harmonic mean of node values `a`, `b` at the face between volumes `i`
+    /// and `i + 1`: the series resistance of the two half-volumes. PyBaMM uses it for a
+    /// coefficient multiplying a gradient (fluxes).
+    pub fn harmonic(&self, i: usize, a: f64, b: f64) -> f64 {
+        let (wl, wr) = (self.vols[i].dx, self.vols[i + 1].dx);
+        let beta = wl / (wl + wr);
+        1.0 / (beta / a + (1.0 - beta) / b)
+    }
+
+    /// Width-weighted arithmetic mean of node values at the face between volumes `i` and
+    /// `i + 1` (linear interpolation to the face).
+    pub fn arithmetic(&self, i: usize, a: f64, b: f64) -> f64 {
+        let (wl, wr) = (self.vols[i].dx, self.vols[i + 1].dx);
+        let w = wl / (wl + wr);
+        (1.0 - w) * a + w * b
+    }
+
     /// `dc_e/dt` (mol/(m^3 s)) for concentrations `ce` and volumetric reaction currents `aj`
     /// (A/m^3) at temperature `temp` (K).
     pub fn concentration_rhs(&self, ec: &Electrochem, ce: &[f64], aj: &[f64], temp: f64, out: &mut [f64]) {
@@ -81,7 +98,7 @@ impl ElectrolyteOp {
         for i in 0..nx {
             let flux_right = if i + 1 < nx {
                 let node = self.vols[i + 1].tortuosity * p.diffusivity.eval(ce[i + 1]) * arr;
-                let f = -0.5 * (prev_node + node) * (ce[i + 1] - ce[i]) / self.gaps[i];
+                let f = -self.harmonic(i, prev_node, node) * (ce[i + 1] - ce[i]) / self.gaps[i];
                 prev_node = node;
                 f
             } else {
@@ -93,8 +110,9 @@ impl ElectrolyteOp {
         }
     }
 
-    /// Effective conductivity `eps^b kappa(c_e)` (S/m) at each volume, and the coefficient of
-    /// `dc_e/dx` in the ionic current, `kappa_eff 2 (1 - t+) chi R T / (F c_e)` (A m/mol).
+    /// Effective conductivity `eps^b kappa(c_e)` (S/m) at each volume, and the diffusion-
+    /// potential coefficient `2 (1 - t+) chi R T / (F c_e)` (V m^3/mol), so that
+    /// `i_e = kappa_eff (coef dc_e/dx - dphi_e/dx)`.
     pub fn conductivities(&self, ec: &Electrochem, ce: &[f64], temp: f64) -> (Vec<f64>, Vec<f64>) {
         let p = &ec.params.electrolyte;
         let arr = arrhenius(p.activation_energy, ec.t_ref(), temp);
@@ -105,7 +123,7 @@ impl ElectrolyteOp {
             .zip(ce)
             .map(|(v, &c)| v.tortuosity * p.conductivity.eval(c) * arr)
             .collect();
-        let kd = kappa.iter().zip(ce).map(|(k, &c)| k * factor / c.max(1e-6)).collect();
-        (kappa, kd)
+        let coef = ce.iter().map(|&c| factor / c.max(1e-6)).collect();
+        (kappa, coef)
     }
 }

@@ -11,7 +11,7 @@ use super::electrolyte::ElectrolyteOp;
 use super::kinetics::overpotential;
 use super::submodels::thermal::bernardi_heat;
 use super::{Model, PhysicsModel};
-use crate::params::ParameterSet;
+use crate::params::{FARADAY, GAS_CONSTANT, ParameterSet};
 
 #[derive(Clone, Debug)]
 pub struct Spme {
@@ -72,41 +72,28 @@ impl Spme {
         sum / width
     }
 
-    /// Electrolyte potential difference between the positive and negative electrodes,
-    /// x-averaged over each (V): ohmic part from the ionic current through the local
-    /// effective conductivity, plus the concentration (diffusion) potential.
+    /// Electrolyte overpotential (V): PyBaMM's composite form, i.e. the concentration
+    /// (MacInnes) term `chi R T / F (mean_p ln(c_e / c_av) - mean_n ln(c_e / c_av))` plus
+    /// the ohmic drop `-(I/A) (L_n/(3 kappa_n) + L_s/kappa_s + L_p/(3 kappa_p))` with the
+    /// effective conductivities at the cell-averaged concentration `c_av`.
     fn electrolyte_overpotential(&self, ce: &[f64], current: f64, temp: f64) -> f64 {
-        let op = &self.electrolyte;
-        let (kappa, kd) = op.conductivities(&self.ec, ce, temp);
-        let i_app = current / self.ec.area();
-        // Ionic current density at each volume centre: rises linearly through the negative
-        // electrode, constant in the separator, falls through the positive.
-        let ln = self.ec.params.negative.thickness;
-        let ls = self.ec.params.separator.thickness;
-        let lp = self.ec.params.positive.thickness;
-        let centres = self.ec.disc.x_centres();
-        let i_e: Vec<f64> = centres
-            .iter()
-            .map(|&x| {
-                if x < ln {
-                    i_app * x / ln
-                } else if x < ln + ls {
-                    i_app
-                } else {
-                    i_app * (ln + ls + lp - x) / lp
-                }
-            })
-            .collect();
-        // phi_e at volume centres relative to the first centre, by the trapezoid rule on
-        // dphi_e/dx = -i_e/kappa_eff + (kd/kappa_eff) dc_e/dx.
-        let mut phi = vec![0.0; ce.len()];
-        for i in 1..ce.len() {
-            let g = op.gaps[i - 1];
-            let grad_ohm = 0.5 * (i_e[i] / kappa[i] + i_e[i - 1] / kappa[i - 1]);
-            let coef = 0.5 * (kd[i] / kappa[i] + kd[i - 1] / kappa[i - 1]);
-            phi[i] = phi[i - 1] - grad_ohm * g + coef * (ce[i] - ce[i - 1]);
-        }
-        self.electrode_mean(Side::Positive, |i| phi[i]) - self.electrode_mean(Side::Negative, |i| phi[i])
+        let p = &self.ec.params;
+        let e = &p.electrolyte;
+        let vols = &self.electrolyte.vols;
+        let length: f64 = vols.iter().map(|v| v.dx).sum();
+        let c_av = vols.iter().zip(ce).map(|(v, c)| v.dx * c).sum::<f64>() / length;
+        let arr = super::kinetics::arrhenius(e.activation_energy, self.ec.t_ref(), temp);
+        let kappa = e.conductivity.eval(c_av) * arr;
+        let chi = 2.0 * (1.0 - e.transference_number) * e.thermodynamic_factor;
+        let rt_f = GAS_CONSTANT * temp / FARADAY;
+        let macinnes = |side: Side| self.electrode_mean(side, |i| (ce[i].max(1e-6) / c_av).ln());
+        let concentration = chi * rt_f * (macinnes(Side::Positive) - macinnes(Side::Negative));
+        let tor = |eps: f64, b: f64| eps.powf(b);
+        let (n, s, pe) = (&p.negative, &p.separator, &p.positive);
+        let resistance = n.thickness / (3.0 * kappa * tor(n.porosity, n.bruggeman_electrolyte))
+            + s.thickness / (kappa * tor(s.porosity, s.bruggeman))
+            + pe.thickness / (3.0 * kappa * tor(pe.porosity, pe.bruggeman_electrolyte));
+        concentration - current / self.ec.area() * resistance
     }
 
     /// Solid-phase ohmic drop between the x-averaged and current-collector potentials (V).
@@ -203,11 +190,12 @@ impl Model for Spme {
         let temp = self.temp(y);
         let (_, _, ce) = self.blocks(y);
         let (sn, sp) = self.surfaces(y);
+        // Reaction overpotential x-averaged over each electrode, with the local electrolyte
+        // concentration in the exchange current.
         let eta = |side: Side, c_s: f64| {
-            let e = ec.electrode(side);
-            let c_e = self.electrode_mean(side, |i| ce[i]);
+            let alpha = ec.electrode(side).charge_transfer_coefficient;
             let j = ec.mean_interfacial_current(side, current);
-            overpotential(j, ec.j0(side, c_e, c_s, temp), e.charge_transfer_coefficient, temp)
+            self.electrode_mean(side, |i| overpotential(j, ec.j0(side, ce[i], c_s, temp), alpha, temp))
         };
         ec.ocp(Side::Positive, sp) + eta(Side::Positive, sp) - ec.ocp(Side::Negative, sn) - eta(Side::Negative, sn)
             + self.electrolyte_overpotential(ce, current, temp)
