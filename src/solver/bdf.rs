@@ -307,7 +307,7 @@ pub fn integrate(
         let mut accepted = false;
         let mut h = h_abs;
         let mut t_new = t;
-        let mut n_iter = 0;
+        let mut n_iter;
         let mut error_norm = 0.0;
         let mut safety = 0.9;
         while !accepted {
@@ -330,7 +330,7 @@ pub fn integrate(
                 psi[i] = (1..=order).map(|k| d[k][i] * gamma[k]).sum::<f64>() / alpha[order];
             }
             let c = h / alpha[order];
-            let mut converged = false;
+            let mut converged;
             loop {
                 if !have_jac {
                     let mut g = |yy: &[f64], out: &mut [f64]| dae.rhs(t_new, yy, out);
