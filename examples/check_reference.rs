@@ -15,7 +15,11 @@ fn main() {
             let rec = Recording::from_csv(format!("tests/data/{name}.csv").as_ref()).unwrap();
             let mut b = ModelBuilder::new(kind, Submodels::default(), MeshSizes::default());
             let built = b.build(&p).unwrap();
-            let opts = SimOptions { t_eval: Some(rec.distinct_times()), ..SimOptions::for_cell(&p) };
+            let mut opts = SimOptions { t_eval: Some(rec.distinct_times()), ..SimOptions::for_cell(&p) };
+            if let Some(tol) = std::env::var("BENCH_TOL").ok().and_then(|t| t.parse().ok()) {
+                opts.solver.rtol = tol;
+                opts.solver.atol = tol;
+            }
             let t = std::time::Instant::now();
             let sol = simulate(built.model.as_ref(), &mut built.workspace, &proto, &opts, None);
             let el = t.elapsed();

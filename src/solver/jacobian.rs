@@ -92,7 +92,7 @@ mod tests {
 
     #[test]
     fn tridiagonal_needs_three_colours_and_exact_linear_jacobian() {
-        let n = 10;
+        let n: usize = 10;
         let mut entries = Vec::new();
         for i in 0..n {
             for j in i.saturating_sub(1)..(i + 2).min(n) {

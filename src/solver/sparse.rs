@@ -1,12 +1,13 @@
 //! Sparse Newton matrix `M - c J` with a fixed pattern, factorised by faer's sparse LU.
 //!
-//! The symbolic factorisation is done once per pattern (once per mesh); every Newton-matrix
-//! update is a numeric refactorisation only.
+//! The symbolic factorisation (fill-reducing ordering, elimination structure) is done once
+//! per pattern, i.e. once per model build; every Newton-matrix update is a numeric
+//! refactorisation into preallocated storage, and solves reuse preallocated scratch.
 
-use faer::Par;
-use faer::linalg::solvers::Solve;
-use faer::sparse::linalg::solvers::{Lu, SymbolicLu};
+use faer::dyn_stack::{MemBuffer, MemStack};
+use faer::sparse::linalg::lu::{LuRef, NumericLu, SymbolicLu, factorize_symbolic_lu};
 use faer::sparse::{SparseColMatRef, SymbolicSparseColMat};
+use faer::{Conj, Par};
 
 use crate::error::Error;
 
@@ -20,7 +21,16 @@ pub struct SparseSystem {
     slots: Vec<usize>,
     values: Vec<f64>,
     symbolic_lu: SymbolicLu<usize>,
-    lu: Option<Lu<usize, f64>>,
+    numeric_lu: NumericLu<usize, f64>,
+    factorised: bool,
+    factor_scratch: MemBuffer,
+    solve_scratch: MemBuffer,
+}
+
+impl Clone for SparseSystem {
+    fn clone(&self) -> Self {
+        Self::from_parts(self.n, self.symbolic.clone(), self.diag.clone(), self.slots.clone(), self.symbolic_lu.clone())
+    }
 }
 
 impl SparseSystem {
@@ -48,11 +58,35 @@ impl SparseSystem {
         };
         let diag = (0..n).map(|i| slot_of(i, i)).collect();
         let slots = entries.iter().map(|&(r, c)| slot_of(r, c)).collect();
-        let nnz = row_idx.len();
         let symbolic = SymbolicSparseColMat::new_checked(n, n, col_ptr, None, row_idx);
-        let symbolic_lu = SymbolicLu::try_new(symbolic.as_ref())
+        let symbolic_lu = factorize_symbolic_lu(symbolic.as_ref(), Default::default())
             .map_err(|e| Error::Linear(format!("symbolic LU: {e:?}")))?;
-        Ok(Self { n, symbolic, diag, slots, values: vec![0.0; nnz], symbolic_lu, lu: None })
+        Ok(Self::from_parts(n, symbolic, diag, slots, symbolic_lu))
+    }
+
+    fn from_parts(
+        n: usize,
+        symbolic: SymbolicSparseColMat<usize>,
+        diag: Vec<usize>,
+        slots: Vec<usize>,
+        symbolic_lu: SymbolicLu<usize>,
+    ) -> Self {
+        let factor_scratch =
+            MemBuffer::new(symbolic_lu.factorize_numeric_lu_scratch::<f64>(Par::Seq, Default::default()));
+        let solve_scratch = MemBuffer::new(symbolic_lu.solve_in_place_scratch::<f64>(1, Par::Seq));
+        let nnz = symbolic.row_idx().len();
+        Self {
+            n,
+            symbolic,
+            diag,
+            slots,
+            values: vec![0.0; nnz],
+            symbolic_lu,
+            numeric_lu: NumericLu::new(),
+            factorised: false,
+            factor_scratch,
+            solve_scratch,
+        }
     }
 
     /// Number of stored non-zeros.
@@ -71,17 +105,29 @@ impl SparseSystem {
             self.values[slot] += mass[i];
         }
         let mat = SparseColMatRef::new(self.symbolic.as_ref(), &self.values);
-        faer::set_global_parallelism(Par::Seq);
-        let lu = Lu::try_new_with_symbolic(self.symbolic_lu.clone(), mat)
+        self.factorised = false;
+        self.symbolic_lu
+            .factorize_numeric_lu(
+                &mut self.numeric_lu,
+                mat,
+                Par::Seq,
+                MemStack::new(&mut self.factor_scratch),
+                Default::default(),
+            )
             .map_err(|e| Error::Linear(format!("numeric LU: {e:?}")))?;
-        self.lu = Some(lu);
+        self.factorised = true;
         Ok(())
     }
 
     /// Solves in place with the last factorisation.
-    pub fn solve(&self, rhs: &mut [f64]) {
+    pub fn solve(&mut self, rhs: &mut [f64]) {
         debug_assert_eq!(rhs.len(), self.n);
-        let lu = self.lu.as_ref().expect("factorise before solve");
-        lu.solve_in_place(faer::ColMut::from_slice_mut(rhs).as_mat_mut());
+        assert!(self.factorised, "factorise before solve");
+        LuRef::new_unchecked(&self.symbolic_lu, &self.numeric_lu).solve_in_place_with_conj(
+            Conj::No,
+            faer::ColMut::from_slice_mut(rhs).as_mat_mut(),
+            Par::Seq,
+            MemStack::new(&mut self.solve_scratch),
+        );
     }
 }
