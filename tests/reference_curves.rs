@@ -70,3 +70,25 @@ fn dfn_mesh_refinement_converges_to_fine_reference() {
     }
     assert!(errors[3] < 1e-3, "finest mesh still {:.3} mV from the fine reference", errors[3] * 1e3);
 }
+
+/// SPM with a 10 mOhm contact resistance and D_n = 3.3e-14 m^2/s: 1C to 2.5 V then 30 min
+/// rest (the fitting seed's synthetic case), against PyBaMM.
+#[test]
+fn spm_contact_resistance_matches_pybamm() {
+    let mut p = chen2020();
+    p.cell.contact_resistance = 0.01;
+    p.negative.diffusivity = 3.3e-14;
+    let protocol = Protocol {
+        steps: vec![
+            cellstudio::protocol::Step::CRate { rate: 1.0, duration: 7200.0 },
+            cellstudio::protocol::Step::Rest { duration: 1800.0 },
+        ],
+    };
+    let rec = reference("spm_contact_resistance_seed");
+    let sub = Submodels { contact_resistance: true, thermal: false };
+    let sol = run(ModelKind::Spm, sub, MeshSizes::default(), &p, &protocol, Some(rec.distinct_times()), false);
+    let err = rec.voltage_error(&sol.time, &sol.voltage);
+    println!("spm_contact_resistance_seed: rms {:.3} mV, max {:.3} mV over {} points", err.rms * 1e3, err.max * 1e3, err.points);
+    assert!(err.points as f64 > 0.98 * rec.time.len() as f64, "compared only {} points", err.points);
+    assert!(err.rms < 3e-3, "RMS {:.3} mV", err.rms * 1e3);
+}

@@ -14,7 +14,12 @@ pub struct Series<'a> {
 }
 
 fn bounds<'a>(values: impl Iterator<Item = &'a f64>) -> (f64, f64) {
-    let (lo, hi) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &v| (lo.min(v), hi.max(v)));
+    let (lo, hi) = values
+        .filter(|v| v.is_finite())
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &v| (lo.min(v), hi.max(v)));
+    if !(lo <= hi) {
+        return (0.0, 1.0);
+    }
     let pad = ((hi - lo) * 0.05).max(1e-9);
     (lo - pad, hi + pad)
 }
@@ -42,7 +47,10 @@ pub fn line_plot(path: &Path, title: &str, x_label: &str, y_label: &str, series:
     for (k, s) in series.iter().enumerate() {
         let colour = Palette99::pick(k).to_rgba();
         chart
-            .draw_series(LineSeries::new(s.x.iter().copied().zip(s.y.iter().copied()), colour.stroke_width(2)))
+            .draw_series(LineSeries::new(
+                s.x.iter().copied().zip(s.y.iter().copied()).filter(|(x, y)| x.is_finite() && y.is_finite()),
+                colour.stroke_width(2),
+            ))
             .map_err(|e| err(e.to_string()))?
             .label(s.label.clone())
             .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], colour.stroke_width(2)));

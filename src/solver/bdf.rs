@@ -451,7 +451,12 @@ pub fn integrate(
                 let (mut ta, mut ga, mut tb, mut gb) = (t_old, go, t, g_new);
                 let mut side = 0i32;
                 for _ in 0..100 {
-                    let tc = (ta * gb - tb * ga) / (gb - ga);
+                    // False position, falling back to bisection where g is not finite
+                    // (e.g. the voltage of a depleted particle).
+                    let tc = match (ta * gb - tb * ga) / (gb - ga) {
+                        x if x.is_finite() && x > ta.min(tb) && x < ta.max(tb) => x,
+                        _ => 0.5 * (ta + tb),
+                    };
                     dense.eval(tc, &mut buf);
                     let gc = g(tc, &buf);
                     if gc.signum() == gb.signum() {
