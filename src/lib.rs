@@ -8,6 +8,7 @@ pub mod error;
 pub mod geometry;
 pub mod models;
 pub mod params;
+pub mod problem;
 pub mod protocol;
 pub mod report;
 pub mod simulation;

@@ -1,0 +1,206 @@
+//! Design problems: a candidate design (values of chosen parameters) is turned into a
+//! parameter set, discharged in simulation, and measured as energy and power per cell mass
+//! and volume.
+
+use std::sync::Mutex;
+
+use serde::{Deserialize, Serialize};
+
+use crate::error::Error;
+use crate::geometry::{MeshSizes, ModelBuilder};
+use crate::models::{ModelKind, Submodels};
+use crate::params::{FARADAY, ParameterSet};
+use crate::protocol::Protocol;
+use crate::simulation::{SimOptions, simulate};
+
+/// A figure of merit of a discharged design.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Metric {
+    /// Energy per cell mass (W h/kg).
+    GravimetricEnergyDensity,
+    /// Energy per cell volume (W h/L).
+    VolumetricEnergyDensity,
+    /// Mean discharge power per cell mass (W/kg).
+    GravimetricPowerDensity,
+    /// Mean discharge power per cell volume (W/L).
+    VolumetricPowerDensity,
+}
+
+/// How a dependent parameter follows the decision variables: `target = constant - sum(of)`.
+/// E.g. porosity tied to the active fraction with the binder fraction held fixed:
+/// `positive.porosity = (1 - inactive) - positive.active_fraction`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Tie {
+    /// Dotted parameter path that is set.
+    pub target: String,
+    /// Constant term.
+    pub constant: f64,
+    /// Dotted parameter paths subtracted from the constant.
+    pub minus: Vec<String>,
+}
+
+impl Tie {
+    /// `target = 1 - inactive - active` with the base set's inactive fraction held fixed.
+    pub fn porosity_from_active(electrode: &str, base: &ParameterSet) -> Result<Self, Error> {
+        let active = base.get(&format!("{electrode}.active_fraction"))?;
+        let porosity = base.get(&format!("{electrode}.porosity"))?;
+        Ok(Self {
+            target: format!("{electrode}.porosity"),
+            constant: active + porosity,
+            minus: vec![format!("{electrode}.active_fraction")],
+        })
+    }
+}
+
+/// Everything measured on one design's discharge.
+#[derive(Clone, Copy, Debug, Default, Serialize)]
+pub struct DesignMetrics {
+    /// Delivered energy (W h).
+    pub energy: f64,
+    /// Discharged capacity (A h).
+    pub capacity: f64,
+    /// Discharge duration (s).
+    pub duration: f64,
+    /// Cell mass (kg).
+    pub mass: f64,
+    /// Cell volume (m^3).
+    pub volume: f64,
+    /// Discharge current (A).
+    pub current: f64,
+    pub gravimetric_energy_density: f64,
+    pub volumetric_energy_density: f64,
+    pub gravimetric_power_density: f64,
+    pub volumetric_power_density: f64,
+}
+
+impl DesignMetrics {
+    pub fn get(&self, m: Metric) -> f64 {
+        match m {
+            Metric::GravimetricEnergyDensity => self.gravimetric_energy_density,
+            Metric::VolumetricEnergyDensity => self.volumetric_energy_density,
+            Metric::GravimetricPowerDensity => self.gravimetric_power_density,
+            Metric::VolumetricPowerDensity => self.volumetric_power_density,
+        }
+    }
+}
+
+/// Theoretical capacity (A h) of a cell from its initial state: the smaller of the lithium
+/// the negative electrode can release (down to stoichiometry 0) and the positive electrode
+/// can accept (up to stoichiometry 1).
+pub fn theoretical_capacity(p: &ParameterSet) -> f64 {
+    let a = p.cell.area();
+    let neg = &p.negative;
+    let pos = &p.positive;
+    let releasable = neg.active_fraction * neg.thickness * a * neg.initial_concentration;
+    let acceptable = pos.active_fraction * pos.thickness * a * (pos.max_concentration - pos.initial_concentration);
+    releasable.min(acceptable) * FARADAY / 3600.0
+}
+
+/// A design problem: decision variables (dotted parameter paths), ties, and the discharge.
+pub struct DesignProblem {
+    pub base: ParameterSet,
+    pub variables: Vec<String>,
+    pub ties: Vec<Tie>,
+    pub kind: ModelKind,
+    pub submodels: Submodels,
+    pub mesh: MeshSizes,
+    /// Discharge rate (C).
+    pub c_rate: f64,
+    /// Re-derive 1C from each candidate's theoretical capacity instead of the nominal one.
+    pub rate_from_theoretical_capacity: bool,
+    /// Builders re-used across evaluations (one per concurrent evaluation).
+    pool: Mutex<Vec<ModelBuilder>>,
+}
+
+impl DesignProblem {
+    pub fn new(
+        base: ParameterSet,
+        variables: Vec<String>,
+        ties: Vec<Tie>,
+        kind: ModelKind,
+        c_rate: f64,
+        rate_from_theoretical_capacity: bool,
+    ) -> Result<Self, Error> {
+        for v in variables.iter().chain(ties.iter().map(|t| &t.target)) {
+            base.get(v)?;
+        }
+        if !(c_rate > 0.0 && c_rate.is_finite()) {
+            return Err(Error::invalid("c_rate", c_rate, "must be positive"));
+        }
+        Ok(Self {
+            base,
+            variables,
+            ties,
+            kind,
+            submodels: Submodels::default(),
+            mesh: MeshSizes::default(),
+            c_rate,
+            rate_from_theoretical_capacity,
+            pool: Mutex::new(Vec::new()),
+        })
+    }
+
+    /// The parameter set of a candidate `x` (one value per variable, ties applied).
+    pub fn parameters(&self, x: &[f64]) -> Result<ParameterSet, Error> {
+        let mut p = self.base.clone();
+        for (path, &v) in self.variables.iter().zip(x) {
+            p.set(path, v)?;
+        }
+        for tie in &self.ties {
+            let mut value = tie.constant;
+            for m in &tie.minus {
+                value -= p.get(m)?;
+            }
+            p.set(&tie.target, value)?;
+        }
+        p.validate()?;
+        Ok(p)
+    }
+
+    /// Simulates the discharge of candidate `x` and measures it.
+    pub fn evaluate(&self, x: &[f64]) -> Result<DesignMetrics, Error> {
+        let p = self.parameters(x)?;
+        let mut builder = self
+            .pool
+            .lock()
+            .expect("builder pool")
+            .pop()
+            .unwrap_or_else(|| ModelBuilder::new(self.kind, self.submodels, self.mesh));
+        let result = self.discharge(&mut builder, &p);
+        self.pool.lock().expect("builder pool").push(builder);
+        result
+    }
+
+    fn discharge(&self, builder: &mut ModelBuilder, p: &ParameterSet) -> Result<DesignMetrics, Error> {
+        let one_c = if self.rate_from_theoretical_capacity { theoretical_capacity(p) } else { p.cell.nominal_capacity };
+        let current = self.c_rate * one_c;
+        let built = builder.build(p)?;
+        let protocol = Protocol {
+            steps: vec![crate::protocol::Step::Current { current, duration: 1.5 * 3600.0 / self.c_rate }],
+        };
+        let sol = simulate(built.model.as_ref(), &mut built.workspace, &protocol, &SimOptions::for_cell(p), None)?;
+        let budget = p.budget();
+        let energy = sol.final_energy();
+        let duration = sol.time.last().copied().unwrap_or(0.0);
+        let power = if duration > 0.0 { energy * 3600.0 / duration } else { 0.0 };
+        Ok(DesignMetrics {
+            energy,
+            capacity: sol.final_capacity(),
+            duration,
+            mass: budget.mass,
+            volume: budget.volume,
+            current,
+            gravimetric_energy_density: energy / budget.mass,
+            volumetric_energy_density: energy / (budget.volume * 1e3),
+            gravimetric_power_density: power / budget.mass,
+            volumetric_power_density: power / (budget.volume * 1e3),
+        })
+    }
+
+    /// Model builds so far across all builders.
+    pub fn rebuild_count(&self) -> usize {
+        self.pool.lock().expect("builder pool").iter().map(|b| b.rebuild_count()).sum()
+    }
+}

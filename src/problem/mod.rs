@@ -1,0 +1,3 @@
+//! Problems: what to simulate for a candidate parameter vector and what to measure.
+
+pub mod design;
