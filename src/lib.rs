@@ -12,6 +12,7 @@ pub mod problem;
 pub mod protocol;
 pub mod report;
 pub mod simulation;
+pub mod study;
 pub mod solver;
 
 pub use error::{Error, Result};

@@ -13,6 +13,8 @@ use cellstudio::protocol::Protocol;
 use cellstudio::report::plot::{Series, line_plot};
 use cellstudio::simulation::{SimOptions, simulate};
 use cellstudio::Error;
+use cellstudio::study::Study;
+use cellstudio::study::sweep::run_sweep;
 
 #[derive(Parser)]
 #[command(name = "cellstudio", about = "Battery design optimisation and parameterisation studio")]
@@ -56,6 +58,11 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Evaluate a study's grid sweep (in parallel) and write CSV, JSON and density plots.
+    Sweep {
+        /// Study file, e.g. designs/gravimetric_chen2020.toml.
+        study: PathBuf,
+    },
 }
 
 fn main() -> ExitCode {
@@ -75,6 +82,25 @@ fn read_toml<T: serde::de::DeserializeOwned>(path: &PathBuf) -> Result<T, Error>
 
 fn run(cli: Cli) -> Result<(), Error> {
     match cli.command {
+        Command::Sweep { study } => {
+            let study = Study::from_file(&study)?;
+            let out = run_sweep(&study)?;
+            let ok: Vec<_> = out.points.iter().filter_map(|p| p.metrics.map(|m| (p, m))).collect();
+            let failed = out.points.len() - ok.len();
+            println!("study            {}", study.name);
+            println!("designs          {} evaluated ({failed} failed) in {:.2} s, {:.0} designs/s, {} model builds", out.points.len(), out.seconds, out.points.len() as f64 / out.seconds, out.rebuilds);
+            println!("baseline         {:.1} W h/kg, {:.1} W h/L", out.baseline.gravimetric_energy_density, out.baseline.volumetric_energy_density);
+            for (label, pick) in [("best W h/kg", true), ("best W h/L", false)] {
+                let key = |m: &cellstudio::problem::design::DesignMetrics| if pick { m.gravimetric_energy_density } else { m.volumetric_energy_density };
+                if let Some((p, m)) = ok.iter().max_by(|a, b| key(&a.1).total_cmp(&key(&b.1))) {
+                    println!("{label:16} {:.1} W h/kg, {:.1} W h/L at {:?}", m.gravimetric_energy_density, m.volumetric_energy_density, p.x);
+                }
+            }
+            for f in &out.files {
+                println!("wrote            {}", f.display());
+            }
+            Ok(())
+        }
         Command::Simulate { model, c_rate, protocol, params, contact_resistance, thermal, mesh, out, repeat, json } => {
             let mut p: ParameterSet = match &params {
                 Some(path) => ParameterSet::from_toml_file(path)?,

@@ -1,3 +1,4 @@
 //! Problems: what to simulate for a candidate parameter vector and what to measure.
 
 pub mod design;
+pub mod sweep;

@@ -63,3 +63,51 @@ pub fn line_plot(path: &Path, title: &str, x_label: &str, y_label: &str, series:
         .map_err(|e| err(e.to_string()))?;
     root.present().map_err(|e| err(e.to_string()))
 }
+
+/// A heat map of `z[i][j]` over the grid `x[i]`, `y[j]` (NaN cells are left blank), with the
+/// point `mark` (e.g. the baseline design) drawn as a cross.
+pub fn heat_map(
+    path: &Path,
+    title: &str,
+    labels: (&str, &str),
+    x: &[f64],
+    y: &[f64],
+    z: &[Vec<f64>],
+    mark: Option<(f64, f64)>,
+) -> Result<(), Error> {
+    let err = |e: String| Error::Plot { path: path.display().to_string(), message: e };
+    let root = SVGBackend::new(path, (900, 700)).into_drawing_area();
+    root.fill(&WHITE).map_err(|e| err(e.to_string()))?;
+    let half = |v: &[f64]| if v.len() > 1 { 0.5 * (v[1] - v[0]) } else { 0.5 };
+    let (hx, hy) = (half(x), half(y));
+    let (zmin, zmax) = bounds(z.iter().flatten());
+    let mut chart = ChartBuilder::on(&root)
+        .caption(title, ("sans-serif", 22))
+        .margin(15)
+        .x_label_area_size(45)
+        .y_label_area_size(70)
+        .build_cartesian_2d((x[0] - hx)..(x[x.len() - 1] + hx), (y[0] - hy)..(y[y.len() - 1] + hy))
+        .map_err(|e| err(e.to_string()))?;
+    chart.configure_mesh().x_desc(labels.0).y_desc(labels.1).draw().map_err(|e| err(e.to_string()))?;
+    let cells = x.iter().enumerate().flat_map(|(i, &xi)| {
+        y.iter().enumerate().filter_map(move |(j, &yj)| {
+            let v = z[i][j];
+            v.is_finite().then(|| {
+                let t = (v - zmin) / (zmax - zmin);
+                let colour = ViridisRGB::get_color(t);
+                Rectangle::new([(xi - hx, yj - hy), (xi + hx, yj + hy)], colour.filled())
+            })
+        })
+    });
+    chart.draw_series(cells).map_err(|e| err(e.to_string()))?;
+    if let Some((mx, my)) = mark {
+        chart
+            .draw_series(std::iter::once(Cross::new((mx, my), 8, BLACK.stroke_width(3))))
+            .map_err(|e| err(e.to_string()))?
+            .label("baseline")
+            .legend(|(x, y)| Cross::new((x, y), 6, BLACK.stroke_width(2)));
+        chart.configure_series_labels().background_style(WHITE.mix(0.8)).border_style(BLACK).draw().map_err(|e| err(e.to_string()))?;
+    }
+    root.titled(&format!("range {zmin:.4} .. {zmax:.4}"), ("sans-serif", 14)).map_err(|e| err(e.to_string()))?;
+    root.present().map_err(|e| err(e.to_string()))
+}

@@ -1,0 +1,193 @@
+//! Design study files (TOML): cell, model, operating point, decision variables, ties,
+//! objectives, optimiser and outputs. Unknown keys are errors naming the key and line.
+
+pub mod sweep;
+
+use std::path::{Path, PathBuf};
+
+use serde::{Deserialize, Serialize};
+
+use crate::error::Error;
+use crate::models::ModelKind;
+use crate::params::{ParameterSet, chen2020};
+use crate::problem::design::{DesignProblem, Metric, Tie};
+
+/// A design study as written in `designs/*.toml`.
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct Study {
+    /// Title used in reports.
+    pub name: String,
+    #[serde(default)]
+    pub cell: CellChoice,
+    #[serde(default)]
+    pub model: ModelChoice,
+    pub operating: Operating,
+    pub variables: Vec<Variable>,
+    #[serde(default)]
+    pub ties: Vec<Tie>,
+    pub objective: Objectives,
+    #[serde(default)]
+    pub optimiser: toml::Table,
+    #[serde(default)]
+    pub sweep: Option<Sweep>,
+    #[serde(default)]
+    pub output: Output,
+}
+
+/// Which parameter set to start from.
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct CellChoice {
+    /// `chen2020` (embedded) or a path to a parameter-set TOML file.
+    pub parameter_set: String,
+}
+
+impl Default for CellChoice {
+    fn default() -> Self {
+        Self { parameter_set: "chen2020".into() }
+    }
+}
+
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct ModelChoice {
+    /// spm, spme or dfn.
+    pub kind: ModelKind,
+}
+
+impl Default for ModelChoice {
+    fn default() -> Self {
+        Self { kind: ModelKind::Spme }
+    }
+}
+
+/// The operating condition of the discharge.
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct Operating {
+    /// Discharge rate (C).
+    pub c_rate: f64,
+    /// Derive 1C from each candidate's theoretical capacity rather than the nominal one.
+    #[serde(default)]
+    pub rate_from_theoretical_capacity: bool,
+}
+
+/// A decision variable.
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct Variable {
+    /// Dotted parameter path, e.g. `positive.thickness`.
+    pub path: String,
+    pub lower: f64,
+    pub upper: f64,
+    /// Search in log space.
+    #[serde(default)]
+    pub log: bool,
+}
+
+/// Objectives: one to maximise for `design`, two or more for `pareto`.
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct Objectives {
+    pub maximise: Vec<Metric>,
+}
+
+/// Grid sweep settings.
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct Sweep {
+    /// Points per variable.
+    pub points: Vec<usize>,
+}
+
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct Output {
+    /// Folder for CSV, JSON, plots and the report.
+    pub dir: PathBuf,
+}
+
+impl Default for Output {
+    fn default() -> Self {
+        Self { dir: PathBuf::from("out") }
+    }
+}
+
+impl Study {
+    /// Reads and checks a study file.
+    pub fn from_file(path: &Path) -> Result<Self, Error> {
+        let text = std::fs::read_to_string(path).map_err(|source| Error::Io { path: path.display().to_string(), source })?;
+        Self::from_toml(&text, &path.display().to_string())
+    }
+
+    /// Parses and checks study text; `origin` names it in errors.
+    pub fn from_toml(text: &str, origin: &str) -> Result<Self, Error> {
+        let study: Study = toml::from_str(text).map_err(|e| Error::Parse { path: origin.into(), message: e.to_string() })?;
+        study.validate()?;
+        Ok(study)
+    }
+
+    /// Checks bounds, paths and settings against the base parameter set.
+    pub fn validate(&self) -> Result<(), Error> {
+        let base = self.base_parameters()?;
+        if self.variables.is_empty() {
+            return Err(Error::InvalidSetting { field: "variables".into(), reason: "at least one is needed".into() });
+        }
+        for (k, v) in self.variables.iter().enumerate() {
+            base.get(&v.path).map_err(|_| Error::InvalidSetting {
+                field: format!("variables[{k}].path"),
+                reason: format!("`{}` is not a scalar parameter", v.path),
+            })?;
+            if !(v.lower < v.upper) || !v.lower.is_finite() || !v.upper.is_finite() {
+                return Err(Error::invalid(format!("variables[{k}].upper"), v.upper, format!("must exceed lower = {}", v.lower)));
+            }
+            if v.log && v.lower <= 0.0 {
+                return Err(Error::invalid(format!("variables[{k}].lower"), v.lower, "must be positive for a log variable"));
+            }
+        }
+        if !(self.operating.c_rate > 0.0 && self.operating.c_rate.is_finite()) {
+            return Err(Error::invalid("operating.c_rate", self.operating.c_rate, "must be positive"));
+        }
+        if self.objective.maximise.is_empty() {
+            return Err(Error::InvalidSetting { field: "objective.maximise".into(), reason: "is empty".into() });
+        }
+        if let Some(s) = &self.sweep {
+            if s.points.len() != self.variables.len() || s.points.iter().any(|&n| n < 2) {
+                return Err(Error::InvalidSetting {
+                    field: "sweep.points".into(),
+                    reason: format!("needs one count >= 2 per variable ({} variables), got {:?}", self.variables.len(), s.points),
+                });
+            }
+        }
+        // The baseline itself must satisfy the ties and physical ranges.
+        self.problem()?.parameters(&self.baseline()?)?;
+        Ok(())
+    }
+
+    /// The base parameter set.
+    pub fn base_parameters(&self) -> Result<ParameterSet, Error> {
+        match self.cell.parameter_set.as_str() {
+            "chen2020" => Ok(chen2020()),
+            path => ParameterSet::from_toml_file(Path::new(path)),
+        }
+    }
+
+    /// Decision-variable values of the base parameter set.
+    pub fn baseline(&self) -> Result<Vec<f64>, Error> {
+        let base = self.base_parameters()?;
+        self.variables.iter().map(|v| base.get(&v.path)).collect()
+    }
+
+    /// The design problem the study describes.
+    pub fn problem(&self) -> Result<DesignProblem, Error> {
+        DesignProblem::new(
+            self.base_parameters()?,
+            self.variables.iter().map(|v| v.path.clone()).collect(),
+            self.ties.clone(),
+            self.model.kind,
+            self.operating.c_rate,
+            self.operating.rate_from_theoretical_capacity,
+        )
+    }
+}

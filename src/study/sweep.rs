@@ -1,0 +1,100 @@
+//! Running a study's sweep: grid evaluation, CSV/JSON and density plots.
+
+use std::fmt::Write as _;
+use std::path::PathBuf;
+use std::time::Instant;
+
+use super::Study;
+use crate::error::Error;
+use crate::problem::design::DesignMetrics;
+use crate::problem::sweep::{SweepPoint, evaluate_all, grid};
+use crate::report::plot::{Series, heat_map, line_plot};
+
+/// What a sweep produced.
+pub struct SweepOutcome {
+    pub points: Vec<SweepPoint>,
+    pub baseline: DesignMetrics,
+    pub rebuilds: usize,
+    pub seconds: f64,
+    pub files: Vec<PathBuf>,
+}
+
+fn io(path: &std::path::Path) -> impl FnOnce(std::io::Error) -> Error + '_ {
+    move |source| Error::Io { path: path.display().to_string(), source }
+}
+
+/// Evaluates the study's grid in parallel and writes `sweep.csv`, `sweep.json` and plots of
+/// gravimetric and volumetric energy density into the output folder.
+pub fn run_sweep(study: &Study) -> Result<SweepOutcome, Error> {
+    let sweep = study.sweep.as_ref().ok_or_else(|| Error::InvalidSetting {
+        field: "sweep".into(),
+        reason: "the study has no [sweep] table".into(),
+    })?;
+    let problem = study.problem()?;
+    let lower: Vec<f64> = study.variables.iter().map(|v| v.lower).collect();
+    let upper: Vec<f64> = study.variables.iter().map(|v| v.upper).collect();
+    let candidates = grid(&lower, &upper, &sweep.points);
+    let start = Instant::now();
+    let baseline_x = study.baseline()?;
+    let baseline = problem.evaluate(&baseline_x)?;
+    let points = evaluate_all(&problem, &candidates);
+    let seconds = start.elapsed().as_secs_f64();
+    let dir = &study.output.dir;
+    std::fs::create_dir_all(dir).map_err(io(dir))?;
+    let mut files = Vec::new();
+
+    let names: Vec<&str> = study.variables.iter().map(|v| v.path.as_str()).collect();
+    let mut csv = names.join(",");
+    csv.push_str(",energy_Wh,mass_kg,volume_m3,gravimetric_energy_density_Wh_kg,volumetric_energy_density_Wh_L,gravimetric_power_density_W_kg,volumetric_power_density_W_L,error\n");
+    for p in &points {
+        let xs: Vec<String> = p.x.iter().map(|v| format!("{v:e}")).collect();
+        let m = p.metrics.unwrap_or_default();
+        let nan = p.metrics.is_none();
+        let f = |v: f64| if nan { "nan".to_string() } else { format!("{v}") };
+        let _ = writeln!(
+            csv,
+            "{},{},{},{},{},{},{},{},{}",
+            xs.join(","),
+            f(m.energy),
+            f(m.mass),
+            f(m.volume),
+            f(m.gravimetric_energy_density),
+            f(m.volumetric_energy_density),
+            f(m.gravimetric_power_density),
+            f(m.volumetric_power_density),
+            p.error.clone().unwrap_or_default().replace(',', ";")
+        );
+    }
+    let csv_path = dir.join("sweep.csv");
+    std::fs::write(&csv_path, csv).map_err(io(&csv_path))?;
+    files.push(csv_path);
+    let json_path = dir.join("sweep.json");
+    let json = serde_json::json!({ "study": study.name, "variables": names, "baseline": baseline, "points": points });
+    std::fs::write(&json_path, serde_json::to_string_pretty(&json).unwrap_or_default()).map_err(io(&json_path))?;
+    files.push(json_path);
+
+    let value = |p: &SweepPoint, grav: bool| {
+        p.metrics.map_or(f64::NAN, |m| if grav { m.gravimetric_energy_density } else { m.volumetric_energy_density })
+    };
+    for (grav, stem, unit) in [(true, "gravimetric_energy_density", "W h/kg"), (false, "volumetric_energy_density", "W h/L")] {
+        let path = dir.join(format!("sweep_{stem}.svg"));
+        let title = format!("{} ({unit})", stem.replace('_', " "));
+        match sweep.points.len() {
+            1 => {
+                let x: Vec<f64> = points.iter().map(|p| p.x[0]).collect();
+                let y: Vec<f64> = points.iter().map(|p| value(p, grav)).collect();
+                line_plot(&path, &title, names[0], unit, &[Series { label: stem.into(), x: &x, y: &y }])?;
+            }
+            2 => {
+                let (n0, n1) = (sweep.points[0], sweep.points[1]);
+                let x: Vec<f64> = (0..n0).map(|i| points[i * n1].x[0]).collect();
+                let y: Vec<f64> = (0..n1).map(|j| points[j].x[1]).collect();
+                let z: Vec<Vec<f64>> = (0..n0).map(|i| (0..n1).map(|j| value(&points[i * n1 + j], grav)).collect()).collect();
+                heat_map(&path, &title, (names[0], names[1]), &x, &y, &z, Some((baseline_x[0], baseline_x[1])))?;
+            }
+            _ => continue,
+        }
+        files.push(path);
+    }
+    Ok(SweepOutcome { points, baseline, rebuilds: problem.rebuild_count(), seconds, files })
+}
