@@ -168,17 +168,28 @@ struct Recorder<'a> {
     model: &'a dyn Model,
     keep_states: bool,
     sol: Solution,
-    /// Discharged charge (A h) and delivered energy (W h) at the start of the current step.
+    /// Discharged charge (A h) and delivered energy (W h) at the end of the last step.
     q: f64,
     e: f64,
+    /// Power (W) at the end of the last step (right limit at a protocol step start).
+    p: f64,
+}
+
+/// Values at the end of a quadrature interval.
+struct IntervalEnd {
+    /// Charge (A h) and energy (W h) over the interval.
+    dq: f64,
+    de: f64,
+    current: f64,
+    voltage: f64,
 }
 
 impl Recorder<'_> {
-    fn record(&mut self, t: f64, y: &[f64], i: f64, q: f64, e: f64) {
+    fn record(&mut self, t: f64, y: &[f64], i: f64, v: f64, q: f64, e: f64) {
         let s = &mut self.sol;
         s.time.push(t);
         s.current.push(i);
-        s.voltage.push(self.model.voltage(y, i));
+        s.voltage.push(v);
         s.capacity.push(q);
         s.energy.push(e);
         s.temperature.push(self.model.temperature(y));
@@ -187,19 +198,24 @@ impl Recorder<'_> {
         }
     }
 
-    /// Charge (A h) and energy (W h) over `[a, b]` by 2-point Gauss-Legendre on the interpolant.
-    fn integrals(&self, dense: &DenseOutput, drive: &Driven, a: f64, b: f64, buf: &mut [f64]) -> (f64, f64) {
-        let g = 0.5 / 3f64.sqrt();
+    /// Charge and energy over `[a, b]` by Simpson's rule on the interpolant, from the power
+    /// `self.p` at `a`; leaves `y(b)` in `buf`. Two voltage evaluations per interval.
+    fn integrate_to(&self, dense: &DenseOutput, drive: &Driven, a: f64, b: f64, buf: &mut [f64]) -> IntervalEnd {
         let h = b - a;
-        let mut q = 0.0;
-        let mut e = 0.0;
-        for t in [a + (0.5 - g) * h, a + (0.5 + g) * h] {
-            dense.eval(t, buf);
-            let i = drive.current(t);
-            q += 0.5 * h * i;
-            e += 0.5 * h * i * self.model.voltage(buf, i);
+        let m = 0.5 * (a + b);
+        dense.eval(m, buf);
+        let im = drive.current(m);
+        let pm = im * self.model.voltage(buf, im);
+        dense.eval(b, buf);
+        let ib = drive.current(b);
+        let vb = self.model.voltage(buf, ib);
+        let ia = drive.current(a);
+        IntervalEnd {
+            dq: h / 6.0 * (ia + 4.0 * im + ib) / 3600.0,
+            de: h / 6.0 * (self.p + 4.0 * pm + ib * vb) / 3600.0,
+            current: ib,
+            voltage: vb,
         }
-        (q / 3600.0, e / 3600.0)
     }
 }
 
@@ -221,7 +237,7 @@ pub fn simulate(
             return Err(Error::invalid("t_eval", w[1], "output times must increase strictly"));
         }
     }
-    let mut rec = Recorder { model, keep_states: opts.keep_states, sol: Solution::default(), q: 0.0, e: 0.0 };
+    let mut rec = Recorder { model, keep_states: opts.keep_states, sol: Solution::default(), q: 0.0, e: 0.0, p: 0.0 };
     let mut next_eval = 0usize;
     let mut buf = vec![0.0; n];
     let mut t0 = 0.0;
@@ -244,16 +260,15 @@ pub fn simulate(
                 format!("voltage at the start of step {k} (t = {t0} s) is {v0:.4} V, already at or above the cut-off"),
             ));
         }
+        rec.p = i0 * v0;
+        let (q0, e0) = (rec.q, rec.e);
         match t_eval {
             // Every step start is recorded, so a current jump shows as a vertical edge.
-            None => {
-                let (q, e) = (rec.q, rec.e);
-                rec.record(t0, &y, i0, q, e)
-            }
+            None => rec.record(t0, &y, i0, v0, q0, e0),
             Some(te) => {
                 while next_eval < te.len() && te[next_eval] <= t0 {
                     if k == 0 {
-                        rec.record(t0, &y, i0, rec.q, rec.e);
+                        rec.record(t0, &y, i0, v0, q0, e0);
                     }
                     next_eval += 1;
                 }
@@ -269,20 +284,19 @@ pub fn simulate(
             if let Some(te) = t_eval {
                 while next_eval < te.len() && te[next_eval] <= t_new {
                     let t = te[next_eval];
-                    let (dq, de) = rec.integrals(dense, &drive, t_old, t, &mut buf);
-                    dense.eval(t, &mut buf);
-                    let (q, e) = (rec.q + dq, rec.e + de);
-                    rec.record(t, &buf, drive.current(t), q, e);
+                    let end = rec.integrate_to(dense, &drive, t_old, t, &mut buf);
+                    let (q, e) = (rec.q + end.dq, rec.e + end.de);
+                    rec.record(t, &buf, end.current, end.voltage, q, e);
                     next_eval += 1;
                 }
             }
-            let (dq, de) = rec.integrals(dense, &drive, t_old, t_new, &mut buf);
-            rec.q += dq;
-            rec.e += de;
+            let end = rec.integrate_to(dense, &drive, t_old, t_new, &mut buf);
+            rec.q += end.dq;
+            rec.e += end.de;
+            rec.p = end.current * end.voltage;
             if t_eval.is_none() {
-                dense.eval(t_new, &mut buf);
                 let (q, e) = (rec.q, rec.e);
-                rec.record(t_new, &buf, drive.current(t_new), q, e);
+                rec.record(t_new, &buf, end.current, end.voltage, q, e);
             }
         };
         let t_end = t0 + step.duration();
