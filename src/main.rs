@@ -14,6 +14,7 @@ use cellstudio::report::plot::{Series, line_plot};
 use cellstudio::simulation::{SimOptions, simulate};
 use cellstudio::Error;
 use cellstudio::study::Study;
+use cellstudio::study::pareto::run_pareto;
 use cellstudio::study::sweep::run_sweep;
 
 #[derive(Parser)]
@@ -58,6 +59,11 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Search the non-dominated front of a multi-objective study (NSGA-II) and plot it.
+    Pareto {
+        /// Study file with two or more objectives, e.g. designs/energy_vs_power_chen2020.toml.
+        study: PathBuf,
+    },
     /// Evaluate a study's grid sweep (in parallel) and write CSV, JSON and density plots.
     Sweep {
         /// Study file, e.g. designs/gravimetric_chen2020.toml.
@@ -82,6 +88,21 @@ fn read_toml<T: serde::de::DeserializeOwned>(path: &PathBuf) -> Result<T, Error>
 
 fn run(cli: Cli) -> Result<(), Error> {
     match cli.command {
+        Command::Pareto { study } => {
+            let study = Study::from_file(&study)?;
+            let out = run_pareto(&study)?;
+            println!("study            {}", study.name);
+            println!("designs          {} evaluated ({} failed) in {:.2} s, {} model builds", out.evaluated, out.failed, out.seconds, out.rebuilds);
+            println!("baseline         {:?}", out.baseline);
+            println!("front            {} non-dominated designs", out.front.len());
+            for ind in &out.front {
+                println!("                 x = {:?} -> {:?}", ind.x, ind.f);
+            }
+            for f in &out.files {
+                println!("wrote            {}", f.display());
+            }
+            Ok(())
+        }
         Command::Sweep { study } => {
             let study = Study::from_file(&study)?;
             let out = run_sweep(&study)?;

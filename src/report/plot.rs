@@ -111,3 +111,45 @@ pub fn heat_map(
     root.titled(&format!("range {zmin:.4} .. {zmax:.4}"), ("sans-serif", 14)).map_err(|e| err(e.to_string()))?;
     root.present().map_err(|e| err(e.to_string()))
 }
+
+/// A scatter plot of named point sets, with an optional marked point (e.g. the baseline).
+pub fn scatter_plot(
+    path: &Path,
+    title: &str,
+    labels: (&str, &str),
+    sets: &[(String, Vec<(f64, f64)>)],
+    mark: Option<(String, (f64, f64))>,
+) -> Result<(), Error> {
+    let err = |e: String| Error::Plot { path: path.display().to_string(), message: e };
+    let root = SVGBackend::new(path, (900, 650)).into_drawing_area();
+    root.fill(&WHITE).map_err(|e| err(e.to_string()))?;
+    let all = || sets.iter().flat_map(|s| s.1.iter()).chain(mark.iter().map(|m| &m.1));
+    let (x0, x1) = bounds(all().map(|p| &p.0));
+    let (y0, y1) = bounds(all().map(|p| &p.1));
+    let mut chart = ChartBuilder::on(&root)
+        .caption(title, ("sans-serif", 22))
+        .margin(15)
+        .x_label_area_size(45)
+        .y_label_area_size(70)
+        .build_cartesian_2d(x0..x1, y0..y1)
+        .map_err(|e| err(e.to_string()))?;
+    chart.configure_mesh().x_desc(labels.0).y_desc(labels.1).draw().map_err(|e| err(e.to_string()))?;
+    for (k, (label, pts)) in sets.iter().enumerate() {
+        let colour = Palette99::pick(k).to_rgba();
+        let size = if k == sets.len() - 1 { 5 } else { 3 };
+        chart
+            .draw_series(pts.iter().filter(|p| p.0.is_finite() && p.1.is_finite()).map(|&p| Circle::new(p, size, colour.filled())))
+            .map_err(|e| err(e.to_string()))?
+            .label(label.clone())
+            .legend(move |(x, y)| Circle::new((x, y), 4, colour.filled()));
+    }
+    if let Some((label, p)) = mark {
+        chart
+            .draw_series(std::iter::once(Cross::new(p, 9, BLACK.stroke_width(3))))
+            .map_err(|e| err(e.to_string()))?
+            .label(label)
+            .legend(|(x, y)| Cross::new((x, y), 6, BLACK.stroke_width(2)));
+    }
+    chart.configure_series_labels().background_style(WHITE.mix(0.8)).border_style(BLACK).draw().map_err(|e| err(e.to_string()))?;
+    root.present().map_err(|e| err(e.to_string()))
+}
