@@ -75,6 +75,18 @@ pub struct DesignMetrics {
     pub volumetric_power_density: f64,
 }
 
+impl Metric {
+    /// Axis label with unit.
+    pub fn label(&self) -> &'static str {
+        match self {
+            Metric::GravimetricEnergyDensity => "gravimetric energy density (W h/kg)",
+            Metric::VolumetricEnergyDensity => "volumetric energy density (W h/L)",
+            Metric::GravimetricPowerDensity => "gravimetric power density (W/kg)",
+            Metric::VolumetricPowerDensity => "volumetric power density (W/L)",
+        }
+    }
+}
+
 impl DesignMetrics {
     pub fn get(&self, m: Metric) -> f64 {
         match m {

@@ -81,7 +81,7 @@ pub fn run_pareto(study: &Study) -> Result<ParetoOutcome, Error> {
     scatter_plot(
         &plot,
         &study.name,
-        (&objectives[0], &objectives[1]),
+        (metrics[0].label(), metrics[1].label()),
         &[("evaluated designs".into(), pts(&archive)), ("non-dominated front".into(), pts(&sorted))],
         Some(("baseline".into(), (baseline[0], baseline[1]))),
     )?;
