@@ -2,6 +2,7 @@
 //! with switchable submodels (contact resistance, lumped thermal).
 
 pub mod dfn;
+pub mod ecm;
 
 pub mod electrochem;
 pub mod electrolyte;
