@@ -399,6 +399,12 @@ pub fn integrate(
                 if converged || jac_current {
                     break;
                 }
+                // First refactorise a Newton matrix built for an older step size; only if
+                // that fails too is the Jacobian itself re-evaluated.
+                if lu_c != c {
+                    lu_valid = false;
+                    continue;
+                }
                 have_jac = false;
             }
             if !converged {
