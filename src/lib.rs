@@ -7,6 +7,7 @@ pub mod data;
 pub mod error;
 pub mod geometry;
 pub mod models;
+pub mod optim;
 pub mod pareto;
 pub mod params;
 pub mod problem;
