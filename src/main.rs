@@ -14,6 +14,7 @@ use cellstudio::report::plot::{Series, line_plot};
 use cellstudio::simulation::{SimOptions, simulate};
 use cellstudio::Error;
 use cellstudio::study::Study;
+use cellstudio::study::design::run_design;
 use cellstudio::study::pareto::run_pareto;
 use cellstudio::study::sweep::run_sweep;
 
@@ -59,6 +60,11 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Run a design study end to end: optimise its objective and write the report.
+    Design {
+        /// Study file, e.g. designs/gravimetric_chen2020.toml.
+        study: PathBuf,
+    },
     /// Search the non-dominated front of a multi-objective study (NSGA-II) and plot it.
     Pareto {
         /// Study file with two or more objectives, e.g. designs/energy_vs_power_chen2020.toml.
@@ -88,6 +94,21 @@ fn read_toml<T: serde::de::DeserializeOwned>(path: &PathBuf) -> Result<T, Error>
 
 fn run(cli: Cli) -> Result<(), Error> {
     match cli.command {
+        Command::Design { study } => {
+            let study = Study::from_file(&study)?;
+            let out = run_design(&study)?;
+            let m = out.metric;
+            println!("study            {}", study.name);
+            println!("objective        maximise {}", m.label());
+            println!("initial          {:.2} at {:?}", out.initial.get(m), out.initial_x);
+            println!("optimised        {:.2} at {:?} ({:+.2} %)", out.optimised.get(m), out.result.x, out.improvement());
+            println!("search           {:?} after {} iterations, {} evaluations, {} model builds, {:.2} s ({:.0} evaluations/s)",
+                out.result.stop, out.result.iterations, out.result.evaluations, out.rebuilds, out.seconds, out.result.evaluations as f64 / out.seconds);
+            for f in &out.files {
+                println!("wrote            {}", f.display());
+            }
+            Ok(())
+        }
         Command::Pareto { study } => {
             let study = Study::from_file(&study)?;
             let out = run_pareto(&study)?;

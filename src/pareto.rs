@@ -132,7 +132,7 @@ pub fn nsga2(
         let better = |a: usize, b: usize| rank[a] < rank[b] || (rank[a] == rank[b] && crowd[a] > crowd[b]);
         let mut children = Vec::with_capacity(pop_size);
         while children.len() < pop_size {
-            let mut pick = |rng: &mut StdRng| {
+            let pick = |rng: &mut StdRng| {
                 let (a, b) = (rng.random_range(0..pop_size), rng.random_range(0..pop_size));
                 if better(a, b) { a } else { b }
             };

@@ -1,6 +1,7 @@
 //! Design study files (TOML): cell, model, operating point, decision variables, ties,
 //! objectives, optimiser and outputs. Unknown keys are errors naming the key and line.
 
+pub mod design;
 pub mod pareto;
 pub mod sweep;
 
@@ -27,6 +28,9 @@ pub struct Study {
     pub variables: Vec<Variable>,
     #[serde(default)]
     pub ties: Vec<Tie>,
+    /// Linear constraints on the decision variables.
+    #[serde(default)]
+    pub constraints: Vec<Constraint>,
     pub objective: Objectives,
     #[serde(default)]
     pub optimiser: toml::Table,
@@ -85,6 +89,17 @@ pub struct Variable {
     /// Search in log space.
     #[serde(default)]
     pub log: bool,
+}
+
+/// A linear constraint `sum(terms) <= upper`, `>= lower` or `== equals` on decision variables.
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct Constraint {
+    /// Coefficient of each decision variable (by parameter path).
+    pub terms: std::collections::BTreeMap<String, f64>,
+    pub upper: Option<f64>,
+    pub lower: Option<f64>,
+    pub equals: Option<f64>,
 }
 
 /// Objectives: one to maximise for `design`, two or more for `pareto`.
@@ -158,6 +173,22 @@ impl Study {
                 return Err(Error::InvalidSetting {
                     field: "sweep.points".into(),
                     reason: format!("needs one count >= 2 per variable ({} variables), got {:?}", self.variables.len(), s.points),
+                });
+            }
+        }
+        for (k, c) in self.constraints.iter().enumerate() {
+            for path in c.terms.keys() {
+                if !self.variables.iter().any(|v| &v.path == path) {
+                    return Err(Error::InvalidSetting {
+                        field: format!("constraints[{k}].terms"),
+                        reason: format!("`{path}` is not a decision variable"),
+                    });
+                }
+            }
+            if c.upper.is_none() && c.lower.is_none() && c.equals.is_none() {
+                return Err(Error::InvalidSetting {
+                    field: format!("constraints[{k}]"),
+                    reason: "needs `upper`, `lower` or `equals`".into(),
                 });
             }
         }

@@ -1,0 +1,168 @@
+//! Running a study's single-objective design search: projected, bounded optimisation of one
+//! density metric, with a report (Markdown + JSON) and initial vs optimised voltage plots.
+
+use std::fmt::Write as _;
+use std::path::PathBuf;
+use std::time::Instant;
+
+use super::Study;
+use crate::error::Error;
+use crate::optim::{
+    Bounds, LinearConstraints, Objective, Observer, OptimOptions, OptimResult, Problem, TraceObserver, Transform, by_name,
+};
+use crate::problem::design::{DesignMetrics, DesignProblem, Metric};
+use crate::protocol::{Protocol, Step};
+use crate::report::plot::{Series, line_plot};
+use crate::simulation::{SimOptions, simulate};
+
+/// Minimises minus the chosen metric; a failed simulation is penalised (+inf) and the
+/// search goes on.
+struct MaximiseMetric<'a> {
+    problem: &'a DesignProblem,
+    metric: Metric,
+}
+
+impl Objective for MaximiseMetric<'_> {
+    fn dim(&self) -> usize {
+        self.problem.variables.len()
+    }
+    fn evaluate(&self, x: &[f64]) -> f64 {
+        self.problem.evaluate(x).map_or(f64::INFINITY, |m| -m.get(self.metric))
+    }
+}
+
+/// Progress bar and trace.
+struct Progress {
+    bar: indicatif::ProgressBar,
+    trace: TraceObserver,
+}
+
+impl Observer for Progress {
+    fn iteration(&mut self, iter: usize, best_f: f64, best_x: &[f64], evaluations: usize) {
+        self.bar.set_position(iter as u64);
+        self.bar.set_message(format!("best {:.3}, {evaluations} evaluations", -best_f));
+        self.trace.iteration(iter, best_f, best_x, evaluations);
+    }
+}
+
+/// What a design search produced.
+pub struct DesignOutcome {
+    pub metric: Metric,
+    pub initial_x: Vec<f64>,
+    pub initial: DesignMetrics,
+    pub result: OptimResult,
+    pub optimised: DesignMetrics,
+    pub rebuilds: usize,
+    pub seconds: f64,
+    pub files: Vec<PathBuf>,
+}
+
+impl DesignOutcome {
+    /// Relative improvement of the metric (%).
+    pub fn improvement(&self) -> f64 {
+        100.0 * (self.optimised.get(self.metric) / self.initial.get(self.metric) - 1.0)
+    }
+}
+
+/// Linear constraints of the study in the optimiser's form.
+fn constraints(study: &Study) -> LinearConstraints {
+    let mut out = LinearConstraints::new();
+    for c in &study.constraints {
+        let a: Vec<f64> = study.variables.iter().map(|v| c.terms.get(&v.path).copied().unwrap_or(0.0)).collect();
+        if let Some(u) = c.upper {
+            out = out.inequality(a.clone(), u);
+        }
+        if let Some(l) = c.lower {
+            out = out.inequality(a.iter().map(|v| -v).collect(), -l);
+        }
+        if let Some(e) = c.equals {
+            out = out.equality(a.clone(), e);
+        }
+    }
+    out
+}
+
+/// Runs the study's optimiser on its first objective from the baseline design.
+pub fn run_design(study: &Study) -> Result<DesignOutcome, Error> {
+    let metric = study.objective.maximise[0];
+    let problem = study.problem()?;
+    let mut table = study.optimiser.clone();
+    let method = table
+        .remove("method")
+        .and_then(|v| v.as_str().map(str::to_string))
+        .unwrap_or_else(|| "nelder-mead".into());
+    let options: OptimOptions = table
+        .try_into()
+        .map_err(|e: toml::de::Error| Error::InvalidSetting { field: "optimiser".into(), reason: e.to_string() })?;
+    let mut optimiser = by_name(&method, options.clone())?;
+    let objective = MaximiseMetric { problem: &problem, metric };
+    let bounds = Bounds::new(
+        study.variables.iter().map(|v| v.lower).collect(),
+        study.variables.iter().map(|v| v.upper).collect(),
+    )?;
+    let transforms = study.variables.iter().map(|v| if v.log { Transform::Log } else { Transform::Identity }).collect();
+    let opt_problem = Problem::new(&objective, bounds)?.with_constraints(constraints(study))?.with_transforms(transforms)?;
+    let start = Instant::now();
+    let initial_x = study.baseline()?;
+    let initial = problem.evaluate(&initial_x)?;
+    let x0 = opt_problem.project(&initial_x)?;
+    let bar = indicatif::ProgressBar::new(options.max_iterations as u64);
+    let mut observer = Progress { bar, trace: TraceObserver::default() };
+    let result = optimiser.minimise(&opt_problem, &x0, &mut observer)?;
+    observer.bar.finish_and_clear();
+    let optimised = problem.evaluate(&result.x)?;
+    let seconds = start.elapsed().as_secs_f64();
+    let mut outcome = DesignOutcome { metric, initial_x, initial, result, optimised, rebuilds: problem.rebuild_count(), seconds, files: Vec::new() };
+    write_outputs(study, &problem, &mut outcome, &method)?;
+    Ok(outcome)
+}
+
+fn write_outputs(study: &Study, problem: &DesignProblem, out: &mut DesignOutcome, method: &str) -> Result<(), Error> {
+    let dir = &study.output.dir;
+    std::fs::create_dir_all(dir).map_err(|source| Error::Io { path: dir.display().to_string(), source })?;
+    let write = |name: &str, text: String, files: &mut Vec<PathBuf>| -> Result<(), Error> {
+        let path = dir.join(name);
+        std::fs::write(&path, text).map_err(|source| Error::Io { path: path.display().to_string(), source })?;
+        files.push(path);
+        Ok(())
+    };
+    let names: Vec<&str> = study.variables.iter().map(|v| v.path.as_str()).collect();
+    let json = serde_json::json!({
+        "study": study.name, "variables": names, "method": method,
+        "initial": { "x": out.initial_x, "metrics": out.initial },
+        "optimised": { "x": out.result.x, "metrics": out.optimised },
+        "result": out.result, "rebuilds": out.rebuilds, "seconds": out.seconds,
+    });
+    write("design.json", serde_json::to_string_pretty(&json).unwrap_or_default(), &mut out.files)?;
+
+    // Voltage profiles of the initial and optimised designs.
+    let mut curves = Vec::new();
+    for (label, x, m) in [("initial", &out.initial_x, &out.initial), ("optimised", &out.result.x, &out.optimised)] {
+        let p = problem.parameters(x)?;
+        let mut builder = crate::geometry::ModelBuilder::new(problem.kind, problem.submodels, problem.mesh);
+        let built = builder.build(&p)?;
+        let protocol = Protocol { steps: vec![Step::Current { current: m.current, duration: 1.5 * 3600.0 / problem.c_rate }] };
+        let sol = simulate(built.model.as_ref(), &mut built.workspace, &protocol, &SimOptions::for_cell(&p), None)?;
+        curves.push((label.to_string(), sol.capacity, sol.voltage));
+    }
+    let plot = dir.join("design_voltage.svg");
+    let series: Vec<Series> = curves.iter().map(|(l, q, v)| Series { label: l.clone(), x: q, y: v }).collect();
+    line_plot(&plot, &format!("{}: discharge", study.name), "Discharged capacity (A h)", "Voltage (V)", &series)?;
+    out.files.push(plot);
+
+    let mut md = String::new();
+    let _ = writeln!(md, "# {}\n", study.name);
+    let _ = writeln!(md, "Maximised {} with {method} ({:?} after {} iterations, {} evaluations, {} model builds, {:.2} s).\n",
+        out.metric.label(), out.result.stop, out.result.iterations, out.result.evaluations, out.rebuilds, out.seconds);
+    let _ = writeln!(md, "| | {} | energy (W h) | mass (g) | volume (cm^3) | W h/kg | W h/L | W/kg | W/L |", names.join(" | "));
+    let _ = writeln!(md, "|---|{}---|---|---|---|---|---|---|---|", "---|".repeat(names.len()));
+    for (label, x, m) in [("initial", &out.initial_x, &out.initial), ("optimised", &out.result.x, &out.optimised)] {
+        let xs: Vec<String> = x.iter().map(|v| format!("{v:.4e}")).collect();
+        let _ = writeln!(md, "| {label} | {} | {:.3} | {:.2} | {:.3} | {:.1} | {:.1} | {:.1} | {:.1} |", xs.join(" | "),
+            m.energy, m.mass * 1e3, m.volume * 1e6, m.gravimetric_energy_density, m.volumetric_energy_density,
+            m.gravimetric_power_density, m.volumetric_power_density);
+    }
+    let _ = writeln!(md, "\nImprovement: {:+.2} %.\n\n![voltage](design_voltage.svg)", out.improvement());
+    write("report.md", md, &mut out.files)?;
+    Ok(())
+}

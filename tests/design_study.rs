@@ -1,0 +1,31 @@
+//! The seed design study end to end: the optimiser improves the gravimetric energy density
+//! of the Chen 2020 baseline while the volume fractions still sum to one.
+
+use cellstudio::study::Study;
+use cellstudio::study::design::run_design;
+
+#[test]
+fn seed_study_improves_gravimetric_energy_density() {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/designs/gravimetric_chen2020.toml");
+    let mut study = Study::from_file(path.as_ref()).unwrap();
+    study.output.dir = std::env::temp_dir().join(format!("cellstudio-design-{}", std::process::id()));
+    let out = run_design(&study).unwrap();
+    println!(
+        "{:.2} -> {:.2} W h/kg ({:+.2} %), {} evaluations, {} builds, {:.2} s",
+        out.initial.gravimetric_energy_density,
+        out.optimised.gravimetric_energy_density,
+        out.improvement(),
+        out.result.evaluations,
+        out.rebuilds,
+        out.seconds
+    );
+    assert!(out.improvement() > 1.0, "no improvement: {:+.3} %", out.improvement());
+    let p = study.problem().unwrap().parameters(&out.result.x).unwrap();
+    let e = &p.positive;
+    assert!((e.active_fraction + e.porosity + e.inactive_fraction() - 1.0).abs() < 1e-12);
+    assert!(e.inactive_fraction().abs() < 1e-12, "binder fraction should stay at the baseline's 0");
+    for (v, x) in study.variables.iter().zip(&out.result.x) {
+        assert!(*x >= v.lower && *x <= v.upper, "{} = {x} outside bounds", v.path);
+    }
+    assert!(out.files.iter().all(|f| f.exists()));
+}
