@@ -19,7 +19,7 @@ use super::electrochem::{Electrochem, Side};
 use super::electrolyte::ElectrolyteOp;
 use super::kinetics::butler_volmer;
 use super::submodels::thermal::bernardi_heat;
-use super::{Model, PhysicsModel};
+use super::{Model, PhysicsModel, push_tridiagonal};
 use crate::params::ParameterSet;
 
 #[derive(Clone, Debug)]
@@ -189,11 +189,7 @@ impl Model for Dfn {
             }
             if let Some((side, k, start)) = l.electrode_of(i) {
                 let nr = l.nr(side);
-                for s in 0..nr {
-                    for m in s.saturating_sub(1)..(s + 2).min(nr) {
-                        p.push((start + s, start + m));
-                    }
-                }
+                push_tridiagonal(&mut p, start, nr);
                 for &c in &kinetics {
                     p.push((start + nr - 1, c));
                     p.push((l.phis(side, k), c));

@@ -93,6 +93,16 @@ pub trait Model: Send + Sync {
     fn open_circuit_voltage(&self, y: &[f64]) -> f64;
 }
 
+/// Appends the pattern of a tridiagonal block (a 1-D three-point stencil) on states
+/// `start..start + len` to `pattern`.
+pub(crate) fn push_tridiagonal(pattern: &mut Vec<(usize, usize)>, start: usize, len: usize) {
+    for k in 0..len {
+        for m in k.saturating_sub(1)..(k + 2).min(len) {
+            pattern.push((start + k, start + m));
+        }
+    }
+}
+
 /// A physics-based model built on a parameter set, whose non-geometric parameters can be
 /// replaced without rebuilding it.
 pub trait PhysicsModel: Model {

@@ -10,7 +10,7 @@ use super::electrochem::{Electrochem, Side};
 use super::electrolyte::ElectrolyteOp;
 use super::kinetics::overpotential;
 use super::submodels::thermal::bernardi_heat;
-use super::{Model, PhysicsModel};
+use super::{Model, PhysicsModel, push_tridiagonal};
 use crate::params::{FARADAY, GAS_CONSTANT, ParameterSet};
 
 #[derive(Clone, Debug)]
@@ -138,11 +138,7 @@ impl Model for Spme {
         let nx = self.electrolyte.len();
         let mut p = Vec::new();
         for (start, len) in [(0, nn), (nn, np), (nn + np, nx)] {
-            for k in 0..len {
-                for m in k.saturating_sub(1)..(k + 2).min(len) {
-                    p.push((start + k, start + m));
-                }
-            }
+            push_tridiagonal(&mut p, start, len);
         }
         if self.ec.submodels.thermal {
             let t = nn + np + nx;
