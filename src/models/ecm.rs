@@ -20,6 +20,7 @@ use serde::{Deserialize, Serialize};
 
 use super::Model;
 use crate::error::Error;
+use crate::params::check::{check, non_negative, positive};
 use crate::params::{FARADAY, Function1D, ParameterSet};
 
 /// One parallel resistor-capacitor pair.
@@ -294,14 +295,3 @@ impl Model for Ecm {
     }
 }
 
-fn check(field: &str, value: f64, ok: bool, reason: &str) -> Result<(), Error> {
-    if ok && value.is_finite() { Ok(()) } else { Err(Error::invalid(field, value, reason)) }
-}
-
-fn positive(field: &str, value: f64) -> Result<(), Error> {
-    check(field, value, value > 0.0, "must be positive")
-}
-
-fn non_negative(field: &str, value: f64) -> Result<(), Error> {
-    check(field, value, value >= 0.0, "must not be negative")
-}

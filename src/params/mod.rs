@@ -1,6 +1,7 @@
 //! Parameter sets: typed structs in SI units, the embedded Chen 2020 default, BPX exchange,
 //! and the cell's mass and volume budget.
 
+pub(crate) mod check;
 mod chen2020;
 pub mod function;
 pub mod mass;

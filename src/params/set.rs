@@ -3,6 +3,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::function::Function1D;
+use super::check::{non_negative, open_unit, positive};
 use crate::error::Error;
 
 /// Gas constant (J/(mol K)).
@@ -377,20 +378,4 @@ impl ParameterSet {
         };
         Ok(slot)
     }
-}
-
-fn check(field: &str, value: f64, ok: bool, reason: &str) -> Result<(), Error> {
-    if ok && value.is_finite() { Ok(()) } else { Err(Error::invalid(field, value, reason)) }
-}
-
-fn positive(field: &str, value: f64) -> Result<(), Error> {
-    check(field, value, value > 0.0, "must be positive")
-}
-
-fn non_negative(field: &str, value: f64) -> Result<(), Error> {
-    check(field, value, value >= 0.0, "must not be negative")
-}
-
-fn open_unit(field: &str, value: f64) -> Result<(), Error> {
-    check(field, value, value > 0.0 && value < 1.0, "must lie strictly between 0 and 1")
 }
