@@ -36,6 +36,26 @@ pub fn grid(lower: &[f64], upper: &[f64], points: &[usize]) -> Vec<Vec<f64>> {
     out
 }
 
+/// A Latin hypercube of `n` samples in the box: each variable's range is cut into `n`
+/// equal strata and each stratum is used once, in a seeded random pairing.
+pub fn latin_hypercube(lower: &[f64], upper: &[f64], n: usize, seed: u64) -> Vec<Vec<f64>> {
+    use rand::seq::SliceRandom;
+    use rand::{Rng, SeedableRng};
+    let mut rng = rand::rngs::StdRng::seed_from_u64(seed);
+    let mut columns: Vec<Vec<f64>> = Vec::with_capacity(lower.len());
+    for k in 0..lower.len() {
+        let mut strata: Vec<usize> = (0..n).collect();
+        strata.shuffle(&mut rng);
+        columns.push(
+            strata
+                .into_iter()
+                .map(|s| lower[k] + (upper[k] - lower[k]) * (s as f64 + rng.random::<f64>()) / n as f64)
+                .collect(),
+        );
+    }
+    (0..n).map(|i| columns.iter().map(|c| c[i]).collect()).collect()
+}
+
 /// Evaluates every candidate in parallel, with a progress bar on a terminal. The order of
 /// the results is the order of `candidates`, whatever the thread count.
 pub fn evaluate_all(problem: &DesignProblem, candidates: &[Vec<f64>]) -> Vec<SweepPoint> {
@@ -54,4 +74,21 @@ pub fn evaluate_all(problem: &DesignProblem, candidates: &[Vec<f64>]) -> Vec<Swe
         .collect();
     bar.finish_and_clear();
     points
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn latin_hypercube_fills_every_stratum_once() {
+        let n = 17;
+        let pts = latin_hypercube(&[0.0, 10.0], &[1.0, 20.0], n, 3);
+        for (k, (lo, hi)) in [(0.0, 1.0), (10.0, 20.0)].iter().enumerate() {
+            let mut strata: Vec<usize> = pts.iter().map(|p| ((p[k] - lo) / (hi - lo) * n as f64) as usize).collect();
+            strata.sort_unstable();
+            assert_eq!(strata, (0..n).collect::<Vec<_>>());
+        }
+        assert_eq!(pts, latin_hypercube(&[0.0, 10.0], &[1.0, 20.0], n, 3));
+    }
 }

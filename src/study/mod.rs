@@ -76,6 +76,12 @@ pub struct Operating {
     /// Derive 1C from each candidate's theoretical capacity rather than the nominal one.
     #[serde(default)]
     pub rate_from_theoretical_capacity: bool,
+    /// Ambient and initial temperature (K); the parameter set's when absent.
+    pub temperature: Option<f64>,
+    /// Lower voltage cut-off (V); the parameter set's when absent.
+    pub lower_cutoff: Option<f64>,
+    /// Upper voltage cut-off (V); the parameter set's when absent.
+    pub upper_cutoff: Option<f64>,
 }
 
 /// A decision variable.
@@ -113,8 +119,27 @@ pub struct Objectives {
 #[derive(Clone, Debug, Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct Sweep {
-    /// Points per variable.
+    /// Grid: points per variable.
+    #[serde(default)]
     pub points: Vec<usize>,
+    /// `grid` (default) or `latin_hypercube`.
+    #[serde(default)]
+    pub design: SweepDesign,
+    /// Number of samples of a Latin hypercube.
+    #[serde(default)]
+    pub samples: Option<usize>,
+    /// Seed of a Latin hypercube.
+    #[serde(default)]
+    pub seed: u64,
+}
+
+/// How sweep points are placed.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Deserialize, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SweepDesign {
+    #[default]
+    Grid,
+    LatinHypercube,
 }
 
 #[derive(Clone, Debug, Deserialize, Serialize)]
@@ -169,7 +194,14 @@ impl Study {
             return Err(Error::InvalidSetting { field: "objective.maximise".into(), reason: "is empty".into() });
         }
         if let Some(s) = &self.sweep {
-            if s.points.len() != self.variables.len() || s.points.iter().any(|&n| n < 2) {
+            if s.design == SweepDesign::LatinHypercube {
+                if !s.samples.is_some_and(|n| n >= 2) {
+                    return Err(Error::InvalidSetting {
+                        field: "sweep.samples".into(),
+                        reason: format!("a latin_hypercube sweep needs samples >= 2, got {:?}", s.samples),
+                    });
+                }
+            } else if s.points.len() != self.variables.len() || s.points.iter().any(|&n| n < 2) {
                 return Err(Error::InvalidSetting {
                     field: "sweep.points".into(),
                     reason: format!("needs one count >= 2 per variable ({} variables), got {:?}", self.variables.len(), s.points),
@@ -197,12 +229,30 @@ impl Study {
         Ok(())
     }
 
-    /// The base parameter set.
+    /// The base parameter set, with the operating temperature and cut-offs applied.
     pub fn base_parameters(&self) -> Result<ParameterSet, Error> {
-        match self.cell.parameter_set.as_str() {
-            "chen2020" => Ok(chen2020()),
-            path => ParameterSet::from_toml_file(Path::new(path)),
+        let mut p = match self.cell.parameter_set.as_str() {
+            "chen2020" => chen2020(),
+            path => ParameterSet::from_toml_file(Path::new(path))?,
+        };
+        let op = &self.operating;
+        if let Some(t) = op.temperature {
+            p.thermal.ambient_temperature = t;
+            p.thermal.initial_temperature = t;
         }
+        if let Some(v) = op.lower_cutoff {
+            p.cell.lower_cutoff = v;
+        }
+        if let Some(v) = op.upper_cutoff {
+            p.cell.upper_cutoff = v;
+        }
+        p.validate().map_err(|e| match e {
+            Error::InvalidParameter { field, value, reason } => {
+                Error::InvalidParameter { field: format!("{field} (after [operating])"), value, reason }
+            }
+            other => other,
+        })?;
+        Ok(p)
     }
 
     /// Decision-variable values of the base parameter set.

@@ -7,7 +7,8 @@ use std::time::Instant;
 use super::Study;
 use crate::error::Error;
 use crate::problem::design::DesignMetrics;
-use crate::problem::sweep::{SweepPoint, evaluate_all, grid};
+use super::SweepDesign;
+use crate::problem::sweep::{SweepPoint, evaluate_all, grid, latin_hypercube};
 use crate::report::plot::{Series, heat_map, line_plot};
 
 /// What a sweep produced.
@@ -33,7 +34,16 @@ pub fn run_sweep(study: &Study) -> Result<SweepOutcome, Error> {
     let problem = study.problem()?;
     let lower: Vec<f64> = study.variables.iter().map(|v| v.lower).collect();
     let upper: Vec<f64> = study.variables.iter().map(|v| v.upper).collect();
-    let candidates = grid(&lower, &upper, &sweep.points);
+    let candidates = match sweep.design {
+        SweepDesign::Grid => grid(&lower, &upper, &sweep.points),
+        SweepDesign::LatinHypercube => {
+            let n = sweep.samples.ok_or_else(|| Error::InvalidSetting {
+                field: "sweep.samples".into(),
+                reason: "a latin_hypercube sweep needs `samples`".into(),
+            })?;
+            latin_hypercube(&lower, &upper, n, sweep.seed)
+        }
+    };
     let start = Instant::now();
     let baseline_x = study.baseline()?;
     let baseline = problem.evaluate(&baseline_x)?;
@@ -79,20 +89,24 @@ pub fn run_sweep(study: &Study) -> Result<SweepOutcome, Error> {
     for (grav, stem, unit) in [(true, "gravimetric_energy_density", "W h/kg"), (false, "volumetric_energy_density", "W h/L")] {
         let path = dir.join(format!("sweep_{stem}.svg"));
         let title = format!("{} ({unit})", stem.replace('_', " "));
-        match sweep.points.len() {
-            1 => {
+        match (sweep.design, sweep.points.len()) {
+            (SweepDesign::Grid, 1) => {
                 let x: Vec<f64> = points.iter().map(|p| p.x[0]).collect();
                 let y: Vec<f64> = points.iter().map(|p| value(p, grav)).collect();
                 line_plot(&path, &title, names[0], unit, &[Series { label: stem.into(), x: &x, y: &y }])?;
             }
-            2 => {
+            (SweepDesign::Grid, 2) => {
                 let (n0, n1) = (sweep.points[0], sweep.points[1]);
                 let x: Vec<f64> = (0..n0).map(|i| points[i * n1].x[0]).collect();
                 let y: Vec<f64> = (0..n1).map(|j| points[j].x[1]).collect();
                 let z: Vec<Vec<f64>> = (0..n0).map(|i| (0..n1).map(|j| value(&points[i * n1 + j], grav)).collect()).collect();
                 heat_map(&path, &title, (names[0], names[1]), &x, &y, &z, Some((baseline_x[0], baseline_x[1])))?;
             }
-            _ => continue,
+            _ => {
+                // Scattered samples: density against the first variable.
+                let pts: Vec<(f64, f64)> = points.iter().map(|p| (p.x[0], value(p, grav))).collect();
+                crate::report::plot::scatter_plot(&path, &title, (names[0], unit), &[(stem.into(), pts)], None)?;
+            }
         }
         files.push(path);
     }
