@@ -5,7 +5,7 @@ use serde::Serialize;
 
 use crate::error::Error;
 use crate::models::Model;
-use crate::protocol::{Protocol, Step};
+use crate::protocol::{Demand, Protocol, Step};
 use crate::solver::{Dae, DenseOutput, SolverOptions, SolverStats, Workspace, integrate};
 
 /// Options of a simulation.
@@ -105,8 +105,63 @@ struct Driven<'a> {
 }
 
 impl Driven<'_> {
-    fn current(&self, t: f64) -> f64 {
-        self.step.current_at(t - self.t0, self.capacity)
+    /// Current (A) at time `t` in state `y`: the step's current, or for a power step the
+    /// smallest root of `I V(y, I) = P`.
+    fn current(&self, t: f64, y: &[f64]) -> f64 {
+        match self.step.demand_at(t - self.t0, self.capacity) {
+            Demand::Current(i) => i,
+            Demand::Power(p) => self.current_for_power(p, y),
+        }
+    }
+
+    /// Fixed-point iteration `I <- P / V(y, I)` (it contracts while `|I dV/dI| < V`), with a
+    /// bracketing fallback near the maximum-power point. When the cell cannot deliver `P`,
+    /// the current of maximum power is returned, as a power-limited cycler would do: the
+    /// voltage then falls through the cut-off and the step ends there.
+    fn current_for_power(&self, p: f64, y: &[f64]) -> f64 {
+        let sign = p.signum();
+        // Work with |P| on the discharge or charge branch: I = sign * x, x >= 0.
+        let g = |x: f64| sign * x * self.model.voltage(y, sign * x) - p.abs();
+        let v0 = self.model.voltage(y, 0.0);
+        let mut x = p.abs() / v0;
+        for _ in 0..30 {
+            let next = p.abs() / (sign * self.model.voltage(y, sign * x));
+            if !next.is_finite() || next < 0.0 {
+                break;
+            }
+            let done = (next - x).abs() <= 1e-13 * (1.0 + x);
+            x = next;
+            if done {
+                return sign * x;
+            }
+        }
+        // Expand a bracket from zero while the delivered power still rises.
+        let (mut lo, mut hi) = (0.0, p.abs() / v0);
+        let (mut glo, mut ghi) = (g(lo), g(hi));
+        while ghi < 0.0 && ghi > glo && hi < 1e6 {
+            lo = hi;
+            glo = ghi;
+            hi *= 1.5;
+            ghi = g(hi);
+        }
+        if ghi >= 0.0 {
+            for _ in 0..200 {
+                let mid = 0.5 * (lo + hi);
+                if g(mid) >= 0.0 { hi = mid } else { lo = mid }
+                if hi - lo <= 1e-13 * (1.0 + hi) {
+                    break;
+                }
+            }
+            return sign * 0.5 * (lo + hi);
+        }
+        // Not deliverable: golden-section search for the maximum-power current.
+        let (mut a, mut b) = (0.0, hi);
+        let r = 0.5 * (5f64.sqrt() - 1.0);
+        for _ in 0..80 {
+            let (c, d) = (b - r * (b - a), a + r * (b - a));
+            if g(c) > g(d) { b = d } else { a = c }
+        }
+        sign * 0.5 * (a + b)
     }
 }
 
@@ -121,7 +176,7 @@ impl Dae for Driven<'_> {
         self.model.scale()
     }
     fn rhs(&self, t: f64, y: &[f64], out: &mut [f64]) {
-        self.model.rhs(y, self.current(t), out)
+        self.model.rhs(y, self.current(t, y), out)
     }
 }
 
@@ -171,7 +226,9 @@ struct Recorder<'a> {
     /// Discharged charge (A h) and delivered energy (W h) at the end of the last step.
     q: f64,
     e: f64,
-    /// Power (W) at the end of the last step (right limit at a protocol step start).
+    /// Current (A) and power (W) at the end of the last step (right limits at a protocol
+    /// step start).
+    i: f64,
     p: f64,
 }
 
@@ -204,14 +261,13 @@ impl Recorder<'_> {
         let h = b - a;
         let m = 0.5 * (a + b);
         dense.eval(m, buf);
-        let im = drive.current(m);
+        let im = drive.current(m, buf);
         let pm = im * self.model.voltage(buf, im);
         dense.eval(b, buf);
-        let ib = drive.current(b);
+        let ib = drive.current(b, buf);
         let vb = self.model.voltage(buf, ib);
-        let ia = drive.current(a);
         IntervalEnd {
-            dq: h / 6.0 * (ia + 4.0 * im + ib) / 3600.0,
+            dq: h / 6.0 * (self.i + 4.0 * im + ib) / 3600.0,
             de: h / 6.0 * (self.p + 4.0 * pm + ib * vb) / 3600.0,
             current: ib,
             voltage: vb,
@@ -237,14 +293,19 @@ pub fn simulate(
             return Err(Error::invalid("t_eval", w[1], "output times must increase strictly"));
         }
     }
-    let mut rec = Recorder { model, keep_states: opts.keep_states, sol: Solution::default(), q: 0.0, e: 0.0, p: 0.0 };
+    let mut rec = Recorder { model, keep_states: opts.keep_states, sol: Solution::default(), q: 0.0, e: 0.0, i: 0.0, p: 0.0 };
     let mut next_eval = 0usize;
     let mut buf = vec![0.0; n];
     let mut t0 = 0.0;
     for (k, step) in protocol.steps.iter().enumerate() {
         let drive = Driven { model, step, t0, capacity: opts.capacity };
-        let i0 = drive.current(t0);
-        consistent_initialisation(model, ws, i0, &mut y).map_err(|err| at_time(err, t0))?;
+        // A power step's current depends on the algebraic states and vice versa: alternate.
+        let passes = if matches!(step, Step::Power { .. }) { 3 } else { 1 };
+        for _ in 0..passes {
+            let i0 = drive.current(t0, &y);
+            consistent_initialisation(model, ws, i0, &mut y).map_err(|err| at_time(err, t0))?;
+        }
+        let i0 = drive.current(t0, &y);
         let v0 = model.voltage(&y, i0);
         if step.has_cutoffs() && i0 > 0.0 && v0 <= lower {
             return Err(Error::invalid(
@@ -260,6 +321,7 @@ pub fn simulate(
                 format!("voltage at the start of step {k} (t = {t0} s) is {v0:.4} V, already at or above the cut-off"),
             ));
         }
+        rec.i = i0;
         rec.p = i0 * v0;
         let (q0, e0) = (rec.q, rec.e);
         match t_eval {
@@ -275,7 +337,7 @@ pub fn simulate(
             }
         }
         let event_fn = |t: f64, yy: &[f64]| {
-            let v = model.voltage(yy, drive.current(t));
+            let v = model.voltage(yy, drive.current(t, yy));
             (v - lower).min(upper - v)
         };
         let event: Option<&dyn Fn(f64, &[f64]) -> f64> = if step.has_cutoffs() { Some(&event_fn) } else { None };
@@ -293,6 +355,7 @@ pub fn simulate(
             let end = rec.integrate_to(dense, &drive, t_old, t_new, &mut buf);
             rec.q += end.dq;
             rec.e += end.de;
+            rec.i = end.current;
             rec.p = end.current * end.voltage;
             if t_eval.is_none() {
                 let (q, e) = (rec.q, rec.e);

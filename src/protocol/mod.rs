@@ -15,11 +15,23 @@ pub enum Step {
     /// Constant C-rate (multiples of the nominal capacity per hour) for `duration` (s),
     /// ended early by a voltage cut-off.
     CRate { rate: f64, duration: f64 },
+    /// Constant power (W, discharge positive) for `duration` (s), ended early by a voltage
+    /// cut-off; the current follows the state as `I = P / V`.
+    Power { power: f64, duration: f64 },
     /// Zero current for `duration` (s).
     Rest { duration: f64 },
     /// Piecewise-linear current (A) through the points `(time, current)`; times (s) start at
     /// zero, relative to the step start, and increase strictly.
     Table { time: Vec<f64>, current: Vec<f64> },
+}
+
+/// The electrical demand of a step at one instant.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Demand {
+    /// Current (A, discharge positive).
+    Current(f64),
+    /// Power (W, discharge positive).
+    Power(f64),
 }
 
 /// A sequence of steps.
@@ -33,20 +45,24 @@ impl Step {
     /// Duration of the step (s).
     pub fn duration(&self) -> f64 {
         match self {
-            Step::Current { duration, .. } | Step::CRate { duration, .. } | Step::Rest { duration } => {
-                *duration
-            }
+            Step::Current { duration, .. }
+            | Step::CRate { duration, .. }
+            | Step::Power { duration, .. }
+            | Step::Rest { duration } => *duration,
             Step::Table { time, .. } => time.last().copied().unwrap_or(0.0),
         }
     }
 
-    /// Current (A) at `t` seconds into the step, for a cell of `capacity` (A h).
-    pub fn current_at(&self, t: f64, capacity: f64) -> f64 {
+    /// What the step demands at `t` seconds into it, for a cell of `capacity` (A h).
+    pub fn demand_at(&self, t: f64, capacity: f64) -> Demand {
         match self {
-            Step::Current { current, .. } => *current,
-            Step::CRate { rate, .. } => rate * capacity,
-            Step::Rest { .. } => 0.0,
-            Step::Table { time, current } => interpolate(time, current, t.clamp(0.0, time[time.len() - 1])),
+            Step::Current { current, .. } => Demand::Current(*current),
+            Step::CRate { rate, .. } => Demand::Current(rate * capacity),
+            Step::Power { power, .. } => Demand::Power(*power),
+            Step::Rest { .. } => Demand::Current(0.0),
+            Step::Table { time, current } => {
+                Demand::Current(interpolate(time, current, t.clamp(0.0, time[time.len() - 1])))
+            }
         }
     }
 
@@ -81,6 +97,9 @@ impl Protocol {
             match step {
                 Step::Current { current: v, .. } | Step::CRate { rate: v, .. } if !v.is_finite() => {
                     return Err(Error::invalid(field("current"), *v, "must be finite"));
+                }
+                Step::Power { power, .. } if !power.is_finite() => {
+                    return Err(Error::invalid(field("power"), *power, "must be finite"));
                 }
                 Step::Table { time, current } => {
                     if time.len() < 2 || time.len() != current.len() {
