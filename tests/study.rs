@@ -43,3 +43,23 @@ fn unknown_metric_is_an_error() {
     let err = Study::from_toml(&text, "bad.toml").unwrap_err().to_string();
     assert!(err.contains("specific_energy") && err.contains("line"), "{err}");
 }
+
+#[test]
+fn operating_needs_exactly_one_of_c_rate_and_power() {
+    let both = seed_text().replace("c_rate = 1.0", "c_rate = 1.0\npower = 15.0");
+    let err = Study::from_toml(&both, "bad.toml").unwrap_err().to_string();
+    assert!(err.contains("operating") && err.contains("exactly one"), "{err}");
+}
+
+/// A constant-power study discharges each design at that power: the mean power over the
+/// discharge equals it.
+#[test]
+fn power_study_discharges_at_constant_power() {
+    let text = seed_text().replace("c_rate = 1.0", "power = 15.0");
+    let study = Study::from_toml(&text, "power.toml").unwrap();
+    let m = study.problem().unwrap().evaluate(&study.baseline().unwrap()).unwrap();
+    let mean_power = m.energy * 3600.0 / m.duration;
+    println!("15 W: {:.3} W h in {:.0} s, mean current {:.3} A", m.energy, m.duration, m.current);
+    assert!((mean_power - 15.0).abs() < 1e-6, "{mean_power} W");
+    assert!(m.energy > 15.0, "a 15 W discharge of a 5 A h cell lasts over an hour");
+}

@@ -10,7 +10,7 @@ use crate::error::Error;
 use crate::geometry::{MeshSizes, ModelBuilder};
 use crate::models::{ModelKind, Submodels};
 use crate::params::{FARADAY, ParameterSet};
-use crate::protocol::Protocol;
+use crate::protocol::{Protocol, Step};
 use crate::simulation::{SimOptions, simulate};
 
 /// A figure of merit of a discharged design.
@@ -67,7 +67,7 @@ pub struct DesignMetrics {
     pub mass: f64,
     /// Cell volume (m^3).
     pub volume: f64,
-    /// Discharge current (A).
+    /// Mean discharge current (A).
     pub current: f64,
     pub gravimetric_energy_density: f64,
     pub volumetric_energy_density: f64,
@@ -122,6 +122,8 @@ pub struct DesignProblem {
     pub c_rate: f64,
     /// Re-derive 1C from each candidate's theoretical capacity instead of the nominal one.
     pub rate_from_theoretical_capacity: bool,
+    /// Constant discharge power (W) instead of the C-rate, when set.
+    pub power: Option<f64>,
     /// Builders re-used across evaluations (one per concurrent evaluation).
     pool: Mutex<Vec<ModelBuilder>>,
 }
@@ -150,8 +152,35 @@ impl DesignProblem {
             mesh: MeshSizes::default(),
             c_rate,
             rate_from_theoretical_capacity,
+            power: None,
             pool: Mutex::new(Vec::new()),
         })
+    }
+
+    /// Discharges at constant power `power` (W) instead of the C-rate.
+    pub fn with_power(mut self, power: f64) -> Result<Self, Error> {
+        if !(power > 0.0 && power.is_finite()) {
+            return Err(Error::invalid("operating.power", power, "must be positive"));
+        }
+        self.power = Some(power);
+        Ok(self)
+    }
+
+    /// The discharge protocol of a candidate's parameter set: constant current at the C-rate
+    /// (of the nominal or theoretical capacity) or constant power, to the lower cut-off.
+    pub fn protocol(&self, p: &ParameterSet) -> Protocol {
+        let step = match self.power {
+            Some(power) => {
+                // Long enough for any design: the theoretical energy at the upper cut-off.
+                let energy = theoretical_capacity(p) * p.cell.upper_cutoff * 3600.0;
+                Step::Power { power, duration: 1.5 * energy / power }
+            }
+            None => {
+                let one_c = if self.rate_from_theoretical_capacity { theoretical_capacity(p) } else { p.cell.nominal_capacity };
+                Step::Current { current: self.c_rate * one_c, duration: 1.5 * 3600.0 / self.c_rate }
+            }
+        };
+        Protocol { steps: vec![step] }
     }
 
     /// The parameter set of a candidate `x` (one value per variable, ties applied).
@@ -186,17 +215,13 @@ impl DesignProblem {
     }
 
     fn discharge(&self, builder: &mut ModelBuilder, p: &ParameterSet) -> Result<DesignMetrics, Error> {
-        let one_c = if self.rate_from_theoretical_capacity { theoretical_capacity(p) } else { p.cell.nominal_capacity };
-        let current = self.c_rate * one_c;
         let built = builder.build(p)?;
-        let protocol = Protocol {
-            steps: vec![crate::protocol::Step::Current { current, duration: 1.5 * 3600.0 / self.c_rate }],
-        };
-        let sol = simulate(built.model.as_ref(), &mut built.workspace, &protocol, &SimOptions::for_cell(p), None)?;
+        let sol = simulate(built.model.as_ref(), &mut built.workspace, &self.protocol(p), &SimOptions::for_cell(p), None)?;
         let budget = p.budget();
         let energy = sol.final_energy();
         let duration = sol.time.last().copied().unwrap_or(0.0);
         let power = if duration > 0.0 { energy * 3600.0 / duration } else { 0.0 };
+        let current = if duration > 0.0 { sol.final_capacity() * 3600.0 / duration } else { 0.0 };
         Ok(DesignMetrics {
             energy,
             capacity: sol.final_capacity(),

@@ -11,7 +11,6 @@ use crate::optim::{
     Bounds, LinearConstraints, Objective, Observer, OptimOptions, OptimResult, Problem, TraceObserver, Transform, by_name,
 };
 use crate::problem::design::{DesignMetrics, DesignProblem, Metric};
-use crate::protocol::{Protocol, Step};
 use crate::report::plot::{Series, line_plot};
 use crate::simulation::{SimOptions, simulate};
 
@@ -137,12 +136,11 @@ fn write_outputs(study: &Study, problem: &DesignProblem, out: &mut DesignOutcome
 
     // Voltage profiles of the initial and optimised designs.
     let mut curves = Vec::new();
-    for (label, x, m) in [("initial", &out.initial_x, &out.initial), ("optimised", &out.result.x, &out.optimised)] {
+    for (label, x) in [("initial", &out.initial_x), ("optimised", &out.result.x)] {
         let p = problem.parameters(x)?;
         let mut builder = crate::geometry::ModelBuilder::new(problem.kind, problem.submodels, problem.mesh);
         let built = builder.build(&p)?;
-        let protocol = Protocol { steps: vec![Step::Current { current: m.current, duration: 1.5 * 3600.0 / problem.c_rate }] };
-        let sol = simulate(built.model.as_ref(), &mut built.workspace, &protocol, &SimOptions::for_cell(&p), None)?;
+        let sol = simulate(built.model.as_ref(), &mut built.workspace, &problem.protocol(&p), &SimOptions::for_cell(&p), None)?;
         curves.push((label.to_string(), sol.capacity, sol.voltage));
     }
     let plot = dir.join("design_voltage.svg");

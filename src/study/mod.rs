@@ -71,8 +71,10 @@ impl Default for ModelChoice {
 #[derive(Clone, Debug, Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct Operating {
-    /// Discharge rate (C).
-    pub c_rate: f64,
+    /// Discharge rate (C); give this or `power`.
+    pub c_rate: Option<f64>,
+    /// Constant discharge power (W); give this or `c_rate`.
+    pub power: Option<f64>,
     /// Derive 1C from each candidate's theoretical capacity rather than the nominal one.
     #[serde(default)]
     pub rate_from_theoretical_capacity: bool,
@@ -187,8 +189,17 @@ impl Study {
                 return Err(Error::invalid(format!("variables[{k}].lower"), v.lower, "must be positive for a log variable"));
             }
         }
-        if !(self.operating.c_rate > 0.0 && self.operating.c_rate.is_finite()) {
-            return Err(Error::invalid("operating.c_rate", self.operating.c_rate, "must be positive"));
+        match (self.operating.c_rate, self.operating.power) {
+            (Some(c), None) if !(c > 0.0 && c.is_finite()) => {
+                return Err(Error::invalid("operating.c_rate", c, "must be positive"));
+            }
+            (Some(_), Some(_)) | (None, None) => {
+                return Err(Error::InvalidSetting {
+                    field: "operating".into(),
+                    reason: "give exactly one of `c_rate` and `power`".into(),
+                });
+            }
+            _ => {}
         }
         if self.objective.maximise.is_empty() {
             return Err(Error::InvalidSetting { field: "objective.maximise".into(), reason: "is empty".into() });
@@ -263,13 +274,17 @@ impl Study {
 
     /// The design problem the study describes.
     pub fn problem(&self) -> Result<DesignProblem, Error> {
-        DesignProblem::new(
+        let problem = DesignProblem::new(
             self.base_parameters()?,
             self.variables.iter().map(|v| v.path.clone()).collect(),
             self.ties.clone(),
             self.model.kind,
-            self.operating.c_rate,
+            self.operating.c_rate.unwrap_or(1.0),
             self.operating.rate_from_theoretical_capacity,
-        )
+        )?;
+        match self.operating.power {
+            Some(power) => problem.with_power(power),
+            None => Ok(problem),
+        }
     }
 }
