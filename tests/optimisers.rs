@@ -68,19 +68,7 @@ impl Objective for Distance {
     }
 }
 
-const ALL: [&str; 11] = [
-    "nelder-mead",
-    "cmaes",
-    "xnes",
-    "snes",
-    "differential-evolution",
-    "pso",
-    "cuckoo",
-    "gradient-descent",
-    "adamw",
-    "irprop-",
-    "lbfgsb",
-];
+const ALL: [&str; 11] = cellstudio::optim::OPTIMISER_NAMES;
 
 fn options(max_evaluations: usize, max_iterations: usize, seed: u64) -> OptimOptions {
     OptimOptions::default()
