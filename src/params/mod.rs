@@ -3,6 +3,7 @@
 
 pub(crate) mod check;
 mod chen2020;
+pub mod bpx;
 pub mod function;
 pub mod mass;
 mod set;
