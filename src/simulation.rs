@@ -255,24 +255,58 @@ impl Recorder<'_> {
         }
     }
 
-    /// Charge and energy over `[a, b]` by Simpson's rule on the interpolant, from the power
-    /// `self.p` at `a`; leaves `y(b)` in `buf`. Two voltage evaluations per interval.
+    /// Charge and energy over `[a, b]` by adaptive Simpson quadrature on the interpolant, from
+    /// the current and power (`self.i`, `self.p`) at `a`; leaves `y(b)` in `buf`. A step is
+    /// halved until the two halves agree with the whole to 1e-9 of the charge and energy
+    /// scales, so long solver steps on a curved voltage do not bias the energy.
     fn integrate_to(&self, dense: &DenseOutput, drive: &Driven, a: f64, b: f64, buf: &mut [f64]) -> IntervalEnd {
-        let h = b - a;
-        let m = 0.5 * (a + b);
-        dense.eval(m, buf);
-        let im = drive.current(m, buf);
-        let pm = im * self.model.voltage(buf, im);
+        let mut sample = |t: f64, buf: &mut [f64]| {
+            dense.eval(t, buf);
+            let i = drive.current(t, buf);
+            (i, i * self.model.voltage(buf, i))
+        };
+        let mid = sample(0.5 * (a + b), buf);
+        let end = sample(b, buf);
+        let voltage = if end.0 != 0.0 { end.1 / end.0 } else { self.model.voltage(buf, 0.0) };
+        let (dq, de) = adaptive_simpson(&mut sample, buf, a, b, (self.i, self.p), mid, end, 12);
+        // `buf` was overwritten by interior samples: restore y(b).
         dense.eval(b, buf);
-        let ib = drive.current(b, buf);
-        let vb = self.model.voltage(buf, ib);
-        IntervalEnd {
-            dq: h / 6.0 * (self.i + 4.0 * im + ib) / 3600.0,
-            de: h / 6.0 * (self.p + 4.0 * pm + ib * vb) / 3600.0,
-            current: ib,
-            voltage: vb,
-        }
+        IntervalEnd { dq: dq / 3600.0, de: de / 3600.0, current: end.0, voltage }
     }
+}
+
+/// Adaptive Simpson quadrature of (current, power) over `[a, b]` given the samples at `a`,
+/// the midpoint and `b`; returns (A s, J).
+#[allow(clippy::too_many_arguments)]
+fn adaptive_simpson(
+    sample: &mut dyn FnMut(f64, &mut [f64]) -> (f64, f64),
+    buf: &mut [f64],
+    a: f64,
+    b: f64,
+    fa: (f64, f64),
+    fm: (f64, f64),
+    fb: (f64, f64),
+    depth: usize,
+) -> (f64, f64) {
+    let h = b - a;
+    let whole = (h / 6.0 * (fa.0 + 4.0 * fm.0 + fb.0), h / 6.0 * (fa.1 + 4.0 * fm.1 + fb.1));
+    let m = 0.5 * (a + b);
+    let fl = sample(0.5 * (a + m), buf);
+    let fr = sample(0.5 * (m + b), buf);
+    let left = (h / 12.0 * (fa.0 + 4.0 * fl.0 + fm.0), h / 12.0 * (fa.1 + 4.0 * fl.1 + fm.1));
+    let right = (h / 12.0 * (fm.0 + 4.0 * fr.0 + fb.0), h / 12.0 * (fm.1 + 4.0 * fr.1 + fb.1));
+    let halves = (left.0 + right.0, left.1 + right.1);
+    // Tolerances relative to the size of the integrand over the interval.
+    let scale_q = h * (fa.0.abs() + fb.0.abs() + 1e-12);
+    let scale_e = h * (fa.1.abs() + fb.1.abs() + 1e-12);
+    let converged = (halves.0 - whole.0).abs() <= 1e-9 * scale_q && (halves.1 - whole.1).abs() <= 1e-9 * scale_e;
+    if converged || depth == 0 {
+        // Richardson extrapolation of the two Simpson estimates.
+        return (halves.0 + (halves.0 - whole.0) / 15.0, halves.1 + (halves.1 - whole.1) / 15.0);
+    }
+    let l = adaptive_simpson(sample, buf, a, m, fa, fl, fm, depth - 1);
+    let r = adaptive_simpson(sample, buf, m, b, fm, fr, fb, depth - 1);
+    (l.0 + r.0, l.1 + r.1)
 }
 
 /// Simulates `model` through `protocol` from `y0` (or the model's initial state).
