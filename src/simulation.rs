@@ -257,7 +257,7 @@ impl Recorder<'_> {
 
     /// Charge and energy over `[a, b]` by adaptive Simpson quadrature on the interpolant, from
     /// the current and power (`self.i`, `self.p`) at `a`; leaves `y(b)` in `buf`. A step is
-    /// halved until the two halves agree with the whole to 1e-9 of the charge and energy
+    /// halved until the two halves agree with the whole to 1e-7 of the charge and energy
     /// scales, so long solver steps on a curved voltage do not bias the energy.
     fn integrate_to(&self, dense: &DenseOutput, drive: &Driven, a: f64, b: f64, buf: &mut [f64]) -> IntervalEnd {
         let mut sample = |t: f64, buf: &mut [f64]| {
@@ -299,7 +299,7 @@ fn adaptive_simpson(
     // Tolerances relative to the size of the integrand over the interval.
     let scale_q = h * (fa.0.abs() + fb.0.abs() + 1e-12);
     let scale_e = h * (fa.1.abs() + fb.1.abs() + 1e-12);
-    let converged = (halves.0 - whole.0).abs() <= 1e-9 * scale_q && (halves.1 - whole.1).abs() <= 1e-9 * scale_e;
+    let converged = (halves.0 - whole.0).abs() <= 1e-7 * scale_q && (halves.1 - whole.1).abs() <= 1e-7 * scale_e;
     if converged || depth == 0 {
         // Richardson extrapolation of the two Simpson estimates.
         return (halves.0 + (halves.0 - whole.0) / 15.0, halves.1 + (halves.1 - whole.1) / 15.0);
