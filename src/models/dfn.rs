@@ -253,7 +253,7 @@ impl Model for Dfn {
         // Electrolyte: concentration, then charge conservation with face-averaged coefficients.
         let ce = &y[l.ce..l.phie];
         let phie = &y[l.phie..l.phis_n];
-        self.electrolyte.concentration_rhs(ec, ce, &aj, temp, &mut out[l.ce..l.phie]);
+        self.electrolyte.concentration_rhs(ec, ce, &aj, None, temp, &mut out[l.ce..l.phie]);
         let (kappa, coef) = self.electrolyte.conductivities(ec, ce, temp);
         let op = &self.electrolyte;
         let mut i_left = 0.0;

@@ -89,23 +89,41 @@ impl ElectrolyteOp {
 
     /// `dc_e/dt` (mol/(m^3 s)) for concentrations `ce` and volumetric reaction currents `aj`
     /// (A/m^3) at temperature `temp` (K).
-    pub fn concentration_rhs(&self, ec: &Electrochem, ce: &[f64], aj: &[f64], temp: f64, out: &mut [f64]) {
+    ///
+    /// With `ionic_current` (A/m^2 at the `n_x - 1` interior faces) the migration flux
+    /// `t+ i_e / F` is added to the face fluxes and the source is `a j / F`, as PyBaMM writes
+    /// the SPMe with its prescribed current; without it the two are folded into the source
+    /// `(1 - t+) a j / F`, exact when `d i_e/dx = a j` holds discretely (DFN).
+    pub fn concentration_rhs(
+        &self,
+        ec: &Electrochem,
+        ce: &[f64],
+        aj: &[f64],
+        ionic_current: Option<&[f64]>,
+        temp: f64,
+        out: &mut [f64],
+    ) {
         let p = &ec.params.electrolyte;
         let arr = arrhenius(p.activation_energy, ec.t_ref(), temp);
         let nx = self.len();
+        let t_plus = p.transference_number;
+        let source_share = if ionic_current.is_some() { 1.0 } else { 1.0 - t_plus };
         let mut prev_node = self.vols[0].tortuosity * p.diffusivity.eval(ce[0]) * arr;
         let mut flux_left = 0.0;
         for i in 0..nx {
             let flux_right = if i + 1 < nx {
                 let node = self.vols[i + 1].tortuosity * p.diffusivity.eval(ce[i + 1]) * arr;
-                let f = -self.harmonic(i, prev_node, node) * (ce[i + 1] - ce[i]) / self.gaps[i];
+                let mut f = -self.harmonic(i, prev_node, node) * (ce[i + 1] - ce[i]) / self.gaps[i];
+                if let Some(ie) = ionic_current {
+                    f += t_plus * ie[i] / FARADAY;
+                }
                 prev_node = node;
                 f
             } else {
                 0.0
             };
             let v = &self.vols[i];
-            out[i] = ((flux_left - flux_right) / v.dx + (1.0 - p.transference_number) * aj[i] / FARADAY) / v.eps;
+            out[i] = ((flux_left - flux_right) / v.dx + source_share * aj[i] / FARADAY) / v.eps;
             flux_left = flux_right;
         }
     }

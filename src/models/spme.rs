@@ -17,6 +17,9 @@ use crate::params::{FARADAY, GAS_CONSTANT, ParameterSet};
 pub struct Spme {
     pub ec: Electrochem,
     electrolyte: ElectrolyteOp,
+    /// Prescribed ionic current at the interior x faces per unit applied current density (-):
+    /// the piecewise-linear profile at the volume centres, interpolated to the faces.
+    ionic_current_shape: Vec<f64>,
     mass: Vec<f64>,
     scale: Vec<f64>,
 }
@@ -33,7 +36,30 @@ impl Spme {
             scale.push(p.thermal.ambient_temperature);
         }
         let mass = vec![1.0; scale.len()];
-        Self { ec, electrolyte, mass, scale }
+        let ionic_current_shape = Self::ionic_current_shape(&ec, &electrolyte);
+        Self { ec, electrolyte, ionic_current_shape, mass, scale }
+    }
+
+    /// The leading-order ionic current `x/L_n`, 1, `(L - x)/L_p` at the volume centres,
+    /// linearly interpolated to the interior faces (as PyBaMM discretises it).
+    fn ionic_current_shape(ec: &Electrochem, op: &ElectrolyteOp) -> Vec<f64> {
+        let g = &ec.disc.geometry;
+        let (ln, ls, lp) = (g.negative_thickness, g.separator_thickness, g.positive_thickness);
+        let node: Vec<f64> = ec
+            .disc
+            .x_centres()
+            .iter()
+            .map(|&x| {
+                if x < ln {
+                    x / ln
+                } else if x < ln + ls {
+                    1.0
+                } else {
+                    (ln + ls + lp - x) / lp
+                }
+            })
+            .collect();
+        (0..node.len() - 1).map(|i| op.arithmetic(i, node[i], node[i + 1])).collect()
     }
 
     fn blocks<'a>(&self, y: &'a [f64]) -> (&'a [f64], &'a [f64], &'a [f64]) {
@@ -80,8 +106,12 @@ impl Spme {
         let p = &self.ec.params;
         let e = &p.electrolyte;
         let vols = &self.electrolyte.vols;
+        // PyBaMM's x-average of c_e in the SPMe is avg(eps c_e) avg(1/eps) (its XAverage pulls
+        // the piecewise-constant 1/eps out); it enters only through kappa.
         let length: f64 = vols.iter().map(|v| v.dx).sum();
-        let c_av = vols.iter().zip(ce).map(|(v, c)| v.dx * c).sum::<f64>() / length;
+        let avg_eps_c = vols.iter().zip(ce).map(|(v, c)| v.dx * v.eps * c).sum::<f64>() / length;
+        let avg_inv_eps = vols.iter().map(|v| v.dx / v.eps).sum::<f64>() / length;
+        let c_av = avg_eps_c * avg_inv_eps;
         let arr = super::kinetics::arrhenius(e.activation_energy, self.ec.t_ref(), temp);
         let kappa = e.conductivity.eval(c_av) * arr;
         let chi = 2.0 * (1.0 - e.transference_number) * e.thermodynamic_factor;
@@ -172,7 +202,9 @@ impl Model for Spme {
             ec.sphere(side).diffusion(c, ec.diffusivity(side, temp), flux, &mut out[range]);
         }
         let aj = self.reaction(current);
-        self.electrolyte.concentration_rhs(ec, ce, &aj, temp, &mut out[nn + np..nn + np + nx]);
+        let i_app = current / ec.area();
+        let ie: Vec<f64> = self.ionic_current_shape.iter().map(|s| s * i_app).collect();
+        self.electrolyte.concentration_rhs(ec, ce, &aj, Some(&ie), temp, &mut out[nn + np..nn + np + nx]);
         if ec.submodels.thermal {
             let (sn, sp) = self.surfaces(y);
             let ocv = ec.ocp(Side::Positive, sp) - ec.ocp(Side::Negative, sn);
