@@ -13,7 +13,7 @@ pub enum Function1D {
     Constant { value: f64 },
     /// Linear interpolation in a table (x strictly increasing), clamped-slope extrapolation.
     Table { x: Vec<f64>, y: Vec<f64> },
-    /// Graphite-SiOx OCP of the LG M50 negative electrode (Chen et al. 2020), V vs stoichiometry.
+    /// Graphite OCP of the LG M50 negative electrode (Chen et al. 2020), V vs stoichiometry.
     Chen2020GraphiteOcp,
     /// NMC 811 OCP of the LG M50 positive electrode (Chen et al. 2020), V vs stoichiometry.
     Chen2020Nmc811Ocp,
