@@ -313,6 +313,36 @@ fn log_transform_searches_in_log_space() {
     assert_eq!(err.to_string(), "invalid setting `transforms[0]`: log transform needs a positive lower bound, got 0");
 }
 
+/// A micrometre-scale variable searched as `(x - offset) / scale` reaches the same optimum,
+/// and a non-positive scale is refused.
+#[test]
+fn affine_transform_searches_rescaled_variables() {
+    struct Micro;
+    impl Objective for Micro {
+        fn dim(&self) -> usize {
+            1
+        }
+        fn evaluate(&self, x: &[f64]) -> f64 {
+            ((x[0] - 7.3e-5) / 1e-6).powi(2)
+        }
+    }
+    let bounds = Bounds::new(vec![5e-5], vec![1.1e-4]).unwrap();
+    let affine = Transform::Affine { scale: 1e-6, offset: 5e-5 };
+    let problem = Problem::new(&Micro, bounds.clone()).unwrap().with_transforms(vec![affine]).unwrap();
+    assert!((problem.search_bounds().upper()[0] - 60.0).abs() < 1e-9);
+    for name in ["nelder-mead", "cmaes", "lbfgsb"] {
+        let r = run(name, &problem, &[9e-5], options(5_000, 2_000, 2));
+        report("affine", name, &r, (r.x[0] - 7.3e-5).abs());
+        assert!((r.x[0] - 7.3e-5).abs() < 1e-9, "{name}: {:?}", r.x);
+    }
+    let err = Problem::new(&Micro, bounds)
+        .unwrap()
+        .with_transforms(vec![Transform::Affine { scale: 0.0, offset: 0.0 }])
+        .err()
+        .unwrap();
+    assert!(err.to_string().contains("transforms[0]"), "{err}");
+}
+
 #[test]
 fn finite_differences_replace_a_missing_gradient() {
     let objective = Distance::new(&[0.3, -0.2], false);

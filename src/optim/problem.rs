@@ -60,14 +60,16 @@ impl Bounds {
     }
 }
 
-/// How a variable is searched: as it is, or by its natural logarithm (for positive quantities
-/// spanning decades, e.g. diffusivities and rate constants). Needs a positive lower bound.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+/// How a variable is searched: as it is, by its natural logarithm (for positive quantities
+/// spanning decades, e.g. diffusivities and rate constants; needs a positive lower bound), or
+/// affinely rescaled `z = (x - offset) / scale` (e.g. thicknesses in micrometres).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Transform {
     #[default]
     Identity,
     Log,
+    Affine { scale: f64, offset: f64 },
 }
 
 impl Transform {
@@ -76,6 +78,7 @@ impl Transform {
         match self {
             Transform::Identity => x,
             Transform::Log => x.ln(),
+            Transform::Affine { scale, offset } => (x - offset) / scale,
         }
     }
     /// Search value -> model value.
@@ -83,6 +86,7 @@ impl Transform {
         match self {
             Transform::Identity => z,
             Transform::Log => z.exp(),
+            Transform::Affine { scale, offset } => offset + scale * z,
         }
     }
     /// `dx/dz` at model value `x`.
@@ -90,6 +94,7 @@ impl Transform {
         match self {
             Transform::Identity => 1.0,
             Transform::Log => x,
+            Transform::Affine { scale, .. } => scale,
         }
     }
 }
@@ -153,6 +158,14 @@ impl<'a> Problem<'a> {
         let mut upper = Vec::with_capacity(self.dim());
         for (i, t) in transforms.iter().enumerate() {
             let (l, u) = (self.bounds.lower[i], self.bounds.upper[i]);
+            if let Transform::Affine { scale, offset } = *t {
+                if !(scale.is_finite() && scale > 0.0 && offset.is_finite()) {
+                    return Err(Error::InvalidSetting {
+                        field: format!("transforms[{i}]"),
+                        reason: format!("affine transform needs a finite positive scale, got {scale} (offset {offset})"),
+                    });
+                }
+            }
             if *t == Transform::Log && l <= 0.0 {
                 return Err(Error::InvalidSetting {
                     field: format!("transforms[{i}]"),

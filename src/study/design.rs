@@ -8,7 +8,7 @@ use std::time::Instant;
 use super::Study;
 use crate::error::Error;
 use crate::optim::{
-    Bounds, LinearConstraints, Objective, Observer, OptimOptions, OptimResult, Problem, TraceObserver, Transform, by_name,
+    Bounds, LinearConstraints, Objective, Observer, OptimOptions, OptimResult, Problem, TraceObserver, by_name,
 };
 use crate::problem::design::{DesignMetrics, DesignProblem, Metric};
 use crate::report::plot::{Series, line_plot};
@@ -99,7 +99,7 @@ pub fn run_design(study: &Study) -> Result<DesignOutcome, Error> {
         study.variables.iter().map(|v| v.lower).collect(),
         study.variables.iter().map(|v| v.upper).collect(),
     )?;
-    let transforms = study.variables.iter().map(|v| if v.log { Transform::Log } else { Transform::Identity }).collect();
+    let transforms = study.variables.iter().map(|v| v.transform()).collect();
     let opt_problem = Problem::new(&objective, bounds)?.with_constraints(constraints(study))?.with_transforms(transforms)?;
     let start = Instant::now();
     let initial_x = study.baseline()?;

@@ -97,6 +97,22 @@ pub struct Variable {
     /// Search in log space.
     #[serde(default)]
     pub log: bool,
+    /// Search `(x - offset) / scale` instead of `x` (affine transform; `scale` > 0).
+    pub scale: Option<f64>,
+    /// Offset of the affine transform (default 0).
+    pub offset: Option<f64>,
+}
+
+impl Variable {
+    /// The optimiser's transform for this variable.
+    pub fn transform(&self) -> crate::optim::Transform {
+        use crate::optim::Transform;
+        match (self.log, self.scale) {
+            (true, _) => Transform::Log,
+            (false, Some(scale)) => Transform::Affine { scale, offset: self.offset.unwrap_or(0.0) },
+            (false, None) => Transform::Identity,
+        }
+    }
 }
 
 /// A linear constraint `sum(terms) <= upper`, `>= lower` or `== equals` on decision variables.
@@ -184,6 +200,17 @@ impl Study {
             })?;
             if !(v.lower < v.upper) || !v.lower.is_finite() || !v.upper.is_finite() {
                 return Err(Error::invalid(format!("variables[{k}].upper"), v.upper, format!("must exceed lower = {}", v.lower)));
+            }
+            if v.log && (v.scale.is_some() || v.offset.is_some()) {
+                return Err(Error::InvalidSetting {
+                    field: format!("variables[{k}]"),
+                    reason: "`log` and an affine `scale`/`offset` exclude each other".into(),
+                });
+            }
+            if let Some(scale) = v.scale {
+                if !(scale > 0.0 && scale.is_finite()) {
+                    return Err(Error::invalid(format!("variables[{k}].scale"), scale, "must be positive"));
+                }
             }
             if v.log && v.lower <= 0.0 {
                 return Err(Error::invalid(format!("variables[{k}].lower"), v.lower, "must be positive for a log variable"));
