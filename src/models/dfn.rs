@@ -139,12 +139,6 @@ impl Dfn {
         let alpha = self.ec.electrode(side).charge_transfer_coefficient;
         butler_volmer(self.ec.j0(side, c_e, c_s, temp), eta, alpha, temp)
     }
-
-    /// Effective solid conductivity (S/m) of an electrode.
-    fn sigma_eff(&self, side: Side) -> f64 {
-        let e = self.ec.electrode(side);
-        e.conductivity * (1.0 - e.porosity).powf(e.bruggeman_solid)
-    }
 }
 
 impl Model for Dfn {
@@ -273,7 +267,7 @@ impl Model for Dfn {
 
         // Solid potentials.
         for (side, n, first) in [(Side::Negative, l.nxn, 0), (Side::Positive, l.nxp, l.nxn + l.nxs)] {
-            let sigma = self.sigma_eff(side);
+            let sigma = self.ec.effective_conductivity(side);
             let phis = &y[l.phis(side, 0)..l.phis(side, 0) + n];
             let dx = vols[first].dx;
             for k in 0..n {
@@ -308,7 +302,7 @@ impl Model for Dfn {
         let dx = self.electrolyte.vols[l.nx() - 1].dx;
         let last = y[l.phis_p + l.nxp - 1];
         // phi_s at x = L from the last volume and the known boundary current I / A.
-        let phi_l = last - current / self.ec.area() / self.sigma_eff(Side::Positive) * 0.5 * dx;
+        let phi_l = last - current / self.ec.area() / self.ec.effective_conductivity(Side::Positive) * 0.5 * dx;
         phi_l - current * self.ec.contact_resistance()
     }
 

@@ -105,6 +105,30 @@ impl Electrochem {
         j / FARADAY
     }
 
+    /// Effective solid-phase conductivity `sigma (1 - eps)^b` (S/m) of an electrode.
+    pub fn effective_conductivity(&self, side: Side) -> f64 {
+        let e = self.electrode(side);
+        e.conductivity * (1.0 - e.porosity).powf(e.bruggeman_solid)
+    }
+
+    /// Surface concentrations (mol/m^3) of the two representative particles of a single
+    /// particle model, with shell concentrations `cn` and `cp`.
+    pub fn single_particle_surfaces(&self, cn: &[f64], cp: &[f64]) -> (f64, f64) {
+        (self.disc.sphere_n.surface(cn), self.disc.sphere_p.surface(cp))
+    }
+
+    /// Lithium (mol) in both electrodes of a single particle model.
+    pub fn single_particle_lithium(&self, cn: &[f64], cp: &[f64]) -> f64 {
+        let p = &self.params;
+        self.particle_lithium(Side::Negative, cn, p.negative.thickness)
+            + self.particle_lithium(Side::Positive, cp, p.positive.thickness)
+    }
+
+    /// OCV (V) at the average stoichiometries of the two representative particles.
+    pub fn single_particle_ocv(&self, cn: &[f64], cp: &[f64]) -> f64 {
+        self.ocp(Side::Positive, self.disc.sphere_p.average(cp)) - self.ocp(Side::Negative, self.disc.sphere_n.average(cn))
+    }
+
     /// Entropic coefficient of the cell's OCV, dU_p/dT - dU_n/dT (V/K).
     pub fn docv_dt(&self) -> f64 {
         self.params.positive.ocp_entropic_change - self.params.negative.ocp_entropic_change

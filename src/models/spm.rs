@@ -38,7 +38,7 @@ impl Spm {
     /// Surface concentrations (mol/m^3) of the negative and positive particles.
     pub fn surface_concentrations(&self, y: &[f64]) -> (f64, f64) {
         let (cn, cp) = self.split(y);
-        (self.ec.disc.sphere_n.surface(cn), self.ec.disc.sphere_p.surface(cp))
+        self.ec.single_particle_surfaces(cn, cp)
     }
 }
 
@@ -133,15 +133,12 @@ impl Model for Spm {
 
     fn solid_lithium(&self, y: &[f64]) -> f64 {
         let (cn, cp) = self.split(y);
-        let p = &self.ec.params;
-        self.ec.particle_lithium(Side::Negative, cn, p.negative.thickness)
-            + self.ec.particle_lithium(Side::Positive, cp, p.positive.thickness)
+        self.ec.single_particle_lithium(cn, cp)
     }
 
     fn open_circuit_voltage(&self, y: &[f64]) -> f64 {
         let (cn, cp) = self.split(y);
-        self.ec.ocp(Side::Positive, self.ec.disc.sphere_p.average(cp))
-            - self.ec.ocp(Side::Negative, self.ec.disc.sphere_n.average(cn))
+        self.ec.single_particle_ocv(cn, cp)
     }
 }
 

@@ -131,17 +131,13 @@ impl Spme {
         let i_app = current / self.ec.area();
         [Side::Negative, Side::Positive]
             .iter()
-            .map(|&s| {
-                let e = self.ec.electrode(s);
-                let sigma = e.conductivity * (1.0 - e.porosity).powf(e.bruggeman_solid);
-                i_app * e.thickness / (3.0 * sigma)
-            })
+            .map(|&s| i_app * self.ec.electrode(s).thickness / (3.0 * self.ec.effective_conductivity(s)))
             .sum()
     }
 
     fn surfaces(&self, y: &[f64]) -> (f64, f64) {
         let (cn, cp, _) = self.blocks(y);
-        (self.ec.disc.sphere_n.surface(cn), self.ec.disc.sphere_p.surface(cp))
+        self.ec.single_particle_surfaces(cn, cp)
     }
 }
 
@@ -237,15 +233,12 @@ impl Model for Spme {
 
     fn solid_lithium(&self, y: &[f64]) -> f64 {
         let (cn, cp, _) = self.blocks(y);
-        let p = &self.ec.params;
-        self.ec.particle_lithium(Side::Negative, cn, p.negative.thickness)
-            + self.ec.particle_lithium(Side::Positive, cp, p.positive.thickness)
+        self.ec.single_particle_lithium(cn, cp)
     }
 
     fn open_circuit_voltage(&self, y: &[f64]) -> f64 {
         let (cn, cp, _) = self.blocks(y);
-        self.ec.ocp(Side::Positive, self.ec.disc.sphere_p.average(cp))
-            - self.ec.ocp(Side::Negative, self.ec.disc.sphere_n.average(cn))
+        self.ec.single_particle_ocv(cn, cp)
     }
 }
 
