@@ -90,7 +90,8 @@ impl ElectrolyteOp {
     /// `dc_e/dt` (mol/(m^3 s)) for concentrations `ce` and volumetric reaction currents `aj`
     /// (A/m^3) at temperature `temp` (K).
     ///
-    /// With `ionic_current` (A/m^2 at the `n_x - 1` interior faces) the migration flux
+    /// With `ionic_current = (shape, i_app)` — the ionic current at the `n_x - 1` interior
+    /// faces is `shape * i_app` (A/m^2) — the migration flux
     /// `t+ i_e / F` is added to the face fluxes and the source is `a j / F`, as PyBaMM writes
     /// the SPMe with its prescribed current; without it the two are folded into the source
     /// `(1 - t+) a j / F`, exact when `d i_e/dx = a j` holds discretely (DFN).
@@ -99,7 +100,7 @@ impl ElectrolyteOp {
         ec: &Electrochem,
         ce: &[f64],
         aj: &[f64],
-        ionic_current: Option<&[f64]>,
+        ionic_current: Option<(&[f64], f64)>,
         temp: f64,
         out: &mut [f64],
     ) {
@@ -114,8 +115,8 @@ impl ElectrolyteOp {
             let flux_right = if i + 1 < nx {
                 let node = self.vols[i + 1].tortuosity * p.diffusivity.eval(ce[i + 1]) * arr;
                 let mut f = -self.harmonic(i, prev_node, node) * (ce[i + 1] - ce[i]) / self.gaps[i];
-                if let Some(ie) = ionic_current {
-                    f += t_plus * ie[i] / FARADAY;
+                if let Some((shape, i_app)) = ionic_current {
+                    f += t_plus * shape[i] * i_app / FARADAY;
                 }
                 prev_node = node;
                 f

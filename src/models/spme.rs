@@ -198,9 +198,8 @@ impl Model for Spme {
             ec.sphere(side).diffusion(c, ec.diffusivity(side, temp), flux, &mut out[range]);
         }
         let aj = self.reaction(current);
-        let i_app = current / ec.area();
-        let ie: Vec<f64> = self.ionic_current_shape.iter().map(|s| s * i_app).collect();
-        self.electrolyte.concentration_rhs(ec, ce, &aj, Some(&ie), temp, &mut out[nn + np..nn + np + nx]);
+        let ionic = (self.ionic_current_shape.as_slice(), current / ec.area());
+        self.electrolyte.concentration_rhs(ec, ce, &aj, Some(ionic), temp, &mut out[nn + np..nn + np + nx]);
         if ec.submodels.thermal {
             let (sn, sp) = self.surfaces(y);
             let ocv = ec.ocp(Side::Positive, sp) - ec.ocp(Side::Negative, sn);
