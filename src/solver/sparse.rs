@@ -89,11 +89,6 @@ impl SparseSystem {
         }
     }
 
-    /// Number of stored non-zeros.
-    pub fn nnz(&self) -> usize {
-        self.values.len()
-    }
-
     /// Sets the matrix to `diag(mass) - c * J`, where `jac[k]` is the value of entry `k` of the
     /// pattern given to [`SparseSystem::new`], and factorises it.
     pub fn factorise(&mut self, mass: &[f64], c: f64, jac: &[f64]) -> Result<(), Error> {
