@@ -3,7 +3,10 @@
 //! The pipeline is model -> problem -> cost -> optimiser/sampler, fed by parameter sets and
 //! protocols, reported by plots.
 
+pub mod cost;
 pub mod data;
+pub mod diagnose;
+pub mod eis;
 pub mod error;
 pub mod geometry;
 pub mod models;
@@ -13,6 +16,7 @@ pub mod params;
 pub mod problem;
 pub mod protocol;
 pub mod report;
+pub mod sample;
 pub mod simulation;
 pub mod study;
 pub mod solver;

@@ -1,0 +1,1 @@
+//! Costs and likelihoods of fitting problems.

@@ -1,0 +1,1 @@
+//! Model-discrepancy diagnosis: locate a mismatch, name the missing physics, refit.

@@ -1,0 +1,1 @@
+//! Electrochemical impedance: linearised frequency response of the discretised models.

@@ -1,0 +1,1 @@
+//! MCMC samplers behind one trait, with convergence diagnostics.
