@@ -1,6 +1,9 @@
 //! Recorded cycler data: CSV import with column checks, and comparison of simulated voltage
 //! against a recording.
 
+mod format;
 mod recording;
+mod segments;
 
+pub use format::CsvFormat;
 pub use recording::{Recording, VoltageError};

@@ -3,6 +3,7 @@
 
 use std::path::Path;
 
+use super::CsvFormat;
 use crate::error::Error;
 use crate::params::function::interpolate;
 
@@ -28,35 +29,52 @@ pub struct VoltageError {
 }
 
 impl Recording {
-    /// Reads a CSV file with a header row. Columns are found by name: `time_s`,
-    /// `current_A`, `voltage_V` and optionally `temperature_K`.
+    /// Reads a CSV file with a header row whose columns are `time_s`, `current_A`,
+    /// `voltage_V` and optionally `temperature_K` (discharge positive).
     pub fn from_csv(path: &Path) -> Result<Self, Error> {
+        Self::from_csv_with(path, &CsvFormat::default())
+    }
+
+    /// Reads a CSV file with a header row, mapping columns, units and the current sign by
+    /// `format`. Errors name the file, line, column and value: a missing column, an empty
+    /// file, a value that is not a finite number, time that goes backwards, and voltages
+    /// outside (0, 10) V (usually a wrong `voltage_unit`).
+    pub fn from_csv_with(path: &Path, format: &CsvFormat) -> Result<Self, Error> {
         let name = path.display().to_string();
         let parse_err = |message: String| Error::Parse { path: name.clone(), message };
+        let (kt, ki, kv) = (format.time_factor()?, format.current_factor()?, format.voltage_factor()?);
         let mut reader = csv::Reader::from_path(path).map_err(|e| parse_err(e.to_string()))?;
         let headers = reader.headers().map_err(|e| parse_err(e.to_string()))?.clone();
         let column = |wanted: &str| headers.iter().position(|h| h.trim() == wanted);
         let required = |wanted: &str| {
             column(wanted).ok_or_else(|| parse_err(format!("missing column `{wanted}` (found: {})", headers.iter().collect::<Vec<_>>().join(", "))))
         };
-        let (ct, ci, cv) = (required("time_s")?, required("current_A")?, required("voltage_V")?);
-        let ctemp = column("temperature_K");
+        let (ct, ci, cv) = (required(&format.time)?, required(&format.current)?, required(&format.voltage)?);
+        let ctemp = format.temperature.as_deref().and_then(column);
         let mut rec = Recording { temperature: ctemp.map(|_| Vec::new()), ..Default::default() };
         for (row, record) in reader.records().enumerate() {
             let record = record.map_err(|e| parse_err(e.to_string()))?;
             let line = row + 2;
-            let value = |col: usize, what: &str| -> Result<f64, Error> {
+            let value = |col: usize| -> Result<f64, Error> {
+                let what = &headers[col];
                 let text = record.get(col).unwrap_or("").trim();
                 let v: f64 = text
                     .parse()
                     .map_err(|_| parse_err(format!("line {line}: `{what}` = `{text}` is not a number")))?;
                 if v.is_finite() { Ok(v) } else { Err(parse_err(format!("line {line}: `{what}` is {v}"))) }
             };
-            rec.time.push(value(ct, "time_s")?);
-            rec.current.push(value(ci, "current_A")?);
-            rec.voltage.push(value(cv, "voltage_V")?);
+            rec.time.push(kt * value(ct)?);
+            rec.current.push(ki * value(ci)?);
+            let v = kv * value(cv)?;
+            if !(v > 0.0 && v < 10.0) {
+                return Err(parse_err(format!(
+                    "line {line}: `{}` = {v} V is not a cell voltage (check voltage_unit = `{}`)",
+                    format.voltage, format.voltage_unit
+                )));
+            }
+            rec.voltage.push(v);
             if let (Some(c), Some(t)) = (ctemp, rec.temperature.as_mut()) {
-                t.push(value(c, "temperature_K")?);
+                t.push(format.temperature_in_kelvin(value(c)?)?);
             }
         }
         if rec.time.len() < 2 {
@@ -64,13 +82,36 @@ impl Recording {
         }
         if let Some(k) = rec.time.windows(2).position(|w| !(w[1] >= w[0])) {
             return Err(parse_err(format!(
-                "line {}: `time_s` = {} does not increase (previous {})",
+                "line {}: `{}` = {} does not increase (previous {})",
                 k + 3,
+                format.time,
                 rec.time[k + 1],
                 rec.time[k]
             )));
         }
         Ok(rec)
+    }
+
+    /// Writes the recording as CSV in this crate's default format.
+    pub fn write_csv(&self, path: &Path) -> Result<(), Error> {
+        use std::fmt::Write;
+        let mut s = String::from("time_s,current_A,voltage_V");
+        s.push_str(if self.temperature.is_some() { ",temperature_K\n" } else { "\n" });
+        for k in 0..self.time.len() {
+            let _ = write!(s, "{},{},{}", self.time[k], self.current[k], self.voltage[k]);
+            match &self.temperature {
+                Some(t) => { let _ = writeln!(s, ",{}", t[k]); }
+                None => s.push('\n'),
+            }
+        }
+        std::fs::write(path, s).map_err(|source| Error::Io { path: path.display().to_string(), source })
+    }
+
+    /// Whether point `k` shares its time with a neighbour (either side of a current step as
+    /// PyBaMM writes them): its voltage is ambiguous.
+    pub fn is_repeated(&self, k: usize) -> bool {
+        let t = self.time[k];
+        (k > 0 && self.time[k - 1] == t) || (k + 1 < self.time.len() && self.time[k + 1] == t)
     }
 
     /// Distinct recorded times (s), strictly increasing: output times for a simulation.
@@ -87,10 +128,8 @@ impl Recording {
         let mut sum = 0.0;
         let mut max = 0.0f64;
         let mut points = 0;
-        let n = self.time.len();
         for (k, (&tr, &vr)) in self.time.iter().zip(&self.voltage).enumerate() {
-            let repeated = (k > 0 && self.time[k - 1] == tr) || (k + 1 < n && self.time[k + 1] == tr);
-            if tr < t0 || tr > t1 || repeated {
+            if tr < t0 || tr > t1 || self.is_repeated(k) {
                 continue;
             }
             let d = interpolate(t, v, tr) - vr;
