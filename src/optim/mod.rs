@@ -38,7 +38,7 @@ mod differential_evolution;
 mod gradient_descent;
 mod irprop;
 mod lbfgsb;
-mod linalg;
+pub(crate) mod linalg;
 mod nelder_mead;
 pub mod problem;
 pub mod projection;

@@ -1,0 +1,205 @@
+//! Identification: a cost of a fitting problem as an optimiser objective (with gradients from
+//! forward sensitivities), the fit itself, and standard errors from the Fisher information.
+
+use std::time::Instant;
+
+use serde::Serialize;
+
+use super::fitting::FittingProblem;
+use crate::cost::{CostKind, CostValue};
+use crate::error::Error;
+use crate::optim::{Bounds, Objective, OptimOptions, Problem, StopReason, TraceEntry, TraceObserver, Transform, by_name};
+
+/// Bounds and start of the noise level when it is fitted (V).
+pub const SIGMA_BOUNDS: (f64, f64) = (1e-5, 0.5);
+pub const SIGMA_START: f64 = 0.005;
+
+/// A cost of a fitting problem over the model parameters (and the noise level last, when the
+/// cost fits it). Failed simulations cost `+inf`.
+pub struct FitObjective<'a> {
+    pub problem: &'a FittingProblem,
+    pub cost: CostKind,
+}
+
+impl FitObjective<'_> {
+    fn split<'x>(&self, x: &'x [f64]) -> (&'x [f64], Option<f64>) {
+        let n = self.problem.dim();
+        (&x[..n], self.cost.fits_sigma().then(|| x[n]))
+    }
+
+    fn cost_of(&self, theta: &[f64], sigma: Option<f64>, voltage: &[f64]) -> CostValue {
+        let r = self.problem.residuals(voltage);
+        let mut c = self.cost.evaluate(&r, &self.problem.weights, sigma);
+        if self.cost.uses_priors() {
+            for (p, &v) in self.problem.parameters.iter().zip(theta) {
+                c.value -= p.prior.log_pdf(v);
+            }
+        }
+        c
+    }
+
+    /// Value and gradient (model space) from one simulation with sensitivities.
+    pub fn value_and_gradient(&self, x: &[f64]) -> Result<(f64, Vec<f64>), Error> {
+        let (theta, sigma) = self.split(x);
+        let sim = self.problem.simulate_with_sensitivities(theta)?;
+        let c = self.cost_of(theta, sigma, &sim.voltage);
+        let mut g = vec![0.0; x.len()];
+        for (row, d) in sim.sensitivity.iter().zip(&c.d_residual) {
+            for (gk, s) in g.iter_mut().zip(row) {
+                *gk += d * s;
+            }
+        }
+        if self.cost.uses_priors() {
+            for (k, (p, &v)) in self.problem.parameters.iter().zip(theta).enumerate() {
+                g[k] -= p.prior.d_log_pdf(v);
+            }
+        }
+        if sigma.is_some() {
+            g[theta.len()] = c.d_sigma;
+        }
+        Ok((c.value, g))
+    }
+}
+
+impl Objective for FitObjective<'_> {
+    fn dim(&self) -> usize {
+        self.problem.dim() + usize::from(self.cost.fits_sigma())
+    }
+    fn evaluate(&self, x: &[f64]) -> f64 {
+        let (theta, sigma) = self.split(x);
+        match self.problem.simulate(theta) {
+            Ok(v) => self.cost_of(theta, sigma, &v).value,
+            Err(_) => f64::INFINITY,
+        }
+    }
+    fn gradient(&self, x: &[f64]) -> Option<Vec<f64>> {
+        self.value_and_gradient(x).ok().map(|(_, g)| g)
+    }
+}
+
+/// Result of a fit.
+#[derive(Clone, Debug, Serialize)]
+pub struct FitResult {
+    /// Fitted parameter paths, then `sigma` when fitted.
+    pub names: Vec<String>,
+    /// Best point (parameter units; sigma in V last when fitted).
+    pub x: Vec<f64>,
+    pub cost: f64,
+    /// Root-mean-square residual over the weighted points (V).
+    pub rmse: f64,
+    /// Standard errors of the model parameters (Gauss-Newton / Fisher information with the
+    /// noise level estimated from the residuals), in parameter units.
+    pub std_errors: Vec<f64>,
+    /// Correlation matrix of the model parameters.
+    pub correlation: Vec<Vec<f64>>,
+    pub evaluations: usize,
+    pub gradient_evaluations: usize,
+    pub iterations: usize,
+    pub stop: StopReason,
+    /// Model voltage (V) at every recorded point at the optimum.
+    pub voltage: Vec<f64>,
+    /// Best point after every iteration.
+    pub trace: Vec<TraceEntry>,
+    /// Wall time of the search (s).
+    pub seconds: f64,
+}
+
+/// Minimises `cost` over the problem's parameters with the named optimiser, from the
+/// parameters' initial values, then evaluates standard errors at the optimum.
+pub fn fit(problem: &FittingProblem, cost: CostKind, optimiser: &str, options: OptimOptions) -> Result<FitResult, Error> {
+    cost.validate()?;
+    let objective = FitObjective { problem, cost };
+    let mut lower: Vec<f64> = problem.parameters.iter().map(|p| p.lower).collect();
+    let mut upper: Vec<f64> = problem.parameters.iter().map(|p| p.upper).collect();
+    let mut transforms: Vec<Transform> =
+        problem.parameters.iter().map(|p| if p.log { Transform::Log } else { Transform::Identity }).collect();
+    let mut x0 = problem.initial();
+    let mut names: Vec<String> = problem.parameters.iter().map(|p| p.path.clone()).collect();
+    if cost.fits_sigma() {
+        lower.push(SIGMA_BOUNDS.0);
+        upper.push(SIGMA_BOUNDS.1);
+        transforms.push(Transform::Log);
+        x0.push(SIGMA_START);
+        names.push("sigma".into());
+    }
+    let search = Problem::new(&objective, Bounds::new(lower, upper)?)?.with_transforms(transforms)?;
+    let mut trace = TraceObserver::default();
+    let start = Instant::now();
+    let result = by_name(optimiser, options)?.minimise(&search, &x0, &mut trace)?;
+    let seconds = start.elapsed().as_secs_f64();
+    if !result.f.is_finite() {
+        return Err(Error::Solver { t: 0.0, reason: "every simulation of the fit failed".into() });
+    }
+    let theta = &result.x[..problem.dim()];
+    let sim = problem.simulate_with_sensitivities(theta)?;
+    let id = identifiability(problem, &sim.voltage, &sim.sensitivity)?;
+    Ok(FitResult {
+        names,
+        x: result.x.clone(),
+        cost: result.f,
+        rmse: id.rmse,
+        std_errors: id.std_errors,
+        correlation: id.correlation,
+        evaluations: result.evaluations,
+        gradient_evaluations: result.gradient_evaluations,
+        iterations: result.iterations,
+        stop: result.stop,
+        voltage: sim.voltage,
+        trace: trace.entries,
+        seconds,
+    })
+}
+
+/// Local identifiability at a fitted point.
+pub struct Identifiability {
+    /// Weighted RMS residual (V).
+    pub rmse: f64,
+    pub std_errors: Vec<f64>,
+    pub correlation: Vec<Vec<f64>>,
+}
+
+/// Covariance `s² (Sᵀ W S)⁻¹` of least squares, with `s²` the weighted residual variance over
+/// `N - P` degrees of freedom; a direction the data do not inform has an infinite error.
+pub fn identifiability(problem: &FittingProblem, voltage: &[f64], sensitivity: &[Vec<f64>]) -> Result<Identifiability, Error> {
+    let p = problem.dim();
+    let r = problem.residuals(voltage);
+    let w = &problem.weights;
+    let weight: f64 = w.iter().sum();
+    let sse: f64 = r.iter().zip(w).map(|(r, w)| w * r * r).sum();
+    let rmse = (sse / weight).sqrt();
+    if p == 0 {
+        return Ok(Identifiability { rmse, std_errors: Vec::new(), correlation: Vec::new() });
+    }
+    let s2 = sse / (weight - p as f64).max(1.0);
+    // Fisher information in relative units (θ_k ∂V/∂θ_k) keeps the eigenproblem well scaled.
+    let scale: Vec<f64> = (0..p).map(|k| problem.parameters[k].initial.abs().max(f64::MIN_POSITIVE)).collect();
+    let mut fisher = vec![0.0; p * p];
+    for (row, &wi) in sensitivity.iter().zip(w) {
+        for a in 0..p {
+            for b in 0..p {
+                fisher[a * p + b] += wi * row[a] * scale[a] * row[b] * scale[b];
+            }
+        }
+    }
+    let (values, vectors) = crate::optim::linalg::sym_eigen(&fisher, p)?;
+    let largest = values.iter().fold(0.0f64, |m, v| m.max(*v));
+    let mut cov = vec![0.0; p * p];
+    for a in 0..p {
+        for b in 0..p {
+            cov[a * p + b] = (0..p)
+                .map(|k| {
+                    let inv = if values[k] > 1e-12 * largest { 1.0 / values[k] } else { f64::INFINITY };
+                    vectors[a * p + k] * vectors[b * p + k] * inv
+                })
+                .filter(|v| !v.is_nan())
+                .sum::<f64>()
+                * s2
+                * scale[a]
+                * scale[b];
+        }
+    }
+    let std_errors: Vec<f64> = (0..p).map(|a| cov[a * p + a].sqrt()).collect();
+    let correlation =
+        (0..p).map(|a| (0..p).map(|b| cov[a * p + b] / (std_errors[a] * std_errors[b])).collect()).collect();
+    Ok(Identifiability { rmse, std_errors, correlation })
+}

@@ -1,0 +1,308 @@
+//! Fitting problems: a model, the parameters to identify and a recording whose current drives
+//! the model; the simulated voltage at the recorded times, with forward sensitivities.
+
+use std::sync::Mutex;
+
+use serde::{Deserialize, Serialize};
+
+use super::sensitivity::{PARAMETER_STEP, Sensitivities};
+use crate::cost::Prior;
+use crate::data::Recording;
+use crate::error::Error;
+use crate::geometry::{MeshSizes, ModelBuilder};
+use crate::models::{Model, ModelKind, Submodels};
+use crate::params::ParameterSet;
+use crate::protocol::Protocol;
+use crate::simulation::{SimOptions, simulate};
+use crate::solver::{SolverOptions, Workspace};
+
+/// Which model to build.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ModelSpec {
+    pub kind: ModelKind,
+    #[serde(default)]
+    pub submodels: Submodels,
+    #[serde(default)]
+    pub mesh: MeshSizes,
+}
+
+impl ModelSpec {
+    pub fn new(kind: ModelKind, submodels: Submodels) -> Self {
+        Self { kind, submodels, mesh: MeshSizes::default() }
+    }
+
+    fn builder(&self) -> ModelBuilder {
+        ModelBuilder::new(self.kind, self.submodels, self.mesh)
+    }
+}
+
+/// One parameter to identify, by dotted path (e.g. `negative.diffusivity`).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FitParameter {
+    pub path: String,
+    /// Start of the search (parameter units).
+    pub initial: f64,
+    pub lower: f64,
+    pub upper: f64,
+    /// Search (and sample) the natural logarithm; needs a positive lower bound.
+    #[serde(default)]
+    pub log: bool,
+    /// Prior for MAP costs and sampling (uniform within the bounds by default).
+    #[serde(default)]
+    pub prior: Prior,
+}
+
+impl FitParameter {
+    /// A parameter searched on a log scale between `lower` and `upper`.
+    pub fn log(path: &str, initial: f64, lower: f64, upper: f64) -> Self {
+        Self { path: path.into(), initial, lower, upper, log: true, prior: Prior::Uniform }
+    }
+
+    /// A parameter searched linearly between `lower` and `upper`.
+    pub fn linear(path: &str, initial: f64, lower: f64, upper: f64) -> Self {
+        Self { path: path.into(), initial, lower, upper, log: false, prior: Prior::Uniform }
+    }
+
+    fn validate(&self, base: &ParameterSet) -> Result<(), Error> {
+        base.get(&self.path)?;
+        let field = |name: &str| format!("parameters.{}.{name}", self.path);
+        for (name, v) in [("initial", self.initial), ("lower", self.lower), ("upper", self.upper)] {
+            if !v.is_finite() {
+                return Err(Error::invalid(field(name), v, "must be finite"));
+            }
+        }
+        if !(self.lower < self.upper) {
+            return Err(Error::invalid(field("upper"), self.upper, format!("must exceed lower = {}", self.lower)));
+        }
+        if !(self.initial >= self.lower && self.initial <= self.upper) {
+            return Err(Error::invalid(
+                field("initial"),
+                self.initial,
+                format!("must lie within [{}, {}]", self.lower, self.upper),
+            ));
+        }
+        if self.log && self.lower <= 0.0 {
+            return Err(Error::invalid(field("lower"), self.lower, "must be positive for a log-scaled parameter"));
+        }
+        self.prior.validate(&field("prior"))
+    }
+}
+
+/// Simulated voltage at the recorded points and, optionally, its sensitivities.
+#[derive(Clone, Debug, Default)]
+pub struct Simulated {
+    /// Model voltage (V) at every recorded point.
+    pub voltage: Vec<f64>,
+    /// `dV_i/dθ_k` (V per parameter unit), one row per recorded point, when requested.
+    pub sensitivity: Vec<Vec<f64>>,
+}
+
+/// Builders re-used across evaluations: the model at θ and one copy per parameter at θ + δ.
+struct Worker {
+    builders: Vec<ModelBuilder>,
+    sensitivity_workspace: Option<Workspace>,
+}
+
+/// A model, the parameters to identify, and a recording.
+pub struct FittingProblem {
+    pub spec: ModelSpec,
+    pub base: ParameterSet,
+    pub parameters: Vec<FitParameter>,
+    pub data: Recording,
+    /// Non-negative weight of each recorded point in costs (0 leaves it out).
+    pub weights: Vec<f64>,
+    pub solver: SolverOptions,
+    protocol: Protocol,
+    /// Distinct output times (s, from the recording's start) and each point's output index.
+    t_eval: Vec<f64>,
+    output_of_point: Vec<usize>,
+    pool: Mutex<Vec<Worker>>,
+}
+
+impl FittingProblem {
+    /// Validates the parameters against `base` and derives the protocol from the recorded
+    /// current. Points at a repeated time (either side of a current jump) get weight 0.
+    pub fn new(spec: ModelSpec, base: ParameterSet, parameters: Vec<FitParameter>, data: Recording) -> Result<Self, Error> {
+        base.validate()?;
+        for p in &parameters {
+            p.validate(&base)?;
+        }
+        if let Some((k, _)) = parameters.iter().enumerate().find(|(k, p)| parameters[..*k].iter().any(|q| q.path == p.path)) {
+            return Err(Error::InvalidSetting { field: format!("parameters.{}", parameters[k].path), reason: "listed twice".into() });
+        }
+        let n = data.time.len();
+        if n < 2 || data.current.len() != n || data.voltage.len() != n {
+            return Err(Error::InvalidSetting {
+                field: "data".into(),
+                reason: format!("needs at least 2 points with time, current and voltage each ({n} times)"),
+            });
+        }
+        if let Some(k) = (0..n).find(|&k| !(data.time[k].is_finite() && data.current[k].is_finite() && data.voltage[k].is_finite())) {
+            return Err(Error::invalid("data", data.time[k], format!("point {k} has a non-finite time, current or voltage")));
+        }
+        if let Some(k) = data.time.windows(2).position(|w| !(w[1] >= w[0])) {
+            return Err(Error::invalid("data.time", data.time[k + 1], format!("decreases at point {}", k + 1)));
+        }
+        let t0 = data.time[0];
+        let mut t_eval: Vec<f64> = Vec::with_capacity(n);
+        let mut output_of_point = Vec::with_capacity(n);
+        for &t in &data.time {
+            if t_eval.last() != Some(&(t - t0)) {
+                t_eval.push(t - t0);
+            }
+            output_of_point.push(t_eval.len() - 1);
+        }
+        let weights = (0..n).map(|k| if data.is_repeated(k) { 0.0 } else { 1.0 }).collect();
+        let protocol = data.protocol();
+        protocol.validate()?;
+        Ok(Self {
+            spec,
+            base,
+            parameters,
+            data,
+            weights,
+            solver: SolverOptions::default(),
+            protocol,
+            t_eval,
+            output_of_point,
+            pool: Mutex::new(Vec::new()),
+        })
+    }
+
+    /// Restricts costs to points with positive weight (e.g. a training window); the model
+    /// still runs through the whole recording. Points at a repeated time stay out.
+    pub fn with_weights(mut self, weights: Vec<f64>) -> Result<Self, Error> {
+        if weights.len() != self.data.time.len() {
+            return Err(Error::InvalidSetting {
+                field: "weights".into(),
+                reason: format!("{} weights for {} recorded points", weights.len(), self.data.time.len()),
+            });
+        }
+        if let Some(w) = weights.iter().find(|w| !(**w >= 0.0 && w.is_finite())) {
+            return Err(Error::invalid("weights", *w, "must be non-negative and finite"));
+        }
+        for (k, w) in weights.into_iter().enumerate() {
+            self.weights[k] = if self.data.is_repeated(k) { 0.0 } else { w };
+        }
+        if self.weights.iter().all(|&w| w == 0.0) {
+            return Err(Error::InvalidSetting { field: "weights".into(), reason: "leave no point in the cost".into() });
+        }
+        Ok(self)
+    }
+
+    /// Number of fitted model parameters.
+    pub fn dim(&self) -> usize {
+        self.parameters.len()
+    }
+
+    /// Initial values of the fitted parameters.
+    pub fn initial(&self) -> Vec<f64> {
+        self.parameters.iter().map(|p| p.initial).collect()
+    }
+
+    /// The parameter set at `x` (one value per fitted parameter), validated.
+    pub fn parameters_at(&self, x: &[f64]) -> Result<ParameterSet, Error> {
+        if x.len() != self.dim() {
+            return Err(Error::InvalidSetting {
+                field: "x".into(),
+                reason: format!("{} values for {} fitted parameters", x.len(), self.dim()),
+            });
+        }
+        let mut p = self.base.clone();
+        for (fp, &v) in self.parameters.iter().zip(x) {
+            p.set(&fp.path, v)?;
+        }
+        p.validate()?;
+        Ok(p)
+    }
+
+    /// Model voltage (V) at every recorded point.
+    pub fn simulate(&self, x: &[f64]) -> Result<Vec<f64>, Error> {
+        Ok(self.run(x, false)?.voltage)
+    }
+
+    /// Model voltage and its forward sensitivities to the fitted parameters.
+    pub fn simulate_with_sensitivities(&self, x: &[f64]) -> Result<Simulated, Error> {
+        self.run(x, true)
+    }
+
+    fn options(&self, p: &ParameterSet, keep_states: bool) -> SimOptions {
+        SimOptions {
+            solver: self.solver.clone(),
+            t_eval: Some(self.t_eval.clone()),
+            keep_states,
+            // Recordings are replayed whole: cut-offs do not end them.
+            cutoffs: (0.0, 100.0),
+            capacity: p.cell.nominal_capacity,
+        }
+    }
+
+    fn run(&self, x: &[f64], sensitivities: bool) -> Result<Simulated, Error> {
+        let p = self.parameters_at(x)?;
+        let mut worker = self.pool.lock().expect("builder pool").pop().unwrap_or_else(|| Worker {
+            builders: (0..=self.dim()).map(|_| self.spec.builder()).collect(),
+            sensitivity_workspace: None,
+        });
+        let result = if sensitivities { self.run_sensitivities(&mut worker, x, &p) } else { self.run_plain(&mut worker, &p) };
+        self.pool.lock().expect("builder pool").push(worker);
+        result
+    }
+
+    fn run_plain(&self, worker: &mut Worker, p: &ParameterSet) -> Result<Simulated, Error> {
+        let built = worker.builders[0].build(p)?;
+        let sol = simulate(built.model.as_ref(), &mut built.workspace, &self.protocol, &self.options(p, false), None)?;
+        let voltage = self.at_points(&sol.time, &sol.voltage)?;
+        Ok(Simulated { voltage, sensitivity: Vec::new() })
+    }
+
+    fn run_sensitivities(&self, worker: &mut Worker, x: &[f64], p: &ParameterSet) -> Result<Simulated, Error> {
+        let scales: Vec<f64> = x.iter().map(|v| if *v != 0.0 { v.abs() } else { 1.0 }).collect();
+        let steps: Vec<f64> = scales.iter().map(|s| PARAMETER_STEP * s).collect();
+        let (first, rest) = worker.builders.split_at_mut(1);
+        let base = first[0].build(p)?;
+        let mut perturbed: Vec<&dyn Model> = Vec::with_capacity(rest.len());
+        for (k, b) in rest.iter_mut().enumerate() {
+            let mut q = p.clone();
+            q.set(&self.parameters[k].path, x[k] + steps[k])?;
+            perturbed.push(b.build(&q)?.model.as_ref());
+        }
+        let model = Sensitivities::new(base.model.as_ref(), perturbed, scales.clone(), steps);
+        let ws = match &mut worker.sensitivity_workspace {
+            Some(ws) => ws,
+            slot => slot.insert(Workspace::new(model.len(), model.jacobian_pattern())?),
+        };
+        let sol = simulate(&model, ws, &self.protocol, &self.options(p, true), Some(model.initial_state()))?;
+        let voltage = self.at_points(&sol.time, &sol.voltage)?;
+        let rows: Vec<Vec<f64>> = sol
+            .states
+            .iter()
+            .zip(&sol.current)
+            .map(|(z, &i)| model.voltage_sensitivities(z, i).iter().zip(&scales).map(|(d, s)| d / s).collect())
+            .collect();
+        let sensitivity = self.output_of_point.iter().map(|&k| rows[k].clone()).collect();
+        Ok(Simulated { voltage, sensitivity })
+    }
+
+    /// Maps outputs at the distinct times onto the recorded points.
+    fn at_points(&self, time: &[f64], values: &[f64]) -> Result<Vec<f64>, Error> {
+        if time.len() != self.t_eval.len() {
+            return Err(Error::Solver {
+                t: time.last().copied().unwrap_or(0.0),
+                reason: format!("simulation stopped after {} of {} recorded times", time.len(), self.t_eval.len()),
+            });
+        }
+        Ok(self.output_of_point.iter().map(|&k| values[k]).collect())
+    }
+
+    /// Residuals `V_model - V_data` (V) at every recorded point.
+    pub fn residuals(&self, voltage: &[f64]) -> Vec<f64> {
+        voltage.iter().zip(&self.data.voltage).map(|(m, d)| m - d).collect()
+    }
+
+    /// Model builds so far, over all pooled builders (the perturbed copies included).
+    pub fn rebuild_count(&self) -> usize {
+        self.pool.lock().expect("builder pool").iter().flat_map(|w| &w.builders).map(|b| b.rebuild_count()).sum()
+    }
+}
