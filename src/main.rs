@@ -15,6 +15,7 @@ use cellstudio::simulation::{SimOptions, simulate};
 use cellstudio::Error;
 use cellstudio::study::Study;
 use cellstudio::study::design::run_design;
+use cellstudio::study::fit::{FitStudy, parameter_table, run_fit};
 use cellstudio::study::pareto::run_pareto;
 use cellstudio::study::sweep::run_sweep;
 
@@ -70,6 +71,14 @@ enum Command {
         /// Study file with two or more objectives, e.g. designs/energy_vs_power_chen2020.toml.
         study: PathBuf,
     },
+    /// Fit model parameters to a recording: optimise, report standard errors and plots.
+    Fit {
+        /// Fitting study file, e.g. fits/spm_contact_resistance.toml.
+        study: PathBuf,
+        /// Recording CSV (overrides the study's `data.file`).
+        #[arg(long)]
+        data: Option<PathBuf>,
+    },
     /// Evaluate a study's grid sweep (in parallel) and write CSV, JSON and density plots.
     Sweep {
         /// Study file, e.g. designs/gravimetric_chen2020.toml.
@@ -106,6 +115,26 @@ fn run(cli: Cli) -> Result<(), Error> {
                 out.result.stop, out.result.iterations, out.result.evaluations, out.rebuilds, out.seconds, out.result.evaluations as f64 / out.seconds);
             for f in &out.files {
                 println!("wrote            {}", f.display());
+            }
+            Ok(())
+        }
+        Command::Fit { study, data } => {
+            let study = FitStudy::from_file(&study)?;
+            let out = run_fit(&study, data.as_deref())?;
+            let r = &out.result;
+            println!("{}", study.name);
+            println!(
+                "RMSE {:.3} mV (initial {:.3} mV); {} evaluations, {} gradients, {:.2} s; stop: {:?}",
+                r.rmse * 1e3,
+                out.initial_rmse * 1e3,
+                r.evaluations,
+                r.gradient_evaluations,
+                r.seconds,
+                r.stop
+            );
+            println!("{}", parameter_table(r));
+            for f in &out.files {
+                println!("wrote {}", f.display());
             }
             Ok(())
         }

@@ -65,7 +65,9 @@ pub fn line_plot(path: &Path, title: &str, x_label: &str, y_label: &str, series:
 }
 
 /// A heat map of `z[i][j]` over the grid `x[i]`, `y[j]` (NaN cells are left blank), with the
-/// point `mark` (e.g. the baseline design) drawn as a cross.
+/// point `mark` (e.g. the baseline design) drawn as a cross and an optional `trace` (e.g. an
+/// optimiser's path) drawn as a white line with dots.
+#[allow(clippy::too_many_arguments)]
 pub fn heat_map(
     path: &Path,
     title: &str,
@@ -73,7 +75,8 @@ pub fn heat_map(
     x: &[f64],
     y: &[f64],
     z: &[Vec<f64>],
-    mark: Option<(f64, f64)>,
+    mark: Option<(String, (f64, f64))>,
+    trace: &[(f64, f64)],
 ) -> Result<(), Error> {
     let err = |e: String| Error::Plot { path: path.display().to_string(), message: e };
     let root = SVGBackend::new(path, (900, 700)).into_drawing_area();
@@ -100,12 +103,25 @@ pub fn heat_map(
         })
     });
     chart.draw_series(cells).map_err(|e| err(e.to_string()))?;
-    if let Some((mx, my)) = mark {
+    if !trace.is_empty() {
         chart
-            .draw_series(std::iter::once(Cross::new((mx, my), 8, BLACK.stroke_width(3))))
+            .draw_series(LineSeries::new(trace.iter().copied(), WHITE.stroke_width(2)))
             .map_err(|e| err(e.to_string()))?
-            .label("baseline")
-            .legend(|(x, y)| Cross::new((x, y), 6, BLACK.stroke_width(2)));
+            .label("optimiser trace")
+            .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], BLACK.stroke_width(2)));
+        chart
+            .draw_series(trace.iter().map(|&p| Circle::new(p, 3, WHITE.filled())))
+            .map_err(|e| err(e.to_string()))?;
+    }
+    let legend = mark.is_some() || !trace.is_empty();
+    if let Some((label, (mx, my))) = mark {
+        chart
+            .draw_series(std::iter::once(Cross::new((mx, my), 8, RED.stroke_width(3))))
+            .map_err(|e| err(e.to_string()))?
+            .label(label)
+            .legend(|(x, y)| Cross::new((x, y), 6, RED.stroke_width(2)));
+    }
+    if legend {
         chart.configure_series_labels().background_style(WHITE.mix(0.8)).border_style(BLACK).draw().map_err(|e| err(e.to_string()))?;
     }
     root.titled(&format!("range {zmin:.4} .. {zmax:.4}"), ("sans-serif", 14)).map_err(|e| err(e.to_string()))?;

@@ -2,6 +2,7 @@
 //! objectives, optimiser and outputs. Unknown keys are errors naming the key and line.
 
 pub mod design;
+pub mod fit;
 pub mod pareto;
 pub mod sweep;
 
@@ -46,6 +47,16 @@ pub struct Study {
 pub struct CellChoice {
     /// `chen2020` (embedded) or a path to a parameter-set TOML file.
     pub parameter_set: String,
+}
+
+impl CellChoice {
+    /// The parameter set: embedded Chen 2020 or a TOML file.
+    pub fn load(&self) -> Result<ParameterSet, Error> {
+        match self.parameter_set.as_str() {
+            "chen2020" => Ok(chen2020()),
+            path => ParameterSet::from_toml_file(Path::new(path)),
+        }
+    }
 }
 
 impl Default for CellChoice {
@@ -269,10 +280,7 @@ impl Study {
 
     /// The base parameter set, with the operating temperature and cut-offs applied.
     pub fn base_parameters(&self) -> Result<ParameterSet, Error> {
-        let mut p = match self.cell.parameter_set.as_str() {
-            "chen2020" => chen2020(),
-            path => ParameterSet::from_toml_file(Path::new(path))?,
-        };
+        let mut p = self.cell.load()?;
         let op = &self.operating;
         if let Some(t) = op.temperature {
             p.thermal.ambient_temperature = t;

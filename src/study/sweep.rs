@@ -100,7 +100,7 @@ pub fn run_sweep(study: &Study) -> Result<SweepOutcome, Error> {
                 let x: Vec<f64> = (0..n0).map(|i| points[i * n1].x[0]).collect();
                 let y: Vec<f64> = (0..n1).map(|j| points[j].x[1]).collect();
                 let z: Vec<Vec<f64>> = (0..n0).map(|i| (0..n1).map(|j| value(&points[i * n1 + j], grav)).collect()).collect();
-                heat_map(&path, &title, (names[0], names[1]), &x, &y, &z, Some((baseline_x[0], baseline_x[1])))?;
+                heat_map(&path, &title, (names[0], names[1]), &x, &y, &z, Some(("baseline".into(), (baseline_x[0], baseline_x[1]))), &[])?;
             }
             _ => {
                 // Scattered samples: density against the first variable.

@@ -1,0 +1,289 @@
+//! Fitting study files (TOML): cell, model, recording (with its CSV format), parameters to
+//! identify, cost, optimiser, optional sampler and cost landscape; and the fit run with its
+//! report (Markdown + JSON), fit/residual plots and the cost landscape with the optimiser trace.
+
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+use rand::SeedableRng;
+use rand_distr::{Distribution, Normal};
+use rayon::prelude::*;
+use serde::{Deserialize, Serialize};
+
+use super::{CellChoice, Output};
+use crate::cost::CostKind;
+use crate::data::{CsvFormat, Recording};
+use crate::error::Error;
+use crate::optim::OptimOptions;
+use crate::problem::fit::{FitObjective, FitResult, fit};
+use crate::problem::fitting::{FitParameter, FittingProblem, ModelSpec};
+use crate::report::plot::{Series, heat_map, line_plot};
+
+/// A fitting study as written in `fits/*.toml`.
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct FitStudy {
+    /// Title used in reports.
+    pub name: String,
+    #[serde(default)]
+    pub cell: CellChoice,
+    pub model: ModelSpec,
+    pub data: DataChoice,
+    pub parameters: Vec<FitParameter>,
+    #[serde(default)]
+    pub cost: CostKind,
+    /// `method` (default `lbfgsb`) plus [`OptimOptions`] keys.
+    #[serde(default)]
+    pub optimiser: toml::Table,
+    /// `method` plus the sampler's options; used by `sample`.
+    #[serde(default)]
+    pub sampler: toml::Table,
+    /// Cost landscape over the first two parameters.
+    #[serde(default)]
+    pub landscape: Option<Landscape>,
+    #[serde(default)]
+    pub output: Output,
+}
+
+/// The recording to fit.
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct DataChoice {
+    /// CSV file, relative to the working directory (the CLI's `--data` overrides it).
+    pub file: PathBuf,
+    #[serde(default)]
+    pub format: CsvFormat,
+    /// For synthetic studies only: Gaussian noise (V) added to the recorded voltage, seeded by
+    /// `noise_seed`.
+    #[serde(default)]
+    pub synthetic_noise: f64,
+    #[serde(default)]
+    pub noise_seed: u64,
+}
+
+/// A grid of the cost over the first two parameters (log-spaced for log parameters).
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct Landscape {
+    /// Grid points per parameter.
+    pub points: usize,
+}
+
+impl FitStudy {
+    /// Reads and checks a study file.
+    pub fn from_file(path: &Path) -> Result<Self, Error> {
+        let text = std::fs::read_to_string(path).map_err(|source| Error::Io { path: path.display().to_string(), source })?;
+        let study: FitStudy =
+            toml::from_str(&text).map_err(|e| Error::Parse { path: path.display().to_string(), message: e.to_string() })?;
+        study.cost.validate()?;
+        if study.parameters.is_empty() {
+            return Err(Error::InvalidSetting { field: "parameters".into(), reason: "at least one is needed".into() });
+        }
+        if let Some(l) = &study.landscape {
+            if l.points < 2 || l.points > 200 {
+                return Err(Error::invalid("landscape.points", l.points as f64, "must lie in 2..=200"));
+            }
+        }
+        if !(study.data.synthetic_noise >= 0.0 && study.data.synthetic_noise.is_finite()) {
+            return Err(Error::invalid("data.synthetic_noise", study.data.synthetic_noise, "must be non-negative"));
+        }
+        Ok(study)
+    }
+
+    /// The optimiser's name and options.
+    pub fn optimiser(&self) -> Result<(String, OptimOptions), Error> {
+        let mut table = self.optimiser.clone();
+        let method = table.remove("method").and_then(|v| v.as_str().map(str::to_string)).unwrap_or_else(|| "lbfgsb".into());
+        let options: OptimOptions = table
+            .try_into()
+            .map_err(|e: toml::de::Error| Error::InvalidSetting { field: "optimiser".into(), reason: e.to_string() })?;
+        options.validate()?;
+        Ok((method, options))
+    }
+
+    /// Reads the recording (from `data`, or the study's file), adding synthetic noise if set.
+    pub fn recording(&self, data: Option<&Path>) -> Result<Recording, Error> {
+        let mut rec = Recording::from_csv_with(data.unwrap_or(&self.data.file), &self.data.format)?;
+        if self.data.synthetic_noise > 0.0 {
+            let mut rng = rand::rngs::StdRng::seed_from_u64(self.data.noise_seed);
+            let noise = Normal::new(0.0, self.data.synthetic_noise).expect("checked non-negative");
+            for v in &mut rec.voltage {
+                *v += noise.sample(&mut rng);
+            }
+        }
+        Ok(rec)
+    }
+
+    /// The fitting problem of the study.
+    pub fn problem(&self, data: Option<&Path>) -> Result<FittingProblem, Error> {
+        FittingProblem::new(self.model, self.cell.load()?, self.parameters.clone(), self.recording(data)?)
+    }
+}
+
+/// What a fit produced.
+pub struct FitOutcome {
+    pub result: FitResult,
+    /// RMS residual at the initial parameters (V).
+    pub initial_rmse: f64,
+    pub files: Vec<PathBuf>,
+}
+
+/// Fits the study's problem, then writes `report.md`, `fit.json`, `fit_voltage.svg`,
+/// `fit_residual.svg` and (with `[landscape]`) `landscape.svg`.
+pub fn run_fit(study: &FitStudy, data: Option<&Path>) -> Result<FitOutcome, Error> {
+    let problem = study.problem(data)?;
+    let (method, options) = study.optimiser()?;
+    let initial_voltage = problem.simulate(&problem.initial())?;
+    let initial_rmse = rms(&problem.residuals(&initial_voltage), &problem.weights);
+    let result = fit(&problem, study.cost, &method, options)?;
+    let dir = &study.output.dir;
+    std::fs::create_dir_all(dir).map_err(|source| Error::Io { path: dir.display().to_string(), source })?;
+    let mut files = Vec::new();
+    let write = |name: &str, text: String, files: &mut Vec<PathBuf>| -> Result<(), Error> {
+        let path = dir.join(name);
+        std::fs::write(&path, text).map_err(|source| Error::Io { path: path.display().to_string(), source })?;
+        files.push(path);
+        Ok(())
+    };
+    let t = &problem.data.time;
+    let path = dir.join("fit_voltage.svg");
+    line_plot(
+        &path,
+        &format!("{}: voltage", study.name),
+        "time (s)",
+        "voltage (V)",
+        &[
+            Series { label: "data".into(), x: t, y: &problem.data.voltage },
+            Series { label: "initial".into(), x: t, y: &initial_voltage },
+            Series { label: "fitted".into(), x: t, y: &result.voltage },
+        ],
+    )?;
+    files.push(path);
+    let mv = |v: &[f64]| problem.residuals(v).iter().map(|r| 1e3 * r).collect::<Vec<_>>();
+    let (r0, r1) = (mv(&initial_voltage), mv(&result.voltage));
+    let path = dir.join("fit_residual.svg");
+    line_plot(
+        &path,
+        &format!("{}: residual (model - data)", study.name),
+        "time (s)",
+        "residual (mV)",
+        &[Series { label: "initial".into(), x: t, y: &r0 }, Series { label: "fitted".into(), x: t, y: &r1 }],
+    )?;
+    files.push(path);
+    if let (Some(l), true) = (&study.landscape, problem.dim() >= 2) {
+        let path = dir.join("landscape.svg");
+        landscape(&problem, study.cost, &result, l.points, &path)?;
+        files.push(path);
+    }
+    write("fit.json", serde_json::to_string_pretty(&result).expect("serialisable"), &mut files)?;
+    write("report.md", report(study, &problem, &result, initial_rmse), &mut files)?;
+    Ok(FitOutcome { result, initial_rmse, files })
+}
+
+fn rms(r: &[f64], w: &[f64]) -> f64 {
+    let weight: f64 = w.iter().sum();
+    (r.iter().zip(w).map(|(r, w)| w * r * r).sum::<f64>() / weight).sqrt()
+}
+
+/// The cost on a grid over the first two parameters (other parameters at the optimum), drawn
+/// as log10(cost - min + 1e-12 scale) with the optimiser's trace.
+fn landscape(problem: &FittingProblem, cost: CostKind, result: &FitResult, points: usize, path: &Path) -> Result<(), Error> {
+    let objective = FitObjective { problem, cost };
+    let axis = |k: usize| -> Vec<f64> {
+        let p = &problem.parameters[k];
+        (0..points)
+            .map(|i| {
+                let u = i as f64 / (points - 1) as f64;
+                if p.log { (p.lower.ln() + u * (p.upper / p.lower).ln()).exp() } else { p.lower + u * (p.upper - p.lower) }
+            })
+            .collect()
+    };
+    let (xs, ys) = (axis(0), axis(1));
+    let cells: Vec<(usize, usize)> = (0..points).flat_map(|i| (0..points).map(move |j| (i, j))).collect();
+    let values: Vec<f64> = cells
+        .par_iter()
+        .map(|&(i, j)| {
+            let mut x = result.x.clone();
+            x[0] = xs[i];
+            x[1] = ys[j];
+            use crate::optim::Objective;
+            objective.evaluate(&x)
+        })
+        .collect();
+    let shown = |k: usize, v: f64| if problem.parameters[k].log { v.log10() } else { v };
+    let fmin = values.iter().copied().filter(|v| v.is_finite()).fold(f64::INFINITY, f64::min).min(result.cost);
+    let spread = values.iter().copied().filter(|v| v.is_finite()).fold(0.0f64, |m, v| m.max(v - fmin));
+    let mut z = vec![vec![f64::NAN; points]; points];
+    for (&(i, j), v) in cells.iter().zip(&values) {
+        z[i][j] = (v - fmin + 1e-9 * spread.max(1e-300)).log10();
+    }
+    let label = |k: usize| {
+        let p = &problem.parameters[k];
+        if p.log { format!("log10 {}", p.path) } else { p.path.clone() }
+    };
+    let start = problem.initial();
+    let trace: Vec<(f64, f64)> = std::iter::once(&start[..])
+        .chain(result.trace.iter().map(|e| &e.best_x[..]))
+        .map(|x| (shown(0, x[0]), shown(1, x[1])))
+        .collect();
+    heat_map(
+        path,
+        &format!("cost landscape: log10({} - min)", cost.name()),
+        (&label(0), &label(1)),
+        &xs.iter().map(|&v| shown(0, v)).collect::<Vec<_>>(),
+        &ys.iter().map(|&v| shown(1, v)).collect::<Vec<_>>(),
+        &z,
+        Some(("optimum".into(), (shown(0, result.x[0]), shown(1, result.x[1])))),
+        &trace,
+    )
+}
+
+fn report(study: &FitStudy, problem: &FittingProblem, r: &FitResult, initial_rmse: f64) -> String {
+    let mut s = String::new();
+    let _ = writeln!(s, "# {}\n", study.name);
+    let _ = writeln!(
+        s,
+        "Fitted {} parameter(s) of the {} model to {} recorded points by {} with the {} optimiser: \
+         RMSE {:.3} mV (initial {:.3} mV), {} evaluations and {} gradients in {:.2} s, stop: {:?}.\n",
+        problem.dim(),
+        problem.spec.kind,
+        problem.weights.iter().filter(|w| **w > 0.0).count(),
+        study.cost.name(),
+        study.optimiser().map(|o| o.0).unwrap_or_default(),
+        r.rmse * 1e3,
+        initial_rmse * 1e3,
+        r.evaluations,
+        r.gradient_evaluations,
+        r.seconds,
+        r.stop
+    );
+    s.push_str(&parameter_table(r));
+    s
+}
+
+/// Markdown table of fitted values, standard errors and correlations.
+pub fn parameter_table(r: &FitResult) -> String {
+    let mut s = String::from("| parameter | value | std. error | rel. error |\n|---|---|---|---|\n");
+    for (k, name) in r.names.iter().enumerate() {
+        let (v, e) = (r.x[k], r.std_errors.get(k).copied().unwrap_or(f64::NAN));
+        let _ = writeln!(s, "| {name} | {v:.5e} | {e:.3e} | {:.2}% |", 100.0 * e / v.abs());
+    }
+    if r.correlation.len() > 1 {
+        s.push_str("\nCorrelation matrix:\n\n|   |");
+        let p = r.correlation.len();
+        for name in &r.names[..p] {
+            let _ = write!(s, " {name} |");
+        }
+        s.push_str("\n|---|");
+        s.push_str(&"---|".repeat(p));
+        s.push('\n');
+        for (a, row) in r.correlation.iter().enumerate() {
+            let _ = write!(s, "| {} |", r.names[a]);
+            for c in row {
+                let _ = write!(s, " {c:+.3} |");
+            }
+            s.push('\n');
+        }
+    }
+    s
+}
