@@ -5,7 +5,7 @@ use thiserror::Error;
 #[derive(Debug, Error)]
 pub enum Error {
     /// A parameter is outside its physical range.
-    #[error("invalid parameter `{field}` = {value}: {reason}")]
+    #[error("invalid parameter `{field}` = {}: {reason}", number(*value))]
     InvalidParameter { field: String, value: f64, reason: String },
     /// A configuration value (not a number) is not acceptable.
     #[error("invalid setting `{field}`: {reason}")]
@@ -25,6 +25,11 @@ pub enum Error {
     /// A plot could not be drawn.
     #[error("plot {path}: {message}")]
     Plot { path: String, message: String },
+}
+
+/// A number as people write it: plain between 1e-3 and 1e6, scientific otherwise.
+pub fn number(v: f64) -> String {
+    if v == 0.0 || !v.is_finite() || (1e-3..1e6).contains(&v.abs()) { format!("{v}") } else { format!("{v:e}") }
 }
 
 impl Error {

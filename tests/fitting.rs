@@ -102,3 +102,75 @@ fn seed_case_recovers_diffusivity_and_contact_resistance() {
         }
     }
 }
+
+/// The MAP cost's gradient (sensitivities + prior) matches central differences of the cost.
+#[test]
+fn cost_gradient_matches_finite_differences() {
+    use cellstudio::cost::{CostKind, Prior};
+    use cellstudio::problem::fit::FitObjective;
+    let mut problem = seed_problem(seed_recording(0.002, 5));
+    problem.parameters[0].prior = Prior::LogNormal { mu: (3e-14f64).ln(), sigma: 0.5 };
+    problem.parameters[1].prior = Prior::Gaussian { mean: 0.012, sd: 0.003 };
+    let mut fine = seed_problem(seed_recording(0.002, 5));
+    fine.parameters = problem.parameters.clone();
+    fine.solver.rtol = 1e-10;
+    fine.solver.atol = 1e-10;
+    let cost = CostKind::Map { sigma: Some(0.002) };
+    let x = [4.0e-14, 0.008];
+    let (_, g) = FitObjective { problem: &problem, cost }.value_and_gradient(&x).unwrap();
+    let exact = FitObjective { problem: &fine, cost };
+    use cellstudio::optim::Objective;
+    for k in 0..2 {
+        let h = 1e-4 * x[k];
+        let (mut xp, mut xm) = (x, x);
+        xp[k] += h;
+        xm[k] -= h;
+        let fd = (exact.evaluate(&xp) - exact.evaluate(&xm)) / (2.0 * h);
+        println!("d cost / d x{k}: sensitivities {:.6e}, differences {fd:.6e}", g[k]);
+        assert!((g[k] - fd).abs() < 1e-3 * fd.abs(), "parameter {k}");
+    }
+}
+
+#[test]
+fn bad_fit_parameters_are_named() {
+    let rec = seed_recording(0.0, 1);
+    let spec = ModelSpec::new(ModelKind::Spm, Submodels::default());
+    let bad = |p: FitParameter| FittingProblem::new(spec, chen2020(), vec![p], rec.clone()).err().unwrap().to_string();
+    let e = bad(FitParameter::log("negative.diffusivity", 1e-11, 1e-15, 1e-12));
+    assert!(e.contains("parameters.negative.diffusivity.initial") && e.contains("1e-11"), "{e}");
+    let e = bad(FitParameter::log("negative.diffusivty", 1e-14, 1e-15, 1e-12));
+    assert!(e.contains("negative.diffusivty"), "{e}");
+    let e = bad(FitParameter::log("cell.contact_resistance", 0.01, -1.0, 0.1));
+    assert!(e.contains("parameters.cell.contact_resistance.lower") && e.contains("positive"), "{e}");
+    let e = bad(FitParameter::linear("cell.contact_resistance", 0.01, 0.1, 0.0));
+    assert!(e.contains("upper"), "{e}");
+}
+
+/// Column mapping, milliamps and a cycler that logs discharge as negative current.
+#[test]
+fn csv_format_maps_columns_units_and_sign() {
+    use cellstudio::data::CsvFormat;
+    let dir = std::env::temp_dir().join(format!("cellstudio_fmt_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("cycler.csv");
+    std::fs::write(&path, "Test_Time(min),Current(mA),Voltage(V),T(C)\n0,-5000,4.0,25\n1,-5000,3.9,26\n").unwrap();
+    let format: CsvFormat = toml::from_str(
+        "time = \"Test_Time(min)\"\ncurrent = \"Current(mA)\"\nvoltage = \"Voltage(V)\"\ntemperature = \"T(C)\"\n\
+         time_unit = \"min\"\ncurrent_unit = \"mA\"\ntemperature_unit = \"degC\"\ndischarge_positive = false",
+    )
+    .unwrap();
+    let rec = Recording::from_csv_with(&path, &format).unwrap();
+    assert_eq!(rec.time, vec![0.0, 60.0]);
+    assert_eq!(rec.current, vec![5.0, 5.0]);
+    assert_eq!(rec.temperature.unwrap(), vec![298.15, 299.15]);
+    // Millivolts read as volts, an empty file, a missing column.
+    std::fs::write(&path, "time_s,current_A,voltage_V\n0,5,4012\n1,5,4011\n").unwrap();
+    let e = Recording::from_csv(&path).unwrap_err().to_string();
+    assert!(e.contains("line 2") && e.contains("4012") && e.contains("voltage_unit"), "{e}");
+    std::fs::write(&path, "time_s,current_A,voltage_V\n").unwrap();
+    let e = Recording::from_csv(&path).unwrap_err().to_string();
+    assert!(e.contains("at least 2 data rows, found 0"), "{e}");
+    let e = Recording::from_csv_with(&path, &format).unwrap_err().to_string();
+    assert!(e.contains("missing column `Test_Time(min)`"), "{e}");
+    std::fs::remove_dir_all(&dir).ok();
+}
