@@ -39,7 +39,7 @@ enum Command {
         /// Protocol TOML file (overrides --c-rate), e.g. protocols/pulse_1C.toml.
         #[arg(long)]
         protocol: Option<PathBuf>,
-        /// Parameter-set TOML file (default: embedded Chen 2020).
+        /// Parameter-set file: TOML, JSON or BPX JSON (default: embedded Chen 2020).
         #[arg(long)]
         params: Option<PathBuf>,
         /// Switch on the contact-resistance submodel with this resistance (ohm).
@@ -174,7 +174,7 @@ fn run(cli: Cli) -> Result<(), Error> {
         }
         Command::Simulate { model, c_rate, protocol, params, contact_resistance, thermal, mesh, out, repeat, json } => {
             let mut p: ParameterSet = match &params {
-                Some(path) => ParameterSet::from_toml_file(path)?,
+                Some(path) => ParameterSet::from_file(path)?,
                 None => chen2020(),
             };
             if let Some(r) = contact_resistance {

@@ -6,6 +6,7 @@ mod chen2020;
 pub mod bpx;
 pub mod function;
 pub mod mass;
+mod load;
 mod set;
 
 pub use chen2020::chen2020;

@@ -54,7 +54,7 @@ impl CellChoice {
     pub fn load(&self) -> Result<ParameterSet, Error> {
         match self.parameter_set.as_str() {
             "chen2020" => Ok(chen2020()),
-            path => ParameterSet::from_toml_file(Path::new(path)),
+            path => ParameterSet::from_file(Path::new(path)),
         }
     }
 }
