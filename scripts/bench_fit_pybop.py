@@ -13,7 +13,9 @@ Environment (PyBOP 25.11 on the pinned PyBaMM 26.10.1.1 of scripts/requirements.
 
 cellstudio: the release binary, by default $CARGO_TARGET_DIR/release/cellstudio, else
 /work/target-shared/release/cellstudio, else target/release/cellstudio (``--bin`` overrides);
-build it first with ``cargo build --release``.
+build it first with ``cargo build --release``.  With a target dir shared by several checkouts
+the binary can be replaced mid-run by another checkout's build: copy it and pass ``--bin``
+(scripts/bench_fit_pybop_latest.md was made that way).
 
 The case
 --------
