@@ -16,6 +16,7 @@ use cellstudio::Error;
 use cellstudio::study::Study;
 use cellstudio::study::design::run_design;
 use cellstudio::study::fit::{FitStudy, parameter_table, run_fit};
+use cellstudio::study::sample::run_sample;
 use cellstudio::study::pareto::run_pareto;
 use cellstudio::study::sweep::run_sweep;
 
@@ -79,6 +80,14 @@ enum Command {
         #[arg(long)]
         data: Option<PathBuf>,
     },
+    /// Sample the posterior of a fitting study's parameters (fit first, then MCMC).
+    Sample {
+        /// Fitting study file with a `[sampler]` table, e.g. fits/spm_contact_resistance.toml.
+        study: PathBuf,
+        /// Recording CSV (overrides the study's `data.file`).
+        #[arg(long)]
+        data: Option<PathBuf>,
+    },
     /// Evaluate a study's grid sweep (in parallel) and write CSV, JSON and density plots.
     Sweep {
         /// Study file, e.g. designs/gravimetric_chen2020.toml.
@@ -133,6 +142,16 @@ fn run(cli: Cli) -> Result<(), Error> {
                 r.stop
             );
             println!("{}", parameter_table(r));
+            for f in &out.files {
+                println!("wrote {}", f.display());
+            }
+            Ok(())
+        }
+        Command::Sample { study, data } => {
+            let study = FitStudy::from_file(&study)?;
+            let out = run_sample(&study, data.as_deref())?;
+            println!("{}: {} draws per chain in {:.1} s", study.name, out.result.options.iterations, out.seconds);
+            println!("{}", out.summary.table());
             for f in &out.files {
                 println!("wrote {}", f.display());
             }

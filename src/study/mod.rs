@@ -3,6 +3,7 @@
 
 pub mod design;
 pub mod fit;
+pub mod sample;
 pub mod pareto;
 pub mod sweep;
 
