@@ -7,8 +7,10 @@ pub mod bpx;
 pub mod function;
 pub mod mass;
 mod set;
+pub mod soc;
 
 pub use chen2020::chen2020;
 pub use function::Function1D;
 pub use mass::CellBudget;
+pub use soc::{StoichiometryWindow, set_initial_soc, stoichiometry_window};
 pub use set::{Cell, Electrode, Electrolyte, FARADAY, GAS_CONSTANT, ParameterSet, Separator, Thermal};
