@@ -296,3 +296,20 @@ mod fit {
         assert!(rebuilds <= rayon::current_num_threads() + 1, "{rebuilds} builds");
     }
 }
+
+#[test]
+fn a_state_away_from_rest_is_refused() {
+    use cellstudio::geometry::{MeshSizes, ModelBuilder};
+    use cellstudio::models::{ModelKind, Submodels};
+    let mut p = chen2020();
+    p.thermal.initial_temperature = p.thermal.ambient_temperature + 10.0;
+    let mut b = ModelBuilder::new(ModelKind::Spm, Submodels { thermal: true, ..Default::default() }, MeshSizes::default());
+    let built = b.build(&p).unwrap();
+    let err = cellstudio::eis::rest_state(built.model.as_ref(), &mut built.workspace).unwrap_err().to_string();
+    assert!(err.contains("not at rest"), "{err}");
+    // At the ambient temperature the thermal model is at rest and has an impedance.
+    p.thermal.initial_temperature = p.thermal.ambient_temperature;
+    let built = b.build(&p).unwrap();
+    let z = cellstudio::eis::model_impedance(built.model.as_ref(), &mut built.workspace, &[1e-3, 1.0]).unwrap();
+    assert!(z.z_re.iter().all(|&r| r > 0.0));
+}
