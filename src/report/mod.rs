@@ -1,4 +1,5 @@
 //! Reports: plots (SVG via plotters) and summaries.
 
+pub mod nyquist;
 pub mod plot;
 pub mod mcmc_plot;
