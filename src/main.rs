@@ -184,7 +184,7 @@ fn run(cli: Cli) -> Result<(), Error> {
                 Some(path) => read_toml::<Protocol>(path)?,
                 None => Protocol::discharge(c_rate),
             };
-            let submodels = Submodels { contact_resistance: contact_resistance.is_some(), thermal };
+            let submodels = Submodels { contact_resistance: contact_resistance.is_some(), thermal, ..Default::default() };
             let sizes = MeshSizes { x_n: mesh, x_s: mesh, x_p: mesh, r_n: mesh, r_p: mesh };
             let mut builder = ModelBuilder::new(model, submodels, sizes);
             let t_build = Instant::now();
