@@ -1,3 +1,4 @@
 //! Reports: plots (SVG via plotters) and summaries.
 
 pub mod plot;
+pub mod diagnosis_plot;
