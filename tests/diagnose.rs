@@ -48,6 +48,17 @@ fn recording(name: &str, kind: ModelKind, submodels: Submodels, params: Paramete
     Recording::from_csv(&path).unwrap()
 }
 
+/// Discharge and charge at 0.5C with rests, twice.
+fn cycles() -> Protocol {
+    let mut steps = Vec::new();
+    for _ in 0..2 {
+        steps.extend([current(2.5, 900.0), rest(600.0), current(-2.5, 900.0), rest(600.0)]);
+    }
+    Protocol { steps }
+}
+
+/// Diagnoses `rec` against the user's model `user` (Chen 2020, no submodels, nothing fitted)
+/// with the default settings, prints the outcome and writes the report.
 fn run(name: &str, rec: &Recording, user: ModelKind) -> Diagnosis {
     let t = std::time::Instant::now();
     let d = diagnose(rec, &chen2020(), &DiagnoseOptions::new(ModelSpec::new(user, Submodels::default()))).unwrap();
@@ -55,38 +66,119 @@ fn run(name: &str, rec: &Recording, user: ModelKind) -> Diagnosis {
     for c in &d.candidates {
         match &c.fit {
             Some(f) => println!(
-                "  {:32} screen {:.2} | rmse {:.2} -> {:.2} mV (hold-out {:.2} -> {:.2}) dBIC {:.1} clears {} | {:?} {:.1} s",
-                c.name, c.screen_score, d.baseline.rmse_all * 1e3, f.rmse_all * 1e3, d.baseline.rmse_holdout * 1e3, f.rmse_holdout * 1e3, c.delta_bic, c.clears_margins, f.values, f.seconds
+                "  {:30} screen {:.2} | RMSE {:.2} -> {:.2} mV, hold-out {:.2} -> {:.2} mV | ΔBIC {:8.1} | clears {} | {:.1} s",
+                c.name,
+                c.screen_score,
+                d.baseline.rmse_all * 1e3,
+                f.rmse_all * 1e3,
+                d.baseline.rmse_holdout * 1e3,
+                f.rmse_holdout * 1e3,
+                c.delta_bic,
+                c.clears_margins,
+                f.seconds
             ),
-            None => println!("  {:32} screen {:.2} | {}", c.name, c.screen_score, c.note.clone().unwrap_or_default()),
+            None => println!("  {:30} screen {:.2} | {}", c.name, c.screen_score, c.note.clone().unwrap_or_default()),
         }
     }
     let dir = std::env::temp_dir().join("cellstudio_diagnose_tests").join(name);
-    cellstudio::diagnose::report::write(&d, &dir).unwrap();
+    let files = cellstudio::diagnose::report::write(&d, &dir).unwrap();
+    assert!(files.iter().all(|f| f.exists()));
     d
 }
 
+/// The concealed effect must be named first, clear the margins, and cut the RMSE by 3x;
+/// returns the fitted values of its extra parameters by path.
+fn assert_found(d: &Diagnosis, expected: Candidate) -> Vec<(String, f64, f64)> {
+    assert!(d.residual.structured, "the residual should show structure");
+    assert!(d.found, "no missing physics found");
+    let best = d.best().unwrap();
+    assert_eq!(best.candidate, expected, "first-ranked: {}", best.name);
+    let f = best.fit.as_ref().unwrap();
+    let cut = d.baseline.rmse_all / f.rmse_all;
+    assert!(cut >= 3.0, "RMSE cut only {cut:.2}x");
+    assert!(d.baseline.rmse_holdout / f.rmse_holdout >= 3.0, "hold-out RMSE cut only {:.2}x", d.baseline.rmse_holdout / f.rmse_holdout);
+    f.names.iter().zip(&f.values).zip(&f.std_errors).map(|((n, v), e)| (n.clone(), *v, *e)).collect()
+}
+
+fn value(fitted: &[(String, f64, f64)], path: &str) -> f64 {
+    fitted.iter().find(|f| f.0 == path).unwrap().1
+}
+
+/// SPM + 12 mOhm contact resistance on discharge/charge pulses; the user has a plain SPM.
 #[test]
-fn explore() {
-    let sub = Submodels::default();
+fn concealed_contact_resistance_on_pulses() {
     let mut p = chen2020();
     p.cell.contact_resistance = 0.012;
-    let rec = recording("contact", ModelKind::Spm, Submodels { contact_resistance: true, ..sub }, p, pulses(), 0.0015, 1, false);
-    run("contact", &rec, ModelKind::Spm);
-    let rec = recording("electrolyte", ModelKind::Spme, sub, chen2020(), pulses(), 0.001, 2, false);
-    run("electrolyte", &rec, ModelKind::Spm);
+    let sub = Submodels { contact_resistance: true, ..Default::default() };
+    let rec = recording("contact", ModelKind::Spm, sub, p, pulses(), 0.0015, 1, false);
+    let d = run("contact", &rec, ModelKind::Spm);
+    let fitted = assert_found(&d, Candidate::SeriesResistance);
+    assert!((value(&fitted, "cell.contact_resistance") / 0.012 - 1.0).abs() < 0.02);
+}
+
+/// DFN data (electrolyte transport with rests) handed to a plain SPM.
+#[test]
+fn concealed_electrolyte_transport_dfn_data_spm_model() {
+    let rec = recording("electrolyte", ModelKind::Dfn, Submodels::default(), chen2020(), pulses(), 0.001, 2, false);
+    let d = run("electrolyte", &rec, ModelKind::Spm);
+    assert_found(&d, Candidate::Electrolyte);
+}
+
+/// SPM + 8 mOhm / 2000 F series RC element (16 s time constant) on pulses.
+#[test]
+fn concealed_rc_dynamics_on_pulses() {
     let mut p = chen2020();
     p.cell.rc_resistance = 0.008;
     p.cell.rc_capacitance = 2000.0;
-    let rec = recording("rc", ModelKind::Spm, Submodels { rc: true, ..sub }, p, pulses(), 0.001, 3, false);
-    run("rc", &rec, ModelKind::Spm);
-    let rec = recording("thermal", ModelKind::Spm, Submodels { thermal: true, ..sub }, chen2020(), constant_current(10.0, 20.0), 0.001, 4, true);
-    run("thermal", &rec, ModelKind::Spm);
+    let rec = recording("rc", ModelKind::Spm, Submodels { rc: true, ..Default::default() }, p, pulses(), 0.001, 3, false);
+    let d = run("rc", &rec, ModelKind::Spm);
+    let fitted = assert_found(&d, Candidate::RcDynamics);
+    assert!((value(&fitted, "cell.rc_resistance") / 0.008 - 1.0).abs() < 0.03);
+    assert!((value(&fitted, "cell.rc_capacitance") / 2000.0 - 1.0).abs() < 0.05);
+}
+
+/// SPM + lumped thermal (self-heating at 2C, temperature recorded) handed to an isothermal SPM.
+#[test]
+fn concealed_self_heating_on_constant_current() {
+    let rec = recording("thermal", ModelKind::Spm, Submodels { thermal: true, ..Default::default() }, chen2020(), constant_current(10.0, 20.0), 0.001, 4, true);
+    let d = run("thermal", &rec, ModelKind::Spm);
+    let fitted = assert_found(&d, Candidate::Thermal);
+    let h = chen2020().thermal.heat_transfer_coefficient;
+    assert!((value(&fitted, "thermal.heat_transfer_coefficient") / h - 1.0).abs() < 0.05);
+}
+
+/// Loss of lithium inventory: 8 % less lithium in the negative electrode, 1C discharge.
+#[test]
+fn concealed_lithium_inventory_loss_on_constant_current() {
     let mut p = chen2020();
     p.negative.initial_concentration *= 0.92;
-    let rec = recording("lli", ModelKind::Spm, sub, p, constant_current(5.0, 45.0), 0.002, 5, false);
-    run("lli", &rec, ModelKind::Spm);
-    let rec = recording("control", ModelKind::Spm, sub, chen2020(), pulses(), 0.0015, 6, false);
-    run("control", &rec, ModelKind::Spm);
-    let _ = Candidate::ALL;
+    let truth = p.negative.initial_concentration;
+    let rec = recording("lithium_inventory", ModelKind::Spm, Submodels::default(), p, constant_current(5.0, 45.0), 0.002, 5, false);
+    let d = run("lithium_inventory", &rec, ModelKind::Spm);
+    let fitted = assert_found(&d, Candidate::Stoichiometry);
+    assert!((value(&fitted, "negative.initial_concentration") / truth - 1.0).abs() < 0.01);
+}
+
+/// SPM + 15 mV OCV hysteresis on slow charge/discharge cycles with rests.
+#[test]
+fn concealed_ocv_hysteresis_on_cycles() {
+    let mut p = chen2020();
+    p.cell.hysteresis_voltage = 0.015;
+    p.cell.hysteresis_rate = 30.0;
+    let rec = recording("hysteresis", ModelKind::Spm, Submodels { hysteresis: true, ..Default::default() }, p, cycles(), 0.001, 7, false);
+    let d = run("hysteresis", &rec, ModelKind::Spm);
+    let fitted = assert_found(&d, Candidate::Hysteresis);
+    assert!((value(&fitted, "cell.hysteresis_voltage") / 0.015 - 1.0).abs() < 0.05);
+}
+
+/// Negative controls: data from the user's own model plus noise (pulses, and a 2C discharge
+/// with a temperature column): the residual is white and no missing physics is reported.
+#[test]
+fn negative_controls_report_no_missing_physics() {
+    let rec = recording("control_pulses", ModelKind::Spm, Submodels::default(), chen2020(), pulses(), 0.0015, 6, false);
+    let d = run("control_pulses", &rec, ModelKind::Spm);
+    assert!(!d.found && !d.residual.structured, "control on pulses: {}", d.summary);
+    let rec = recording("control_cc", ModelKind::Spm, Submodels::default(), chen2020(), constant_current(10.0, 20.0), 0.002, 8, true);
+    let d = run("control_cc", &rec, ModelKind::Spm);
+    assert!(!d.found && !d.residual.structured, "control on a discharge: {}", d.summary);
 }

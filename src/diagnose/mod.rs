@@ -125,6 +125,9 @@ pub struct Diagnosis {
     pub points: usize,
     pub train_points: usize,
     pub holdout_points: usize,
+    /// Time blocks of the recording, and every how many one is held out.
+    pub blocks: usize,
+    pub holdout_every: usize,
     pub min_delta_bic: f64,
     pub min_holdout_gain: f64,
     /// The user's model, fitted as asked.
@@ -259,6 +262,8 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
         points: features.valid.iter().filter(|v| **v).count(),
         train_points: split.train_points(),
         holdout_points: split.holdout_points(),
+        blocks: options.blocks,
+        holdout_every: options.holdout_every,
         min_delta_bic: options.min_delta_bic,
         min_holdout_gain: options.min_holdout_gain,
         baseline,

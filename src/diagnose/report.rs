@@ -204,11 +204,12 @@ pub fn markdown(d: &Diagnosis, plots: &[(String, String)]) -> String {
     let _ = writeln!(s, "## Fits\n");
     let _ = writeln!(
         s,
-        "{} usable points: {} for training, {} held out (every 4th of {} time blocks). The user's model: {} fitted parameter(s), RMSE {:.2} mV (training {:.2}, hold-out {:.2}).{}\n",
+        "{} usable points: {} for training, {} held out (every {}th of {} equal time blocks). The user's model: {} fitted parameter(s), RMSE {:.2} mV (training {:.2}, hold-out {:.2}).{}\n",
         d.points,
         d.train_points,
         d.holdout_points,
-        d.split.holdout.len().min(8),
+        d.holdout_every,
+        d.blocks,
         b.names.len(),
         b.rmse_all * 1e3,
         b.rmse_train * 1e3,
@@ -284,9 +285,10 @@ fn residual_section(s: &mut String, a: &ResidualAnalysis) {
         );
     }
     let _ = writeln!(s, "\n| band | points | mean (mV) | RMS (mV) |\n|---|---|---|---|");
-    for (label, bands, unit) in [("|I|", &a.current_bands, "A"), ("SOC change", &a.soc_bands, "")] {
-        for b in bands {
-            let _ = writeln!(s, "| {label} {:.3}-{:.3} {unit} | {} | {:.2} | {:.2} |", b.lower, b.upper, b.points, b.mean * 1e3, b.rms * 1e3);
+    for (label, bands, unit) in [("current", &a.current_bands, " A"), ("SOC change", &a.soc_bands, "")] {
+        for (k, b) in bands.iter().enumerate() {
+            let range = if label == "current" && k == 0 { "rest".to_string() } else { format!("{label} {:.3} to {:.3}{unit}", b.lower, b.upper) };
+            let _ = writeln!(s, "| {range} | {} | {:.2} | {:.2} |", b.points, b.mean * 1e3, b.rms * 1e3);
         }
     }
     if !a.segments.is_empty() {
