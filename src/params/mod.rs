@@ -6,6 +6,7 @@ mod chen2020;
 pub mod bpx;
 pub mod function;
 pub mod mass;
+mod initial_state;
 mod load;
 mod set;
 

@@ -114,6 +114,9 @@ pub struct FittingProblem {
     /// Non-negative weight of each recorded point in costs (0 leaves it out).
     pub weights: Vec<f64>,
     pub solver: SolverOptions,
+    /// Open-circuit voltage (V) of the initial state, set before the fitted parameters (which
+    /// may still override the initial concentrations); `None` keeps the set's initial state.
+    pub initial_ocv: Option<f64>,
     protocol: Protocol,
     /// Distinct output times (s, from the recording's start) and each point's output index.
     t_eval: Vec<f64>,
@@ -164,11 +167,24 @@ impl FittingProblem {
             data,
             weights,
             solver: SolverOptions::default(),
+            initial_ocv: None,
             protocol,
             t_eval,
             output_of_point,
             pool: Mutex::new(Vec::new()),
         })
+    }
+
+    /// Starts from the rest state whose open-circuit voltage is the first recorded voltage
+    /// (a recording that begins after a long rest). Errors if the first current is not zero.
+    pub fn starting_at_rest(mut self) -> Result<Self, Error> {
+        if self.data.current[0] != 0.0 {
+            return Err(Error::invalid("data.current", self.data.current[0], "must be 0 at the first point to start at rest"));
+        }
+        let v = self.data.voltage[0];
+        self.base.clone().set_initial_ocv(v)?;
+        self.initial_ocv = Some(v);
+        Ok(self)
     }
 
     /// Restricts costs to points with positive weight (e.g. a training window); the model
@@ -211,6 +227,9 @@ impl FittingProblem {
             });
         }
         let mut p = self.base.clone();
+        if let Some(v) = self.initial_ocv {
+            p.set_initial_ocv(v)?;
+        }
         for (fp, &v) in self.parameters.iter().zip(x) {
             p.set(&fp.path, v)?;
         }

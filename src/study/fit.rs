@@ -59,6 +59,10 @@ pub struct DataChoice {
     pub synthetic_noise: f64,
     #[serde(default)]
     pub noise_seed: u64,
+    /// The recording begins at rest: start from the state whose open-circuit voltage is the
+    /// first recorded voltage instead of the parameter set's initial concentrations.
+    #[serde(default)]
+    pub start_at_rest_voltage: bool,
 }
 
 /// A grid of the cost over the first two parameters (log-spaced for log parameters).
@@ -116,7 +120,8 @@ impl FitStudy {
 
     /// The fitting problem of the study.
     pub fn problem(&self, data: Option<&Path>) -> Result<FittingProblem, Error> {
-        FittingProblem::new(self.model, self.cell.load()?, self.parameters.clone(), self.recording(data)?)
+        let problem = FittingProblem::new(self.model, self.cell.load()?, self.parameters.clone(), self.recording(data)?)?;
+        if self.data.start_at_rest_voltage { problem.starting_at_rest() } else { Ok(problem) }
     }
 }
 
