@@ -119,6 +119,34 @@ enum Command {
         #[arg(long, default_value = "out/eis")]
         out: PathBuf,
     },
+    /// Locate where a model and a recording disagree, name the missing physics, refit the
+    /// candidates and write a report (Markdown, JSON, plots).
+    Diagnose {
+        /// The model to test: spm, spme or dfn.
+        #[arg(long, default_value = "spm")]
+        model: ModelKind,
+        /// Recording CSV with time_s, current_A (discharge positive), voltage_V[, temperature_K].
+        #[arg(long)]
+        data: PathBuf,
+        /// Parameter-set file (default: embedded Chen 2020).
+        #[arg(long)]
+        params: Option<PathBuf>,
+        /// The model already has the contact-resistance submodel (cell.contact_resistance).
+        #[arg(long)]
+        contact_resistance: bool,
+        /// The model already has the lumped thermal submodel.
+        #[arg(long)]
+        thermal: bool,
+        /// Parameters fitted in the model and in every candidate (comma-separated paths).
+        #[arg(long, value_delimiter = ',')]
+        fit: Vec<String>,
+        /// Number of candidates refitted (best screening scores first).
+        #[arg(long, default_value_t = 5)]
+        refits: usize,
+        /// Output folder.
+        #[arg(long, default_value = "out/diagnosis")]
+        out: PathBuf,
+    },
     /// Evaluate a study's grid sweep (in parallel) and write CSV, JSON and density plots.
     Sweep {
         /// Study file, e.g. designs/gravimetric_chen2020.toml.
@@ -143,6 +171,24 @@ fn read_toml<T: serde::de::DeserializeOwned>(path: &PathBuf) -> Result<T, Error>
 
 fn run(cli: Cli) -> Result<(), Error> {
     match cli.command {
+        Command::Diagnose { model, data, params, contact_resistance, thermal, fit, refits, out } => {
+            use cellstudio::diagnose::{DiagnoseOptions, diagnose, default_fit_parameter, report};
+            let p = match &params {
+                Some(path) => ParameterSet::from_file(path)?,
+                None => chen2020(),
+            };
+            let rec = cellstudio::data::Recording::from_csv(&data)?;
+            let submodels = Submodels { contact_resistance, thermal, ..Default::default() };
+            let mut options = DiagnoseOptions::new(cellstudio::problem::fitting::ModelSpec::new(model, submodels));
+            options.fitted = fit.iter().map(|path| default_fit_parameter(path, &p)).collect::<Result<_, _>>()?;
+            options.max_refits = refits;
+            let d = diagnose(&rec, &p, &options)?;
+            println!("{}", report::markdown(&d, &[]));
+            for f in report::write(&d, &out)? {
+                println!("wrote            {}", f.display());
+            }
+            Ok(())
+        }
         Command::Design { study } => {
             let study = Study::from_file(&study)?;
             let out = run_design(&study)?;
@@ -261,7 +307,7 @@ fn run(cli: Cli) -> Result<(), Error> {
                 Some(path) => read_toml::<Protocol>(path)?,
                 None => Protocol::discharge(c_rate),
             };
-            let submodels = Submodels { contact_resistance: contact_resistance.is_some(), thermal };
+            let submodels = Submodels { contact_resistance: contact_resistance.is_some(), thermal, ..Default::default() };
             let sizes = MeshSizes { x_n: mesh, x_s: mesh, x_p: mesh, r_n: mesh, r_p: mesh };
             let mut builder = ModelBuilder::new(model, submodels, sizes);
             let t_build = Instant::now();

@@ -27,7 +27,7 @@ fn solid_lithium_is_conserved() {
     };
     for kind in KINDS {
         for thermal in [false, true] {
-            let sub = Submodels { thermal, contact_resistance: false };
+            let sub = Submodels { thermal, ..Default::default() };
             let mut b = ModelBuilder::new(kind, sub, MeshSizes::default());
             let built = b.build(&p).unwrap();
             let opts = SimOptions { keep_states: true, ..SimOptions::for_cell(&p) };

@@ -85,7 +85,7 @@ fn spm_contact_resistance_matches_pybamm() {
         ],
     };
     let rec = reference("spm_contact_resistance_seed");
-    let sub = Submodels { contact_resistance: true, thermal: false };
+    let sub = Submodels { contact_resistance: true, ..Default::default() };
     let sol = run(ModelKind::Spm, sub, MeshSizes::default(), &p, &protocol, Some(rec.distinct_times()), false);
     let err = rec.voltage_error(&sol.time, &sol.voltage);
     println!("spm_contact_resistance_seed: rms {:.3} mV, max {:.3} mV over {} points", err.rms * 1e3, err.max * 1e3, err.points);

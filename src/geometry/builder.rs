@@ -6,6 +6,7 @@ use crate::error::Error;
 use crate::models::dfn::Dfn;
 use crate::models::spm::Spm;
 use crate::models::spme::Spme;
+use crate::models::submodels::Augmented;
 use crate::models::{Electrochem, ModelKind, PhysicsModel, Submodels};
 use crate::params::ParameterSet;
 use crate::solver::Workspace;
@@ -49,11 +50,14 @@ impl ModelBuilder {
             built.model.set_params(params.clone());
         } else {
             let ec = Electrochem::new(params.clone(), Discretisation::new(geometry), self.submodels);
-            let model: Box<dyn PhysicsModel> = match self.kind {
+            let mut model: Box<dyn PhysicsModel> = match self.kind {
                 ModelKind::Spm => Box::new(Spm::new(ec)),
                 ModelKind::Spme => Box::new(Spme::new(ec)),
                 ModelKind::Dfn => Box::new(Dfn::new(ec)),
             };
+            if self.submodels.augments() {
+                model = Box::new(Augmented::new(model, self.submodels));
+            }
             let workspace = Workspace::new(model.len(), model.jacobian_pattern())?;
             self.builds += 1;
             self.last = Some(Built { model, workspace, geometry });

@@ -62,6 +62,18 @@ pub struct Submodels {
     pub contact_resistance: bool,
     /// Lumped (0-D) thermal model with Arrhenius-dependent diffusivities and rate constants.
     pub thermal: bool,
+    /// Series RC element (`cell.rc_resistance`, `cell.rc_capacitance`): one extra state.
+    pub rc: bool,
+    /// One-state OCV hysteresis (`cell.hysteresis_voltage`, `cell.hysteresis_rate`,
+    /// `cell.hysteresis_initial`): one extra state.
+    pub hysteresis: bool,
+}
+
+impl Submodels {
+    /// Whether a submodel that appends states through [`submodels::Augmented`] is on.
+    pub fn augments(&self) -> bool {
+        self.rc || self.hysteresis
+    }
 }
 
 /// The state/output interface every model offers to the solver and to reports.

@@ -27,6 +27,11 @@ pub fn chen2020() -> ParameterSet {
             lower_cutoff: 2.5,
             upper_cutoff: 4.2,
             contact_resistance: 0.0,
+            rc_resistance: 0.0,
+            rc_capacitance: super::set::DEFAULT_RC_CAPACITANCE,
+            hysteresis_voltage: 0.0,
+            hysteresis_rate: super::set::DEFAULT_HYSTERESIS_RATE,
+            hysteresis_initial: 0.0,
         },
         negative: Electrode {
             thickness: 85.2e-6,

@@ -3,7 +3,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::function::Function1D;
-use super::check::{non_negative, open_unit, positive};
+use super::check::{check, non_negative, open_unit, positive};
 use crate::error::Error;
 
 /// Gas constant (J/(mol K)).
@@ -179,6 +179,34 @@ pub struct Cell {
     pub upper_cutoff: f64,
     /// Contact (series) resistance (ohm), used when the contact-resistance submodel is on.
     pub contact_resistance: f64,
+    /// Resistance of the series RC element (ohm), used when the RC submodel is on.
+    #[serde(default)]
+    pub rc_resistance: f64,
+    /// Capacitance of the series RC element (F), used when the RC submodel is on.
+    #[serde(default = "default_rc_capacitance")]
+    pub rc_capacitance: f64,
+    /// Largest OCV hysteresis offset `M` (V), used when the hysteresis submodel is on.
+    #[serde(default)]
+    pub hysteresis_voltage: f64,
+    /// Rate `k` (-) of the hysteresis state: it relaxes over `1/k` of the nominal capacity.
+    #[serde(default = "default_hysteresis_rate")]
+    pub hysteresis_rate: f64,
+    /// Initial hysteresis state `h(0)` in [-1, 1] (-): -1 after a discharge, +1 after a charge.
+    #[serde(default)]
+    pub hysteresis_initial: f64,
+}
+
+/// Default RC capacitance (F): a 10 s time constant at 10 mOhm.
+pub const DEFAULT_RC_CAPACITANCE: f64 = 1000.0;
+/// Default hysteresis rate (-): the state settles within about a tenth of the capacity.
+pub const DEFAULT_HYSTERESIS_RATE: f64 = 10.0;
+
+fn default_rc_capacitance() -> f64 {
+    DEFAULT_RC_CAPACITANCE
+}
+
+fn default_hysteresis_rate() -> f64 {
+    DEFAULT_HYSTERESIS_RATE
 }
 
 impl Cell {
@@ -262,6 +290,11 @@ impl ParameterSet {
             ));
         }
         non_negative("cell.contact_resistance", c.contact_resistance)?;
+        non_negative("cell.rc_resistance", c.rc_resistance)?;
+        positive("cell.rc_capacitance", c.rc_capacitance)?;
+        non_negative("cell.hysteresis_voltage", c.hysteresis_voltage)?;
+        positive("cell.hysteresis_rate", c.hysteresis_rate)?;
+        check("cell.hysteresis_initial", c.hysteresis_initial, c.hysteresis_initial.abs() <= 1.0, "must lie in [-1, 1]")?;
         let t = &self.thermal;
         positive("thermal.reference_temperature", t.reference_temperature)?;
         positive("thermal.ambient_temperature", t.ambient_temperature)?;
@@ -357,6 +390,11 @@ impl ParameterSet {
                 "lower_cutoff" => &mut self.cell.lower_cutoff,
                 "upper_cutoff" => &mut self.cell.upper_cutoff,
                 "contact_resistance" => &mut self.cell.contact_resistance,
+                "rc_resistance" => &mut self.cell.rc_resistance,
+                "rc_capacitance" => &mut self.cell.rc_capacitance,
+                "hysteresis_voltage" => &mut self.cell.hysteresis_voltage,
+                "hysteresis_rate" => &mut self.cell.hysteresis_rate,
+                "hysteresis_initial" => &mut self.cell.hysteresis_initial,
                 _ => return Err(unknown()),
             },
             "thermal" => match name {

@@ -2,4 +2,5 @@
 
 pub mod nyquist;
 pub mod plot;
+pub mod diagnosis_plot;
 pub mod mcmc_plot;

@@ -1,0 +1,136 @@
+//! Signals derived from a recording alone (no model): discharged capacity, current steps,
+//! time since the last step, low-pass filtered current and a hysteresis-like state. They are
+//! the regressors of the residual signatures.
+
+use crate::data::Recording;
+
+/// A current step in the recording.
+#[derive(Clone, Copy, Debug, serde::Serialize)]
+pub struct CurrentStep {
+    /// Time of the step (s, recording clock).
+    pub time: f64,
+    /// Index of the last point before the step.
+    pub before: usize,
+    /// Index of the first point after the step.
+    pub after: usize,
+    /// Current change (A).
+    pub delta: f64,
+}
+
+/// Derived signals, one value per recorded point.
+#[derive(Clone, Debug)]
+pub struct Features {
+    /// Points that enter statistics: not on either side of a repeated time.
+    pub valid: Vec<bool>,
+    /// Charge discharged since the start (A h), trapezoidal.
+    pub capacity: Vec<f64>,
+    /// Steps larger than 5 % of the largest |current|.
+    pub steps: Vec<CurrentStep>,
+    /// Time since the last step (s); infinite before the first.
+    pub since_step: Vec<f64>,
+    /// Temperature rise over the first recorded temperature (K), when recorded.
+    pub temperature_rise: Option<Vec<f64>>,
+}
+
+impl Features {
+    pub fn of(rec: &Recording) -> Self {
+        let n = rec.time.len();
+        let (t, i) = (&rec.time, &rec.current);
+        let valid: Vec<bool> = (0..n).map(|k| !rec.is_repeated(k)).collect();
+        let mut capacity = vec![0.0; n];
+        for k in 1..n {
+            capacity[k] = capacity[k - 1] + 0.5 * (i[k] + i[k - 1]) * (t[k] - t[k - 1]) / 3600.0;
+        }
+        let largest = i.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        let threshold = 0.05 * largest.max(1e-12);
+        let mut steps = Vec::new();
+        for k in 0..n.saturating_sub(1) {
+            let delta = i[k + 1] - i[k];
+            if delta.abs() > threshold {
+                // A jump at a repeated time, or a change between two samples.
+                steps.push(CurrentStep { time: t[k + 1], before: k, after: k + 1, delta });
+            }
+        }
+        let mut since_step = vec![f64::INFINITY; n];
+        let mut last: Option<f64> = None;
+        let mut next = 0;
+        for k in 0..n {
+            while next < steps.len() && steps[next].after <= k {
+                last = Some(steps[next].time);
+                next += 1;
+            }
+            if let Some(ts) = last {
+                since_step[k] = t[k] - ts;
+            }
+        }
+        let temperature_rise = rec.temperature.as_ref().map(|temp| temp.iter().map(|v| v - temp[0]).collect());
+        Self { valid, capacity, steps, since_step, temperature_rise }
+    }
+
+    /// First-order low-pass filter of `signal` with time constant `tau` (s), exact for a
+    /// signal linear between samples; a repeated time holds the state.
+    pub fn low_pass(rec: &Recording, signal: &[f64], tau: f64) -> Vec<f64> {
+        let t = &rec.time;
+        let mut out = vec![0.0; signal.len()];
+        for k in 1..signal.len() {
+            let h = t[k] - t[k - 1];
+            if h <= 0.0 {
+                out[k] = out[k - 1];
+                continue;
+            }
+            let a = (-h / tau).exp();
+            // x' = (u - x)/tau with u linear from u0 to u1 over h.
+            let (u0, u1) = (signal[k - 1], signal[k]);
+            let slope = (u1 - u0) / h;
+            out[k] = a * out[k - 1] + (1.0 - a) * u0 + slope * (h - tau * (1.0 - a));
+        }
+        out
+    }
+
+    /// Unit-amplitude hysteresis state `dh/dt = k |I| / (3600 Q) (-sign(I) - h)` from zero,
+    /// for rate `k` (-) and capacity `q_nominal` (A h), by exact steps at constant current.
+    pub fn hysteresis_state(rec: &Recording, rate: f64, q_nominal: f64) -> Vec<f64> {
+        let (t, i) = (&rec.time, &rec.current);
+        let mut h = vec![0.0; t.len()];
+        for k in 1..t.len() {
+            let dt = t[k] - t[k - 1];
+            let current = 0.5 * (i[k] + i[k - 1]);
+            let a = (-rate * current.abs() * dt / (3600.0 * q_nominal)).exp();
+            let target = -current.signum();
+            h[k] = if current == 0.0 { h[k - 1] } else { target + (h[k - 1] - target) * a };
+        }
+        h
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn rec(time: Vec<f64>, current: Vec<f64>) -> Recording {
+        let n = time.len();
+        Recording { time, current, voltage: vec![3.7; n], temperature: None }
+    }
+
+    /// The filter of a unit step equals `1 - exp(-t / tau)` at every sample.
+    #[test]
+    fn low_pass_of_a_step_is_the_analytic_response() {
+        let mut time = vec![0.0, 10.0, 10.0];
+        let mut current = vec![0.0, 0.0, 1.0];
+        for k in 11..=60 {
+            time.push(f64::from(k));
+            current.push(1.0);
+        }
+        let r = rec(time, current);
+        let y = Features::low_pass(&r, &r.current, 7.0);
+        for (k, &t) in r.time.iter().enumerate().skip(3) {
+            assert!((y[k] - (1.0 - (-(t - 10.0) / 7.0f64).exp())).abs() < 1e-12);
+        }
+        let f = Features::of(&r);
+        assert_eq!(f.steps.len(), 1);
+        assert_eq!(f.steps[0].time, 10.0);
+        assert!(!f.valid[1] && !f.valid[2] && f.valid[3]);
+        assert_eq!(f.since_step[12], 10.0);
+        assert!((f.capacity[r.time.len() - 1] - 50.0 / 3600.0).abs() < 1e-12);
+    }
+}

@@ -1,0 +1,321 @@
+//! The diagnosis in words (plain sentences first), as a Markdown report and as JSON.
+
+use std::fmt::Write;
+use std::path::{Path, PathBuf};
+
+use super::{CandidateOutcome, Diagnosis, FitOutcome, ResidualAnalysis};
+use crate::error::Error;
+
+/// A fitted value with its standard error in readable units.
+pub fn format_parameter(path: &str, value: f64, std_error: f64) -> String {
+    let name = path.rsplit('.').next().unwrap_or(path);
+    let se = |scale: f64, digits: usize| {
+        if std_error.is_finite() { format!(" ± {:.*}", digits, std_error * scale) } else { " (not identifiable)".into() }
+    };
+    match name {
+        "contact_resistance" | "rc_resistance" => format!("{path} = {:.2}{} mOhm", value * 1e3, se(1e3, 2)),
+        "hysteresis_voltage" => format!("{path} = {:.2}{} mV", value * 1e3, se(1e3, 2)),
+        "rc_capacitance" => format!("{path} = {value:.4e}{} F", se(1.0, 1)),
+        "diffusivity" => {
+            let e = if std_error.is_finite() { format!(" ± {std_error:.2e}") } else { " (not identifiable)".into() };
+            format!("{path} = {value:.3e}{e} m^2/s")
+        }
+        "initial_concentration" => format!("{path} = {value:.0}{} mol/m^3", se(1.0, 0)),
+        "heat_transfer_coefficient" => format!("{path} = {value:.3}{} W/(m^2 K)", se(1.0, 3)),
+        _ => format!("{path} = {value:.4}{}", se(1.0, 4)),
+    }
+}
+
+fn mv(v: f64) -> String {
+    format!("{:.2} mV", v * 1e3)
+}
+
+/// Where the residual lies, in sentences.
+pub fn locate_in_words(a: &ResidualAnalysis) -> String {
+    let mut s = String::new();
+    if !a.structured {
+        let _ = write!(
+            s,
+            "The residual (RMSE {}) is consistent with noise: point-to-point noise {}, lag-1 autocorrelation {:.2}, Ljung-Box p = {:.2e}, runs-test p = {:.2e}.",
+            mv(a.rmse),
+            mv(a.noise),
+            a.lag1_autocorrelation,
+            a.ljung_box.p_value,
+            a.runs.p_value
+        );
+        return s;
+    }
+    let _ = write!(
+        s,
+        "The residual (RMSE {}, {:.1}x the point-to-point noise of {}) has structure noise cannot explain (lag-1 autocorrelation {:.2}, Ljung-Box p = {:.1e}, runs z = {:.1}).",
+        mv(a.rmse),
+        a.structure_ratio,
+        mv(a.noise),
+        a.lag1_autocorrelation,
+        a.ljung_box.p_value,
+        a.runs.statistic
+    );
+    let w = &a.step_response.windows;
+    if let Some(top) = w
+        .iter()
+        .filter(|w| w.to.is_finite() && w.total_share > 0.2)
+        .max_by(|x, y| x.concentration().total_cmp(&y.concentration()))
+        && top.concentration() > 2.0
+    {
+        let when = if top.from == 0.0 { format!("the first {:.1} s", top.to) } else { format!("{:.1} to {:.0} s", top.from, top.to) };
+        let _ = write!(
+            s,
+            " It is concentrated in {when} after current steps {} ({:.0} % of the squared error there on {:.0} % of the points).",
+            if top.load { "under load" } else { "in rests" },
+            100.0 * top.error_share,
+            100.0 * top.point_share
+        );
+    }
+    let sr = &a.step_response;
+    if sr.steps >= 2 && sr.r2 > 0.8 && sr.instantaneous_resistance.abs() > 1e-4 {
+        let _ = write!(
+            s,
+            " At the {} current steps it jumps by {:.2} mOhm times the current change (R² = {:.2}).",
+            sr.steps,
+            sr.instantaneous_resistance * 1e3,
+            sr.r2
+        );
+    }
+    if let Some(r) = a.vs_current
+        && r.r2 > 0.5
+    {
+        let _ = write!(s, " It scales with current ({:.2} mV/A, R² = {:.2}).", r.slope * 1e3, r.r2);
+    }
+    if a.rest_rms > 0.0 && a.load_rms > 0.0 {
+        let _ = write!(s, " RMS under load {}, at rest {}.", mv(a.load_rms), mv(a.rest_rms));
+    }
+    if let Some(r) = a.vs_capacity
+        && r.r2 > 0.5
+    {
+        let _ = write!(s, " It grows with discharged capacity ({:.1} mV per A h, R² = {:.2}).", r.slope * 1e3, r.r2);
+    }
+    if let Some(r) = a.vs_temperature
+        && r.r2 > 0.5
+    {
+        let _ = write!(s, " It follows the temperature rise ({:.2} mV/K, R² = {:.2}).", r.slope * 1e3, r.r2);
+    }
+    if let Some(r) = a.vs_heating
+        && r.r2 > 0.5
+    {
+        let _ = write!(s, " It follows temperature rise times current ({:.3} mV/(K A), R² = {:.2}): the cell warms and its losses fall.", r.slope * 1e3, r.r2);
+    }
+    if let Some(seg) = a.segments.first() {
+        let _ = write!(
+            s,
+            " The largest mismatch is at {:.0}-{:.0} s ({:.0} % of the squared error, mean residual {} at {:.2} A).",
+            seg.start,
+            seg.end,
+            100.0 * seg.error_share,
+            mv(seg.mean_residual),
+            seg.mean_current
+        );
+    }
+    s
+}
+
+fn parameters_in_words(f: &FitOutcome, only: &[String]) -> String {
+    f.names
+        .iter()
+        .zip(&f.values)
+        .zip(&f.std_errors)
+        .filter(|((n, _), _)| only.is_empty() || only.contains(n))
+        .map(|((n, v), e)| format_parameter(n, *v, *e))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// The verdict in plain words: where the mismatch is, what is missing, what adding it does.
+pub fn plain_words(d: &Diagnosis) -> String {
+    let mut s = locate_in_words(&d.residual);
+    let b = &d.baseline;
+    let Some(best) = d.best() else {
+        let _ = write!(s, " No candidate could be refitted.");
+        return s;
+    };
+    let f = best.fit.as_ref().expect("best has a fit");
+    let extra: Vec<String> = f.names.iter().filter(|n| !b.names.contains(n)).cloned().collect();
+    let params = parameters_in_words(f, &extra);
+    let with = if params.is_empty() { String::new() } else { format!(": {params}") };
+    if d.found {
+        let _ = write!(
+            s,
+            " Missing physics: {} ({}){with}. Adding it cuts the RMSE from {} to {} (hold-out {} -> {}), ΔBIC = {:.0}.",
+            best.name,
+            best.change,
+            mv(b.rmse_all),
+            mv(f.rmse_all),
+            mv(b.rmse_holdout),
+            mv(f.rmse_holdout),
+            best.delta_bic
+        );
+    } else {
+        let _ = write!(
+            s,
+            " No missing physics found with a clear margin: the best candidate, {} ({}), changes BIC by {:.1} and the hold-out RMSE by {:.0} % (needs ΔBIC > {} and a cut of {:.0} %).",
+            best.name,
+            best.change,
+            best.delta_bic,
+            -100.0 * best.holdout_gain,
+            d.min_delta_bic,
+            100.0 * d.min_holdout_gain
+        );
+    }
+    s
+}
+
+fn candidate_row(c: &CandidateOutcome, rank: usize) -> String {
+    match &c.fit {
+        Some(f) => format!(
+            "| {rank} | {} | {} | {:.2} | {} | {:.2} | {:.2} | {:.2} | {:.1} | {:.1} | {:.0} % | {} | {:.1} |",
+            c.name,
+            c.change,
+            c.screen_score,
+            f.names.len(),
+            f.rmse_train * 1e3,
+            f.rmse_holdout * 1e3,
+            f.rmse_all * 1e3,
+            c.delta_bic,
+            c.delta_aic,
+            100.0 * c.holdout_gain,
+            if c.clears_margins { "yes" } else { "no" },
+            f.seconds
+        ),
+        None => format!(
+            "| - | {} | {} | {:.2} | | | | | | | | {} | |",
+            c.name,
+            c.change,
+            c.screen_score,
+            c.note.clone().unwrap_or_default()
+        ),
+    }
+}
+
+/// The report as Markdown; `plots` are file names relative to the report.
+pub fn markdown(d: &Diagnosis, plots: &[(String, String)]) -> String {
+    let mut s = String::new();
+    let _ = writeln!(s, "# Model-discrepancy diagnosis ({})\n", d.model);
+    let _ = writeln!(s, "{}\n", d.summary);
+    let b = &d.baseline;
+    let _ = writeln!(s, "## Fits\n");
+    let _ = writeln!(
+        s,
+        "{} usable points: {} for training, {} held out (every {}th of {} equal time blocks). The user's model: {} fitted parameter(s), RMSE {:.2} mV (training {:.2}, hold-out {:.2}).{}\n",
+        d.points,
+        d.train_points,
+        d.holdout_points,
+        d.holdout_every,
+        d.blocks,
+        b.names.len(),
+        b.rmse_all * 1e3,
+        b.rmse_train * 1e3,
+        b.rmse_holdout * 1e3,
+        if b.names.is_empty() { String::new() } else { format!(" Fitted: {}.", parameters_in_words(b, &[])) }
+    );
+    let _ = writeln!(
+        s,
+        "| rank | candidate | change | screen R² | fitted | RMSE train (mV) | RMSE hold-out (mV) | RMSE all (mV) | ΔBIC | ΔAIC | hold-out cut | clears margins | time (s) |"
+    );
+    let _ = writeln!(s, "|---|---|---|---|---|---|---|---|---|---|---|---|---|");
+    let mut rank = 0;
+    for c in &d.candidates {
+        rank += usize::from(c.fit.is_some());
+        let _ = writeln!(s, "{}", candidate_row(c, rank));
+    }
+    let _ = writeln!(s, "\nFitted values:\n");
+    for c in d.candidates.iter().filter(|c| c.fit.is_some()) {
+        let f = c.fit.as_ref().expect("filtered");
+        let _ = writeln!(s, "- {}: {}", c.name, if f.names.is_empty() { "(no parameters)".into() } else { parameters_in_words(f, &[]) });
+    }
+    let _ = writeln!(s, "\n## Candidate signatures\n");
+    for c in &d.candidates {
+        let _ = writeln!(s, "- **{}**: {}", c.name, c.signature);
+    }
+    let _ = writeln!(s, "\n## Residual of the user's model\n");
+    residual_section(&mut s, &d.residual);
+    if let (Some(a), Some(best)) = (&d.residual_after, d.best()) {
+        let _ = writeln!(s, "\n## Residual with {}\n", best.name);
+        residual_section(&mut s, a);
+    }
+    if !plots.is_empty() {
+        let _ = writeln!(s, "\n## Plots\n");
+        for (title, file) in plots {
+            let _ = writeln!(s, "![{title}]({file})\n");
+        }
+    }
+    s
+}
+
+fn residual_section(s: &mut String, a: &ResidualAnalysis) {
+    let _ = writeln!(s, "| statistic | value |\n|---|---|");
+    let _ = writeln!(s, "| RMSE / mean / max abs | {} / {} / {} (at {:.0} s) |", mv(a.rmse), mv(a.mean), mv(a.max_abs), a.time_of_max);
+    let _ = writeln!(s, "| noise (first differences) | {} (RMSE/noise = {:.2}) |", mv(a.noise), a.structure_ratio);
+    let _ = writeln!(s, "| lag-1 autocorrelation | {:.3} |", a.lag1_autocorrelation);
+    let _ = writeln!(s, "| Ljung-Box Q, p | {:.1}, {:.2e} |", a.ljung_box.statistic, a.ljung_box.p_value);
+    let _ = writeln!(s, "| runs test z, p | {:.2}, {:.2e} |", a.runs.statistic, a.runs.p_value);
+    let _ = writeln!(s, "| structure noise cannot explain | {} |", if a.structured { "yes" } else { "no" });
+    for (label, r, unit) in [
+        ("r vs current", a.vs_current, "mV/A"),
+        ("r vs discharged capacity", a.vs_capacity, "mV/(A h)"),
+        ("r vs temperature rise", a.vs_temperature, "mV/K"),
+        ("r vs temperature rise x current", a.vs_heating, "mV/(K A)"),
+    ] {
+        if let Some(r) = r {
+            let _ = writeln!(s, "| {label} | slope {:.3} {unit}, R² = {:.3} |", r.slope * 1e3, r.r2);
+        }
+    }
+    let sr = &a.step_response;
+    let _ = writeln!(s, "| jump at {} current steps | {:.3} mOhm x ΔI, R² = {:.3} |", sr.steps, sr.instantaneous_resistance * 1e3, sr.r2);
+    let _ = writeln!(s, "| RMS under load / at rest | {} / {} |", mv(a.load_rms), mv(a.rest_rms));
+    let _ = writeln!(s, "\n| time after a current step | share of load/rest points | share of their squared error | share of all squared error |\n|---|---|---|---|");
+    for w in &sr.windows {
+        let _ = writeln!(
+            s,
+            "| {} {:.1} - {} s | {:.1} % | {:.1} % | {:.1} % |",
+            if w.load { "load" } else { "rest" },
+            w.from,
+            if w.to.is_finite() { format!("{:.0}", w.to) } else { "...".into() },
+            100.0 * w.point_share,
+            100.0 * w.error_share,
+            100.0 * w.total_share
+        );
+    }
+    let _ = writeln!(s, "\n| band | points | mean (mV) | RMS (mV) |\n|---|---|---|---|");
+    for (label, bands, unit) in [("current", &a.current_bands, " A"), ("SOC change", &a.soc_bands, "")] {
+        for (k, b) in bands.iter().enumerate() {
+            let range = if label == "current" && k == 0 { "rest".to_string() } else { format!("{label} {:.3} to {:.3}{unit}", b.lower, b.upper) };
+            let _ = writeln!(s, "| {range} | {} | {:.2} | {:.2} |", b.points, b.mean * 1e3, b.rms * 1e3);
+        }
+    }
+    if !a.segments.is_empty() {
+        let _ = writeln!(s, "\n| mismatching segment | mean current (A) | mean residual (mV) | share of squared error |\n|---|---|---|---|");
+        for g in &a.segments {
+            let _ = writeln!(s, "| {:.0} - {:.0} s | {:.2} | {:.2} | {:.1} % |", g.start, g.end, g.mean_current, g.mean_residual * 1e3, 100.0 * g.error_share);
+        }
+    }
+}
+
+/// Writes `diagnosis.md`, `diagnosis.json` and the plots into `dir`; returns the files.
+pub fn write(d: &Diagnosis, dir: &Path) -> Result<Vec<PathBuf>, Error> {
+    fn io(path: &Path) -> impl FnOnce(std::io::Error) -> Error + '_ {
+        move |source| Error::Io { path: path.display().to_string(), source }
+    }
+    std::fs::create_dir_all(dir).map_err(io(dir))?;
+    let plots = crate::report::diagnosis_plot::write_plots(d, dir)?;
+    let names: Vec<(String, String)> = plots
+        .iter()
+        .map(|(title, p)| (title.clone(), p.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default()))
+        .collect();
+    let md = dir.join("diagnosis.md");
+    std::fs::write(&md, markdown(d, &names)).map_err(io(&md))?;
+    let json = dir.join("diagnosis.json");
+    let text = serde_json::to_string_pretty(d).map_err(|e| Error::Parse { path: json.display().to_string(), message: e.to_string() })?;
+    std::fs::write(&json, text).map_err(io(&json))?;
+    let mut files = vec![md, json];
+    files.extend(plots.into_iter().map(|(_, p)| p));
+    Ok(files)
+}

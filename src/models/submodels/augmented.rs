@@ -1,0 +1,245 @@
+//! Submodels that append states to any physics model without touching it: a series RC
+//! element and a one-state OCV hysteresis.
+//!
+//! [`Augmented`] wraps a built `Box<dyn PhysicsModel>`; the wrapped model sees only its own
+//! states, and the extra states follow them:
+//!
+//! - RC element (`cell.rc_resistance` `R` (ohm), `cell.rc_capacitance` `C` (F)): the voltage
+//!   `v` (V) across the element obeys `dv/dt = I / C - v / (R C)` and the terminal voltage
+//!   loses `v`. With `R = 0` the element is a short (`v` relaxes to zero).
+//! - Hysteresis (`cell.hysteresis_voltage` `M` (V), `cell.hysteresis_rate` `k` (-),
+//!   `cell.hysteresis_initial` `h(0)`): the state `h` in [-1, 1] obeys
+//!   `dh/dt = k |I| / (3600 Q) (-sign(I) - h)` with `Q` the nominal capacity (A h), i.e.
+//!   `k / (3600 Q) (-I - |I| h)`, and the terminal voltage gains `M h`: discharge
+//!   (`I > 0`) drives `h` to -1 and lowers the voltage, charge raises it; at rest `h` holds.
+
+use crate::models::{Electrochem, Model, PhysicsModel, Submodels};
+use crate::params::ParameterSet;
+
+/// Typical size of the RC voltage (V), for tolerances and difference steps.
+const RC_SCALE: f64 = 0.01;
+
+/// A physics model with RC and/or hysteresis states appended.
+pub struct Augmented {
+    base: Box<dyn PhysicsModel>,
+    /// Index of the RC state, when on.
+    rc: Option<usize>,
+    /// Index of the hysteresis state, when on.
+    hysteresis: Option<usize>,
+    /// Number of states of the wrapped model.
+    n_base: usize,
+    mass: Vec<f64>,
+    scale: Vec<f64>,
+}
+
+impl Augmented {
+    /// Wraps `base`, appending the states of the submodels switched on in `submodels`.
+    pub fn new(base: Box<dyn PhysicsModel>, submodels: Submodels) -> Self {
+        let n_base = base.len();
+        let mut mass = base.mass().to_vec();
+        let mut scale = base.scale().to_vec();
+        let mut next = n_base;
+        let mut push = |on: bool, s: f64| {
+            on.then(|| {
+                mass.push(1.0);
+                scale.push(s);
+                next += 1;
+                next - 1
+            })
+        };
+        let rc = push(submodels.rc, RC_SCALE);
+        let hysteresis = push(submodels.hysteresis, 1.0);
+        Self { base, rc, hysteresis, n_base, mass, scale }
+    }
+
+    /// The wrapped model.
+    pub fn base(&self) -> &dyn PhysicsModel {
+        self.base.as_ref()
+    }
+
+    fn cell(&self) -> &crate::params::Cell {
+        &self.base.electrochem().params.cell
+    }
+
+    /// Voltage across the RC element (V), zero when it is off.
+    pub fn rc_voltage(&self, y: &[f64]) -> f64 {
+        self.rc.map_or(0.0, |k| y[k])
+    }
+
+    /// Hysteresis state `h` (-), zero when it is off.
+    pub fn hysteresis_state(&self, y: &[f64]) -> f64 {
+        self.hysteresis.map_or(0.0, |k| y[k])
+    }
+}
+
+impl Model for Augmented {
+    fn name(&self) -> String {
+        let mut name = self.base.name();
+        if self.rc.is_some() {
+            name.push_str("+RC");
+        }
+        if self.hysteresis.is_some() {
+            name.push_str("+hysteresis");
+        }
+        name
+    }
+
+    fn len(&self) -> usize {
+        self.mass.len()
+    }
+
+    fn mass(&self) -> &[f64] {
+        &self.mass
+    }
+
+    fn scale(&self) -> &[f64] {
+        &self.scale
+    }
+
+    fn jacobian_pattern(&self) -> Vec<(usize, usize)> {
+        let mut p = self.base.jacobian_pattern();
+        p.extend(self.rc.iter().chain(&self.hysteresis).map(|&k| (k, k)));
+        p
+    }
+
+    fn initial_state(&self) -> Vec<f64> {
+        let mut y = self.base.initial_state();
+        if self.rc.is_some() {
+            y.push(0.0);
+        }
+        if self.hysteresis.is_some() {
+            y.push(self.cell().hysteresis_initial);
+        }
+        y
+    }
+
+    fn rhs(&self, y: &[f64], current: f64, out: &mut [f64]) {
+        let nb = self.n_base;
+        self.base.rhs(&y[..nb], current, &mut out[..nb]);
+        let cell = self.cell();
+        if let Some(k) = self.rc {
+            let (r, c) = (cell.rc_resistance, cell.rc_capacitance);
+            out[k] = if r > 0.0 { (current - y[k] / r) / c } else { -y[k] };
+        }
+        if let Some(k) = self.hysteresis {
+            let rate = cell.hysteresis_rate / (3600.0 * cell.nominal_capacity);
+            out[k] = rate * (-current - current.abs() * y[k]);
+        }
+    }
+
+    fn voltage(&self, y: &[f64], current: f64) -> f64 {
+        self.base.voltage(&y[..self.n_base], current) - self.rc_voltage(y)
+            + self.cell().hysteresis_voltage * self.hysteresis_state(y)
+    }
+
+    fn temperature(&self, y: &[f64]) -> f64 {
+        self.base.temperature(&y[..self.n_base])
+    }
+
+    fn solid_lithium(&self, y: &[f64]) -> f64 {
+        self.base.solid_lithium(&y[..self.n_base])
+    }
+
+    fn open_circuit_voltage(&self, y: &[f64]) -> f64 {
+        self.base.open_circuit_voltage(&y[..self.n_base])
+    }
+}
+
+impl PhysicsModel for Augmented {
+    fn electrochem(&self) -> &Electrochem {
+        self.base.electrochem()
+    }
+    fn set_params(&mut self, params: ParameterSet) {
+        self.base.set_params(params);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geometry::{MeshSizes, ModelBuilder};
+    use crate::models::ModelKind;
+    use crate::protocol::{Protocol, Step};
+    use crate::simulation::{SimOptions, simulate};
+
+    fn run(submodels: Submodels, p: &ParameterSet, protocol: &Protocol, t_eval: Vec<f64>) -> Vec<f64> {
+        let mut builder = ModelBuilder::new(ModelKind::Spm, submodels, MeshSizes::default());
+        let built = builder.build(p).unwrap();
+        let mut opts = SimOptions::for_cell(p);
+        opts.t_eval = Some(t_eval);
+        opts.solver.rtol = 1e-9;
+        opts.solver.atol = 1e-9;
+        simulate(built.model.as_ref(), &mut built.workspace, protocol, &opts, None).unwrap().voltage
+    }
+
+    /// The RC element adds `-I R (1 - exp(-t / (R C)))` during a current step and
+    /// `-I R (1 - exp(-T/RC)) exp(-(t - T)/(R C))` in the rest after it (analytic solution
+    /// of the linear ODE), on top of the unchanged SPM voltage.
+    #[test]
+    fn rc_element_matches_the_analytic_step_response() {
+        let mut p = crate::params::chen2020();
+        p.cell.rc_resistance = 0.012;
+        p.cell.rc_capacitance = 800.0;
+        let tau = 0.012 * 800.0;
+        let protocol = Protocol { steps: vec![Step::Current { current: 5.0, duration: 30.0 }, Step::Rest { duration: 60.0 }] };
+        let t: Vec<f64> = (0..=90).map(f64::from).collect();
+        let plain = run(Submodels::default(), &p, &protocol, t.clone());
+        let rc = run(Submodels { rc: true, ..Default::default() }, &p, &protocol, t.clone());
+        for (k, &tk) in t.iter().enumerate().skip(1) {
+            let v = if tk <= 30.0 {
+                5.0 * 0.012 * (1.0 - (-tk / tau).exp())
+            } else {
+                5.0 * 0.012 * (1.0 - (-30.0 / tau).exp()) * (-(tk - 30.0) / tau).exp()
+            };
+            let got = plain[k] - rc[k];
+            assert!((got - v).abs() < 2e-6, "t = {tk}: RC drop {got} vs analytic {v}");
+        }
+    }
+
+    /// Hysteresis: with `h(0) = 0`, a discharge at current `I` gives
+    /// `h = -(1 - exp(-k I t / (3600 Q)))` and the voltage offset `M h` holds through a rest.
+    #[test]
+    fn hysteresis_state_matches_the_analytic_solution() {
+        let mut p = crate::params::chen2020();
+        p.cell.hysteresis_voltage = 0.02;
+        p.cell.hysteresis_rate = 20.0;
+        let protocol = Protocol { steps: vec![Step::Current { current: 5.0, duration: 600.0 }, Step::Rest { duration: 300.0 }] };
+        let t: Vec<f64> = (0..=18).map(|k| 50.0 * f64::from(k)).collect();
+        let plain = run(Submodels::default(), &p, &protocol, t.clone());
+        let hyst = run(Submodels { hysteresis: true, ..Default::default() }, &p, &protocol, t.clone());
+        let rate = 20.0 * 5.0 / (3600.0 * p.cell.nominal_capacity);
+        for (k, &tk) in t.iter().enumerate() {
+            let h = -(1.0 - (-rate * tk.min(600.0)).exp());
+            let got = hyst[k] - plain[k];
+            assert!((got - 0.02 * h).abs() < 2e-6, "t = {tk}: offset {got} vs {}", 0.02 * h);
+        }
+    }
+
+    /// The wrapper leaves the wrapped model's states, temperature and lithium alone, and the
+    /// builder re-uses it when only non-geometric parameters change.
+    #[test]
+    fn wrapper_appends_states_and_survives_parameter_changes() {
+        let p = crate::params::chen2020();
+        let sub = Submodels { rc: true, hysteresis: true, thermal: true, ..Default::default() };
+        let mut builder = ModelBuilder::new(ModelKind::Spm, sub, MeshSizes::default());
+        let plain_len = ModelBuilder::new(ModelKind::Spm, Submodels { thermal: true, ..Default::default() }, MeshSizes::default())
+            .build(&p)
+            .unwrap()
+            .model
+            .len();
+        let built = builder.build(&p).unwrap();
+        assert_eq!(built.model.len(), plain_len + 2);
+        assert_eq!(built.model.name(), "SPM+RC+hysteresis");
+        let y = built.model.initial_state();
+        assert_eq!(built.model.temperature(&y), p.thermal.initial_temperature);
+        let mut q = p.clone();
+        q.cell.hysteresis_initial = 0.5;
+        q.cell.hysteresis_voltage = 0.01;
+        let v0 = builder.build(&p).unwrap().model.voltage(&y, 0.0);
+        let built = builder.build(&q).unwrap();
+        let y = built.model.initial_state();
+        assert_eq!(y[y.len() - 1], 0.5);
+        assert!((built.model.voltage(&y, 0.0) - v0 - 0.005).abs() < 1e-12);
+        assert_eq!(builder.rebuild_count(), 1);
+    }
+}
