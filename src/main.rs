@@ -143,6 +143,12 @@ enum Command {
         /// Number of candidates refitted (best screening scores first).
         #[arg(long, default_value_t = 5)]
         refits: usize,
+        /// Start the models from the rest state at the first recorded voltage.
+        #[arg(long)]
+        start_at_rest: bool,
+        /// Diagnose again with each named effect added, up to this many rounds.
+        #[arg(long, default_value_t = 3)]
+        max_rounds: usize,
         /// Output folder.
         #[arg(long, default_value = "out/diagnosis")]
         out: PathBuf,
@@ -171,8 +177,8 @@ fn read_toml<T: serde::de::DeserializeOwned>(path: &PathBuf) -> Result<T, Error>
 
 fn run(cli: Cli) -> Result<(), Error> {
     match cli.command {
-        Command::Diagnose { model, data, params, contact_resistance, thermal, fit, refits, out } => {
-            use cellstudio::diagnose::{DiagnoseOptions, diagnose, default_fit_parameter, report};
+        Command::Diagnose { model, data, params, contact_resistance, thermal, fit, refits, start_at_rest, max_rounds, out } => {
+            use cellstudio::diagnose::{DiagnoseOptions, default_fit_parameter, diagnose_rounds, report};
             let p = match &params {
                 Some(path) => ParameterSet::from_file(path)?,
                 None => chen2020(),
@@ -182,9 +188,12 @@ fn run(cli: Cli) -> Result<(), Error> {
             let mut options = DiagnoseOptions::new(cellstudio::problem::fitting::ModelSpec::new(model, submodels));
             options.fitted = fit.iter().map(|path| default_fit_parameter(path, &p)).collect::<Result<_, _>>()?;
             options.max_refits = refits;
-            let d = diagnose(&rec, &p, &options)?;
-            println!("{}", report::markdown(&d, &[]));
-            for f in report::write(&d, &out)? {
+            options.fit.start_at_rest = start_at_rest;
+            let rounds = diagnose_rounds(&rec, &p, &options, max_rounds)?;
+            for (k, d) in rounds.iter().enumerate() {
+                println!("{}# Round {} of {}\n\n{}", if k > 0 { "\n" } else { "" }, k + 1, rounds.len(), report::markdown(d, &[]));
+            }
+            for f in report::write(&rounds, &out)? {
                 println!("wrote            {}", f.display());
             }
             Ok(())

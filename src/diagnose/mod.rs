@@ -14,7 +14,11 @@
 //! 4. Report: plain words, numbers and plots ([`report`], `crate::report::diagnosis_plot`).
 //!
 //! "Missing physics found" needs the first-ranked candidate to beat the user's model by
-//! `min_delta_bic` and to cut the hold-out RMSE by at least `min_holdout_gain`.
+//! `min_delta_bic` on the training points, and on the held-out points to cut the RMSE by at
+//! least `min_holdout_gain` with a Gaussian log-likelihood ratio
+//! `n_h ln(MSE_user / MSE_candidate)` above `min_holdout_llr` (the second guards a small
+//! relative cut on a long recording, the first a large ratio near the noise floor).
+//! [`diagnose_rounds`] repeats the diagnosis on the augmented model to find a second effect.
 
 pub mod candidates;
 pub mod features;
@@ -62,12 +66,18 @@ pub struct DiagnoseOptions {
     pub min_delta_bic: f64,
     /// Least relative cut of the hold-out RMSE for "missing physics found" (-).
     pub min_holdout_gain: f64,
+    /// Least hold-out log-likelihood ratio `n_h ln(MSE_user / MSE_candidate)` (-).
+    pub min_holdout_llr: f64,
     pub fit: FitSettings,
+    /// The user's model already fitted on this recording with these settings (e.g. by the
+    /// previous round): used as it is instead of fitting it again.
+    pub fitted_baseline: Option<FitOutcome>,
 }
 
 impl DiagnoseOptions {
-    /// Defaults: 8 blocks with every 4th held out (25 %), 5 refits, ΔBIC > 10 and a hold-out
-    /// RMSE cut by at least 20 %, L-BFGS-B with sensitivity gradients.
+    /// Defaults: 8 blocks with every 4th held out (25 %), 5 refits, ΔBIC > 10, a hold-out
+    /// RMSE cut by at least 10 % with a hold-out log-likelihood ratio above 10, L-BFGS-B with
+    /// sensitivity gradients.
     pub fn new(spec: ModelSpec) -> Self {
         Self {
             spec,
@@ -76,8 +86,10 @@ impl DiagnoseOptions {
             holdout_every: 4,
             max_refits: 5,
             min_delta_bic: 10.0,
-            min_holdout_gain: 0.2,
-            fit: FitSettings { optimiser: "lbfgsb".into(), max_evaluations: 300, seed: 0 },
+            min_holdout_gain: 0.1,
+            min_holdout_llr: 10.0,
+            fit: FitSettings { optimiser: "lbfgsb".into(), max_evaluations: 300, seed: 0, start_at_rest: false },
+            fitted_baseline: None,
         }
     }
 
@@ -114,8 +126,34 @@ pub struct CandidateOutcome {
     pub delta_aic: f64,
     /// `1 - RMSE_holdout(candidate) / RMSE_holdout(user)` (-).
     pub holdout_gain: f64,
-    /// Whether it clears both margins.
+    /// `n_h ln(MSE_holdout(user) / MSE_holdout(candidate))` (-).
+    pub holdout_llr: f64,
+    /// Whether it clears the margins.
     pub clears_margins: bool,
+    /// The augmented model with its fitted values as starting values, for a next round.
+    #[serde(skip)]
+    pub next: Option<NextModel>,
+}
+
+/// A model to diagnose further: the accepted candidate added to the previous model.
+#[derive(Clone, Debug)]
+pub struct NextModel {
+    pub spec: ModelSpec,
+    pub base: ParameterSet,
+    pub fitted: Vec<FitParameter>,
+}
+
+/// The model in words, e.g. "SPM + contact resistance + RC".
+pub fn describe(spec: &ModelSpec) -> String {
+    let s = spec.submodels;
+    let mut out = spec.kind.to_string();
+    for (on, name) in [(s.contact_resistance, "contact resistance"), (s.thermal, "thermal"), (s.rc, "RC"), (s.hysteresis, "hysteresis")] {
+        if on {
+            out.push_str(" + ");
+            out.push_str(name);
+        }
+    }
+    out
 }
 
 /// The outcome of a diagnosis.
@@ -130,6 +168,7 @@ pub struct Diagnosis {
     pub holdout_every: usize,
     pub min_delta_bic: f64,
     pub min_holdout_gain: f64,
+    pub min_holdout_llr: f64,
     /// The user's model, fitted as asked.
     pub baseline: FitOutcome,
     /// Its residual.
@@ -171,15 +210,18 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
         });
     }
     let spec = options.spec;
-    let baseline = refit::fit_and_score(
-        format!("{} as given", spec.kind),
-        spec,
-        base.clone(),
-        options.fitted.clone(),
-        data,
-        &split,
-        &options.fit,
-    )?;
+    let baseline = match &options.fitted_baseline {
+        Some(b) if b.voltage.len() == data.time.len() && b.names.len() == options.fitted.len() => b.clone(),
+        _ => refit::fit_and_score(
+            format!("{} as given", describe(&spec)),
+            spec,
+            base.clone(),
+            options.fitted.clone(),
+            data,
+            &split,
+            &options.fit,
+        )?,
+    };
     // The baseline's fitted values start every candidate fit.
     let mut warm = options.fitted.clone();
     for (p, v) in warm.iter_mut().zip(&baseline.values) {
@@ -220,7 +262,9 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
                 delta_bic: f64::NAN,
                 delta_aic: f64::NAN,
                 holdout_gain: f64::NAN,
+                holdout_llr: f64::NAN,
                 clears_margins: false,
+                next: None,
             };
             let Some(aug) = aug else {
                 out.note = Some("not applicable to this model".into());
@@ -230,15 +274,41 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
                 out.note = Some("not refitted: weaker signature than the refitted candidates".into());
                 return out;
             }
-            let mut params = warm.clone();
-            params.extend(aug.extra);
-            let label = format!("{} + {}", spec.kind, aug.change);
-            match refit::fit_and_score(label, aug.spec, aug.base, params, data, &split, &options.fit) {
+            let label = describe(&aug.spec);
+            // From the user's fitted values and, when they were fitted, also from the user's
+            // starting values (a fit that compensated a missing effect can mislead); the
+            // lower training error wins.
+            let starts: Vec<&Vec<FitParameter>> = if options.fitted.is_empty() { vec![&warm] } else { vec![&warm, &options.fitted] };
+            let fits = starts.into_iter().map(|start| {
+                let mut params = start.clone();
+                params.extend(aug.extra.iter().cloned());
+                refit::fit_and_score(label.clone(), aug.spec, aug.base.clone(), params, data, &split, &options.fit)
+            });
+            let best = fits.reduce(|a, b| match (a, b) {
+                (Ok(a), Ok(b)) => Ok(if b.rmse_train < a.rmse_train { b } else { a }),
+                (Ok(a), Err(_)) | (Err(_), Ok(a)) => Ok(a),
+                (Err(e), Err(_)) => Err(e),
+            });
+            match best.expect("at least one start") {
                 Ok(f) => {
                     out.delta_bic = baseline.bic - f.bic;
                     out.delta_aic = baseline.aic - f.aic;
                     out.holdout_gain = 1.0 - f.rmse_holdout / baseline.rmse_holdout;
-                    out.clears_margins = out.delta_bic > options.min_delta_bic && out.holdout_gain >= options.min_holdout_gain;
+                    out.holdout_llr = 2.0 * split.holdout_points() as f64 * (baseline.rmse_holdout / f.rmse_holdout).ln();
+                    out.clears_margins = out.delta_bic > options.min_delta_bic
+                        && out.holdout_gain >= options.min_holdout_gain
+                        && out.holdout_llr > options.min_holdout_llr;
+                    let fitted = f
+                        .names
+                        .iter()
+                        .zip(&f.values)
+                        .map(|(name, v)| {
+                            let mut p = warm.iter().chain(&aug.extra).find(|p| &p.path == name).expect("fitted parameter").clone();
+                            p.initial = v.clamp(p.lower, p.upper);
+                            p
+                        })
+                        .collect();
+                    out.next = Some(NextModel { spec: aug.spec, base: aug.base.clone(), fitted });
                     out.fit = Some(f);
                 }
                 Err(e) => out.note = Some(format!("fit failed: {e}")),
@@ -258,7 +328,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
         locate::analyse(data, &features, &r, q)
     });
     let mut diagnosis = Diagnosis {
-        model: spec.kind.to_string(),
+        model: describe(&spec),
         points: features.valid.iter().filter(|v| **v).count(),
         train_points: split.train_points(),
         holdout_points: split.holdout_points(),
@@ -266,6 +336,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
         holdout_every: options.holdout_every,
         min_delta_bic: options.min_delta_bic,
         min_holdout_gain: options.min_holdout_gain,
+        min_holdout_llr: options.min_holdout_llr,
         baseline,
         residual: analysis,
         candidates: outcomes,
@@ -279,4 +350,23 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
     diagnosis.summary = report::plain_words(&diagnosis);
     diagnosis.seconds = start.elapsed().as_secs_f64();
     Ok(diagnosis)
+}
+
+/// Diagnoses repeatedly: after a round names a missing effect, the next round starts from
+/// the model with that effect added (its fitted values as starting values), until a round
+/// finds nothing or `max_rounds` rounds ran. Returns every round.
+pub fn diagnose_rounds(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions, max_rounds: usize) -> Result<Vec<Diagnosis>, Error> {
+    let mut rounds: Vec<Diagnosis> = Vec::new();
+    let (mut base, mut options) = (base.clone(), options.clone());
+    while rounds.len() < max_rounds.max(1) {
+        let d = diagnose(data, &base, &options)?;
+        let next = if d.found { d.best().and_then(|c| c.next.clone().zip(c.fit.clone())) } else { None };
+        rounds.push(d);
+        let Some((next, fit)) = next else { break };
+        base = next.base;
+        options.spec = next.spec;
+        options.fitted = next.fitted;
+        options.fitted_baseline = Some(fit);
+    }
+    Ok(rounds)
 }

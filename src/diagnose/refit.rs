@@ -56,6 +56,9 @@ pub struct FitSettings {
     pub optimiser: String,
     pub max_evaluations: usize,
     pub seed: u64,
+    /// Start every model from the rest state whose OCV is the first recorded voltage
+    /// (keeping each parameter set's cyclable lithium); needs a recording that starts at rest.
+    pub start_at_rest: bool,
 }
 
 /// One fitted model, scored.
@@ -101,7 +104,10 @@ pub fn fit_and_score(
 ) -> Result<FitOutcome, Error> {
     let start = std::time::Instant::now();
     let k = parameters.len();
-    let problem = FittingProblem::new(spec, base, parameters, data.clone())?.with_weights(split.train.clone())?;
+    let mut problem = FittingProblem::new(spec, base, parameters, data.clone())?.with_weights(split.train.clone())?;
+    if settings.start_at_rest {
+        problem = problem.starting_at_rest()?;
+    }
     let (names, values, std_errors, voltage, evaluations) = if k == 0 {
         (Vec::new(), Vec::new(), Vec::new(), problem.simulate(&[])?, 1)
     } else {
@@ -143,6 +149,6 @@ mod tests {
         assert!(s.holdout[20] && s.holdout[29] && s.holdout[60] && !s.holdout[19] && !s.holdout[30]);
         assert!(!s.holdout[21] && s.train[21] == 0.0);
         assert_eq!(s.holdout_points(), 19);
-        assert_eq!(s.train_points(), 59);
+        assert_eq!(s.train_points(), 60);
     }
 }

@@ -89,6 +89,15 @@ pub fn locate_in_words(a: &ResidualAnalysis) -> String {
     if a.rest_rms > 0.0 && a.load_rms > 0.0 {
         let _ = write!(s, " RMS under load {}, at rest {}.", mv(a.load_rms), mv(a.rest_rms));
     }
+    let (dis, cha) = (a.rest_after_discharge, a.rest_after_charge);
+    if dis.is_finite() && cha.is_finite() && dis * cha < 0.0 && (dis - cha).abs() > 3.0 * a.noise {
+        let _ = write!(
+            s,
+            " At rest it is {} after discharges and {} after charges: its sign follows the direction of the last current.",
+            mv(dis),
+            mv(cha)
+        );
+    }
     if let Some(r) = a.vs_capacity
         && r.r2 > 0.5
     {
@@ -144,25 +153,28 @@ pub fn plain_words(d: &Diagnosis) -> String {
     if d.found {
         let _ = write!(
             s,
-            " Missing physics: {} ({}){with}. Adding it cuts the RMSE from {} to {} (hold-out {} -> {}), ΔBIC = {:.0}.",
+            " Missing physics: {} ({}){with}. Adding it cuts the RMSE from {} to {} (hold-out {} -> {}), ΔBIC = {:.0}, hold-out log-likelihood ratio {:.0}.",
             best.name,
             best.change,
             mv(b.rmse_all),
             mv(f.rmse_all),
             mv(b.rmse_holdout),
             mv(f.rmse_holdout),
-            best.delta_bic
+            best.delta_bic,
+            best.holdout_llr
         );
     } else {
         let _ = write!(
             s,
-            " No missing physics found with a clear margin: the best candidate, {} ({}), changes BIC by {:.1} and the hold-out RMSE by {:.0} % (needs ΔBIC > {} and a cut of {:.0} %).",
+            " No missing physics found with a clear margin: the best candidate, {} ({}), improves BIC by {:.1} and cuts the hold-out RMSE by {:.1} % (log-likelihood ratio {:.1}); needed: ΔBIC > {}, a cut of {:.0} % and a ratio above {}.",
             best.name,
             best.change,
             best.delta_bic,
-            -100.0 * best.holdout_gain,
+            100.0 * best.holdout_gain,
+            best.holdout_llr,
             d.min_delta_bic,
-            100.0 * d.min_holdout_gain
+            100.0 * d.min_holdout_gain,
+            d.min_holdout_llr
         );
     }
     s
@@ -171,7 +183,7 @@ pub fn plain_words(d: &Diagnosis) -> String {
 fn candidate_row(c: &CandidateOutcome, rank: usize) -> String {
     match &c.fit {
         Some(f) => format!(
-            "| {rank} | {} | {} | {:.2} | {} | {:.2} | {:.2} | {:.2} | {:.1} | {:.1} | {:.0} % | {} | {:.1} |",
+            "| {rank} | {} | {} | {:.2} | {} | {:.2} | {:.2} | {:.2} | {:.1} | {:.1} | {:.0} % | {:.0} | {} | {:.1} |",
             c.name,
             c.change,
             c.screen_score,
@@ -182,11 +194,12 @@ fn candidate_row(c: &CandidateOutcome, rank: usize) -> String {
             c.delta_bic,
             c.delta_aic,
             100.0 * c.holdout_gain,
+            c.holdout_llr,
             if c.clears_margins { "yes" } else { "no" },
             f.seconds
         ),
         None => format!(
-            "| - | {} | {} | {:.2} | | | | | | | | {} | |",
+            "| - | {} | {} | {:.2} | | | | | | | | | {} | |",
             c.name,
             c.change,
             c.screen_score,
@@ -218,9 +231,9 @@ pub fn markdown(d: &Diagnosis, plots: &[(String, String)]) -> String {
     );
     let _ = writeln!(
         s,
-        "| rank | candidate | change | screen R² | fitted | RMSE train (mV) | RMSE hold-out (mV) | RMSE all (mV) | ΔBIC | ΔAIC | hold-out cut | clears margins | time (s) |"
+        "| rank | candidate | change | screen R² | fitted | RMSE train (mV) | RMSE hold-out (mV) | RMSE all (mV) | ΔBIC | ΔAIC | hold-out cut | hold-out LLR | clears margins | time (s) |"
     );
-    let _ = writeln!(s, "|---|---|---|---|---|---|---|---|---|---|---|---|---|");
+    let _ = writeln!(s, "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|");
     let mut rank = 0;
     for c in &d.candidates {
         rank += usize::from(c.fit.is_some());
@@ -271,6 +284,7 @@ fn residual_section(s: &mut String, a: &ResidualAnalysis) {
     let sr = &a.step_response;
     let _ = writeln!(s, "| jump at {} current steps | {:.3} mOhm x ΔI, R² = {:.3} |", sr.steps, sr.instantaneous_resistance * 1e3, sr.r2);
     let _ = writeln!(s, "| RMS under load / at rest | {} / {} |", mv(a.load_rms), mv(a.rest_rms));
+    let _ = writeln!(s, "| mean at rest after discharge / after charge | {} / {} |", mv(a.rest_after_discharge), mv(a.rest_after_charge));
     let _ = writeln!(s, "\n| time after a current step | share of load/rest points | share of their squared error | share of all squared error |\n|---|---|---|---|");
     for w in &sr.windows {
         let _ = writeln!(
@@ -299,23 +313,33 @@ fn residual_section(s: &mut String, a: &ResidualAnalysis) {
     }
 }
 
-/// Writes `diagnosis.md`, `diagnosis.json` and the plots into `dir`; returns the files.
-pub fn write(d: &Diagnosis, dir: &Path) -> Result<Vec<PathBuf>, Error> {
+/// Writes `diagnosis.md`, `diagnosis.json` and the plots of every round into `dir`; returns
+/// the files.
+pub fn write(rounds: &[Diagnosis], dir: &Path) -> Result<Vec<PathBuf>, Error> {
     fn io(path: &Path) -> impl FnOnce(std::io::Error) -> Error + '_ {
         move |source| Error::Io { path: path.display().to_string(), source }
     }
     std::fs::create_dir_all(dir).map_err(io(dir))?;
-    let plots = crate::report::diagnosis_plot::write_plots(d, dir)?;
-    let names: Vec<(String, String)> = plots
-        .iter()
-        .map(|(title, p)| (title.clone(), p.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default()))
-        .collect();
-    let md = dir.join("diagnosis.md");
-    std::fs::write(&md, markdown(d, &names)).map_err(io(&md))?;
+    let mut md = String::new();
+    let mut files = Vec::new();
+    for (k, d) in rounds.iter().enumerate() {
+        let stem = if k == 0 { "diagnosis".to_string() } else { format!("diagnosis_round{}", k + 1) };
+        let plots = crate::report::diagnosis_plot::write_plots(d, dir, &stem)?;
+        let names: Vec<(String, String)> = plots
+            .iter()
+            .map(|(title, p)| (title.clone(), p.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default()))
+            .collect();
+        if rounds.len() > 1 {
+            let _ = writeln!(md, "{}# Round {} of {}\n", if k > 0 { "\n---\n\n" } else { "" }, k + 1, rounds.len());
+        }
+        md.push_str(&markdown(d, &names));
+        files.extend(plots.into_iter().map(|(_, p)| p));
+    }
+    let md_path = dir.join("diagnosis.md");
+    std::fs::write(&md_path, md).map_err(io(&md_path))?;
     let json = dir.join("diagnosis.json");
-    let text = serde_json::to_string_pretty(d).map_err(|e| Error::Parse { path: json.display().to_string(), message: e.to_string() })?;
+    let text = serde_json::to_string_pretty(rounds).map_err(|e| Error::Parse { path: json.display().to_string(), message: e.to_string() })?;
     std::fs::write(&json, text).map_err(io(&json))?;
-    let mut files = vec![md, json];
-    files.extend(plots.into_iter().map(|(_, p)| p));
+    files.splice(0..0, [md_path, json]);
     Ok(files)
 }

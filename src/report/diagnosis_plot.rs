@@ -78,9 +78,9 @@ fn shaded_plot(path: &Path, title: &str, y_label: &str, series: &[(String, Vec<(
     root.present().map_err(|e| err(e.to_string()))
 }
 
-/// Writes `diagnosis_voltage.svg` and `diagnosis_residual.svg` into `dir`; returns (title,
-/// path) pairs.
-pub fn write_plots(d: &Diagnosis, dir: &Path) -> Result<Vec<(String, PathBuf)>, Error> {
+/// Writes `{stem}_voltage.svg` and `{stem}_residual.svg` into `dir`; returns (title, path)
+/// pairs.
+pub fn write_plots(d: &Diagnosis, dir: &Path, stem: &str) -> Result<Vec<(String, PathBuf)>, Error> {
     let rec = &d.data;
     let valid: Vec<usize> = (0..rec.time.len()).filter(|&k| !rec.is_repeated(k)).collect();
     let curve = |v: &[f64]| valid.iter().map(|&k| (rec.time[k], v[k])).collect::<Vec<_>>();
@@ -98,7 +98,7 @@ pub fn write_plots(d: &Diagnosis, dir: &Path) -> Result<Vec<(String, PathBuf)>, 
     if let Some((name, f)) = &best {
         volts.push((format!("with {name}"), curve(&f.voltage)));
     }
-    let path = dir.join("diagnosis_voltage.svg");
+    let path = dir.join(format!("{stem}_voltage.svg"));
     shaded_plot(&path, "Terminal voltage: recording and models", "Voltage (V)", &volts, &[holdout])?;
     out.push(("Voltage before and after".to_string(), path));
     let holdout = Shading { label: "held out".into(), spans: spans(&rec.time, &d.split.holdout), colour: RGBColor(120, 120, 120), alpha: 0.12 };
@@ -106,7 +106,7 @@ pub fn write_plots(d: &Diagnosis, dir: &Path) -> Result<Vec<(String, PathBuf)>, 
     if let Some((name, f)) = &best {
         res.push((format!("with {name}"), residual(&f.voltage)));
     }
-    let path = dir.join("diagnosis_residual.svg");
+    let path = dir.join(format!("{stem}_residual.svg"));
     shaded_plot(&path, "Residual V_data - V_model (mismatching segments shaded)", "Residual (mV)", &res, &[holdout, mismatch])?;
     out.push(("Residual before and after, mismatching segments".to_string(), path));
     Ok(out)
