@@ -7,7 +7,7 @@ use rand::rngs::StdRng;
 use super::metropolis::{gain, metropolis, normal_vector};
 use super::run::Recorder;
 use super::target::Counted;
-use super::{Chain, LogDensity, Progress, Sampler, SamplerOptions, Schedule, independent_chains};
+use super::{Chain, LogDensity, Progress, ChainSampler, SamplerOptions, Schedule};
 use crate::error::Result;
 
 /// Lower Cholesky factor of the symmetric `n×n` matrix `a` (row-major), with a diagonal
@@ -65,7 +65,14 @@ impl AdaptiveMetropolis {
         Ok(AdaptiveMetropolis { options })
     }
 
-    fn chain(&self, target: &dyn LogDensity, x0: &[f64], seed: u64, schedule: Schedule, progress: Progress) -> Chain {
+}
+
+impl ChainSampler for AdaptiveMetropolis {
+    fn name(&self) -> &str {
+        "adaptive-metropolis"
+    }
+
+    fn run_chain(&self, target: &dyn LogDensity, x0: &[f64], seed: u64, schedule: Schedule, progress: Progress) -> Result<Chain> {
         let counted = Counted::new(target);
         let mut rng = StdRng::seed_from_u64(seed);
         let mut rec = Recorder::new(schedule);
@@ -116,23 +123,6 @@ impl AdaptiveMetropolis {
             rec.record(it, &x, fx, f64::from(u8::from(accepted)), false);
             progress();
         }
-        rec.finish(&counted, None)
-    }
-}
-
-impl Sampler for AdaptiveMetropolis {
-    fn name(&self) -> &str {
-        "adaptive-metropolis"
-    }
-
-    fn run_chains(
-        &self,
-        target: &dyn LogDensity,
-        starts: &[Vec<f64>],
-        seeds: &[u64],
-        schedule: Schedule,
-        progress: Progress,
-    ) -> Result<Vec<Chain>> {
-        independent_chains(starts, seeds, |x0, seed| Ok(self.chain(target, x0, seed, schedule, progress)))
+        Ok(rec.finish(&counted, None))
     }
 }

@@ -104,7 +104,7 @@ pub(super) trait Dynamics: Sync {
 /// averaging (restarted after each mass-matrix update) and, with `adapt_mass_matrix`, a
 /// diagonal inverse mass matrix from the variances in Stan's windows; after warmup the step
 /// size is the dual-averaging average `ε̄` and both stay fixed.
-pub(super) fn run_chain(
+pub(super) fn run_dynamics(
     dynamics: &dyn Dynamics,
     options: &SamplerOptions,
     target: &dyn LogDensity,

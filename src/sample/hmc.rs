@@ -3,10 +3,10 @@
 use rand::Rng;
 use rand::rngs::StdRng;
 
-use super::hamiltonian::{Dynamics, InvMass, MAX_ENERGY_ERROR, Point, Step, joint, leapfrog, momentum, run_chain};
+use super::hamiltonian::{Dynamics, InvMass, MAX_ENERGY_ERROR, Point, Step, joint, leapfrog, momentum, run_dynamics};
 use super::metropolis::metropolis;
 use super::target::Counted;
-use super::{Chain, LogDensity, Progress, Sampler, SamplerOptions, Schedule, independent_chains};
+use super::{Chain, LogDensity, Progress, ChainSampler, SamplerOptions, Schedule};
 use crate::error::Result;
 
 /// `steps` leapfrog steps of size `ε·(1 + jitter·U(-1, 1))`, then a Metropolis test on the
@@ -57,20 +57,12 @@ impl Hmc {
     }
 }
 
-impl Sampler for Hmc {
+impl ChainSampler for Hmc {
     fn name(&self) -> &str {
         "hmc"
     }
 
-    fn run_chains(
-        &self,
-        target: &dyn LogDensity,
-        starts: &[Vec<f64>],
-        seeds: &[u64],
-        schedule: Schedule,
-        progress: Progress,
-    ) -> Result<Vec<Chain>> {
-        let dynamics = StaticTrajectory { steps: self.options.leapfrog_steps, jitter: 0.1, acceptance: 0.65 };
-        independent_chains(starts, seeds, |x0, seed| run_chain(&dynamics, &self.options, target, x0, seed, schedule, progress))
+    fn run_chain(&self, target: &dyn LogDensity, x0: &[f64], seed: u64, schedule: Schedule, progress: Progress) -> Result<Chain> {
+        run_dynamics(&StaticTrajectory { steps: self.options.leapfrog_steps, jitter: 0.1, acceptance: 0.65 }, &self.options, target, x0, seed, schedule, progress)
     }
 }

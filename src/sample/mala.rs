@@ -1,8 +1,8 @@
 //! Metropolis-adjusted Langevin algorithm (Roberts & Tweedie 1996).
 
-use super::hamiltonian::run_chain;
+use super::hamiltonian::run_dynamics;
 use super::hmc::StaticTrajectory;
-use super::{Chain, LogDensity, Progress, Sampler, SamplerOptions, Schedule, independent_chains};
+use super::{Chain, LogDensity, Progress, ChainSampler, SamplerOptions, Schedule};
 use crate::error::Result;
 
 /// MALA: proposal `y = x + ½ε²·M⁻¹∇log p(x) + ε·M^(-1/2)·ξ` with the Metropolis-Hastings
@@ -21,20 +21,12 @@ impl Mala {
     }
 }
 
-impl Sampler for Mala {
+impl ChainSampler for Mala {
     fn name(&self) -> &str {
         "mala"
     }
 
-    fn run_chains(
-        &self,
-        target: &dyn LogDensity,
-        starts: &[Vec<f64>],
-        seeds: &[u64],
-        schedule: Schedule,
-        progress: Progress,
-    ) -> Result<Vec<Chain>> {
-        let dynamics = StaticTrajectory { steps: 1, jitter: 0.0, acceptance: 0.574 };
-        independent_chains(starts, seeds, |x0, seed| run_chain(&dynamics, &self.options, target, x0, seed, schedule, progress))
+    fn run_chain(&self, target: &dyn LogDensity, x0: &[f64], seed: u64, schedule: Schedule, progress: Progress) -> Result<Chain> {
+        run_dynamics(&StaticTrajectory { steps: 1, jitter: 0.0, acceptance: 0.574 }, &self.options, target, x0, seed, schedule, progress)
     }
 }

@@ -6,7 +6,7 @@ use rand_distr::StandardNormal;
 
 use super::run::Recorder;
 use super::target::Counted;
-use super::{Chain, LogDensity, Progress, SamplerOptions, Sampler, Schedule, independent_chains};
+use super::{Chain, LogDensity, Progress, ChainSampler, SamplerOptions, Schedule};
 use crate::error::Result;
 
 /// Metropolis test on `log_ratio = log p(y) - log p(x)` (symmetric proposal, or with the
@@ -42,7 +42,14 @@ impl RandomWalkMetropolis {
         Ok(RandomWalkMetropolis { options })
     }
 
-    fn chain(&self, target: &dyn LogDensity, x0: &[f64], seed: u64, schedule: Schedule, progress: Progress) -> Chain {
+}
+
+impl ChainSampler for RandomWalkMetropolis {
+    fn name(&self) -> &str {
+        "rwm"
+    }
+
+    fn run_chain(&self, target: &dyn LogDensity, x0: &[f64], seed: u64, schedule: Schedule, progress: Progress) -> Result<Chain> {
         let counted = Counted::new(target);
         let mut rng = StdRng::seed_from_u64(seed);
         let mut rec = Recorder::new(schedule);
@@ -65,23 +72,6 @@ impl RandomWalkMetropolis {
             rec.record(it, &x, fx, f64::from(u8::from(accepted)), false);
             progress();
         }
-        rec.finish(&counted, None)
-    }
-}
-
-impl Sampler for RandomWalkMetropolis {
-    fn name(&self) -> &str {
-        "rwm"
-    }
-
-    fn run_chains(
-        &self,
-        target: &dyn LogDensity,
-        starts: &[Vec<f64>],
-        seeds: &[u64],
-        schedule: Schedule,
-        progress: Progress,
-    ) -> Result<Vec<Chain>> {
-        independent_chains(starts, seeds, |x0, seed| Ok(self.chain(target, x0, seed, schedule, progress)))
+        Ok(rec.finish(&counted, None))
     }
 }

@@ -102,9 +102,9 @@ pub struct Chain {
     /// `log_density[t]` = log p(`draws[t]`).
     pub log_density: Vec<f64>,
     /// Mean acceptance statistic over the kept iterations: the fraction of accepted proposals
-    /// for Metropolis-Hastings samplers (random walk, adaptive, DE-MC, MALA, HMC), the mean
-    /// Metropolis acceptance probability over the trajectory for NUTS, and 1 for slice
-    /// sampling (which always moves).
+    /// for random-walk, adaptive and DE-MC Metropolis; the mean Metropolis acceptance
+    /// probability for MALA and HMC, and its mean over the trajectory for NUTS (the statistic
+    /// their step-size adaptation targets); 1 for slice sampling (which always moves).
     pub acceptance_rate: f64,
     /// Log-density evaluations, warmup and finite-difference probes included.
     pub evaluations: usize,
@@ -132,29 +132,34 @@ pub trait Sampler: Sync {
         schedule: Schedule,
         progress: Progress,
     ) -> Result<Vec<Chain>>;
-
-    /// Runs a single chain (an error for population samplers, which need several).
-    fn run_chain(
-        &self,
-        target: &dyn LogDensity,
-        x0: &[f64],
-        seed: u64,
-        schedule: Schedule,
-        progress: Progress,
-    ) -> Result<Chain> {
-        let mut chains = self.run_chains(target, &[x0.to_vec()], &[seed], schedule, progress)?;
-        Ok(chains.remove(0))
-    }
 }
 
-/// Runs independent chains in parallel with `run` (start, seed) -> chain; results in input
-/// order.
-pub(crate) fn independent_chains(
-    starts: &[Vec<f64>],
-    seeds: &[u64],
-    run: impl Fn(&[f64], u64) -> Result<Chain> + Sync,
-) -> Result<Vec<Chain>> {
-    starts.par_iter().zip(seeds.par_iter()).map(|(x0, &seed)| run(x0, seed)).collect()
+/// A sampler whose chains are independent: implementing one chain makes it a [`Sampler`]
+/// that runs the chains in parallel with rayon (results in start order).
+pub trait ChainSampler: Sync {
+    /// Canonical name, as accepted by [`by_name`].
+    fn name(&self) -> &str;
+
+    /// Runs one chain from `x0` (finite log density) with its own generator seeded by `seed`.
+    fn run_chain(&self, target: &dyn LogDensity, x0: &[f64], seed: u64, schedule: Schedule, progress: Progress)
+    -> Result<Chain>;
+}
+
+impl<T: ChainSampler> Sampler for T {
+    fn name(&self) -> &str {
+        ChainSampler::name(self)
+    }
+
+    fn run_chains(
+        &self,
+        target: &dyn LogDensity,
+        starts: &[Vec<f64>],
+        seeds: &[u64],
+        schedule: Schedule,
+        progress: Progress,
+    ) -> Result<Vec<Chain>> {
+        starts.par_iter().zip(seeds.par_iter()).map(|(x0, &seed)| self.run_chain(target, x0, seed, schedule, progress)).collect()
+    }
 }
 
 /// Canonical sampler names accepted by [`by_name`].

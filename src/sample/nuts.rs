@@ -4,9 +4,9 @@
 use rand::Rng;
 use rand::rngs::StdRng;
 
-use super::hamiltonian::{Dynamics, InvMass, MAX_ENERGY_ERROR, Point, Step, joint, leapfrog, momentum, run_chain, velocity};
+use super::hamiltonian::{Dynamics, InvMass, MAX_ENERGY_ERROR, Point, Step, joint, leapfrog, momentum, run_dynamics, velocity};
 use super::target::Counted;
-use super::{Chain, LogDensity, Progress, Sampler, SamplerOptions, Schedule, independent_chains};
+use super::{Chain, LogDensity, Progress, ChainSampler, SamplerOptions, Schedule};
 use crate::error::Result;
 
 /// A trajectory end: position and momentum.
@@ -150,20 +150,12 @@ impl Nuts {
     }
 }
 
-impl Sampler for Nuts {
+impl ChainSampler for Nuts {
     fn name(&self) -> &str {
         "nuts"
     }
 
-    fn run_chains(
-        &self,
-        target: &dyn LogDensity,
-        starts: &[Vec<f64>],
-        seeds: &[u64],
-        schedule: Schedule,
-        progress: Progress,
-    ) -> Result<Vec<Chain>> {
-        let dynamics = NoUTurn { max_depth: self.options.max_tree_depth };
-        independent_chains(starts, seeds, |x0, seed| run_chain(&dynamics, &self.options, target, x0, seed, schedule, progress))
+    fn run_chain(&self, target: &dyn LogDensity, x0: &[f64], seed: u64, schedule: Schedule, progress: Progress) -> Result<Chain> {
+        run_dynamics(&NoUTurn { max_depth: self.options.max_tree_depth }, &self.options, target, x0, seed, schedule, progress)
     }
 }

@@ -6,7 +6,7 @@ use rand_distr::Exp1;
 
 use super::run::Recorder;
 use super::target::Counted;
-use super::{Chain, LogDensity, Progress, Sampler, SamplerOptions, Schedule, independent_chains};
+use super::{Chain, LogDensity, Progress, ChainSampler, SamplerOptions, Schedule};
 use crate::error::Result;
 
 /// Slice sampling, one coordinate at a time in a fixed order: the slice level is
@@ -69,7 +69,14 @@ impl SliceSampler {
         }
     }
 
-    fn chain(&self, target: &dyn LogDensity, x0: &[f64], seed: u64, schedule: Schedule, progress: Progress) -> Chain {
+}
+
+impl ChainSampler for SliceSampler {
+    fn name(&self) -> &str {
+        "slice"
+    }
+
+    fn run_chain(&self, target: &dyn LogDensity, x0: &[f64], seed: u64, schedule: Schedule, progress: Progress) -> Result<Chain> {
         let counted = Counted::new(target);
         let mut rng = StdRng::seed_from_u64(seed);
         let mut rec = Recorder::new(schedule);
@@ -93,23 +100,6 @@ impl SliceSampler {
             rec.record(it, &x, fx, 1.0, false);
             progress();
         }
-        rec.finish(&counted, None)
-    }
-}
-
-impl Sampler for SliceSampler {
-    fn name(&self) -> &str {
-        "slice"
-    }
-
-    fn run_chains(
-        &self,
-        target: &dyn LogDensity,
-        starts: &[Vec<f64>],
-        seeds: &[u64],
-        schedule: Schedule,
-        progress: Progress,
-    ) -> Result<Vec<Chain>> {
-        independent_chains(starts, seeds, |x0, seed| Ok(self.chain(target, x0, seed, schedule, progress)))
+        Ok(rec.finish(&counted, None))
     }
 }
