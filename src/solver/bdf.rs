@@ -133,6 +133,12 @@ impl Workspace {
         self.pattern.n_colours()
     }
 
+    /// Entries of the LU factors of the Newton matrix, fill included (zero fill means the
+    /// factors have as many entries as the pattern plus the diagonal).
+    pub fn factor_nnz(&self) -> usize {
+        self.system.factor_nnz()
+    }
+
     /// Factorises the Newton matrix of the algebraic rows alone, `diag(mass) + J_aa`
     /// (identity on differential rows), for consistent initialisation; `f0 = f(y)`.
     pub fn factorise_algebraic(
