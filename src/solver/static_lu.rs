@@ -135,19 +135,14 @@ impl StaticLu {
         for (zi, &p) in z.iter_mut().zip(&self.perm) {
             *zi = b[p];
         }
-        for i in 0..self.n {
-            let mut s = z[i];
-            for p in self.row_ptr[i]..self.diag_pos[i] {
-                s -= vals[p] * z[cols[p]];
-            }
-            z[i] = s;
+        let rows = self.row_ptr.windows(2).zip(&self.diag_pos);
+        for (i, (r, &d)) in rows.clone().enumerate() {
+            let lower = cols[r[0]..d].iter().zip(&vals[r[0]..d]);
+            z[i] = lower.fold(z[i], |s, (&c, &v)| s - v * z[c]);
         }
-        for i in (0..self.n).rev() {
-            let mut s = z[i];
-            for p in self.diag_pos[i] + 1..self.row_ptr[i + 1] {
-                s -= vals[p] * z[cols[p]];
-            }
-            z[i] = s * self.inv_diag[i];
+        for (i, ((r, &d), &inv)) in rows.zip(&self.inv_diag).enumerate().rev() {
+            let upper = cols[d + 1..r[1]].iter().zip(&vals[d + 1..r[1]]);
+            z[i] = upper.fold(z[i], |s, (&c, &v)| s - v * z[c]) * inv;
         }
         for (zi, &p) in z.iter().zip(&self.perm) {
             b[p] = *zi;
