@@ -62,7 +62,8 @@ fn correlation(result: &SampleResult) -> f64 {
 }
 
 /// Checks a summary against known means and standard deviations: mean within 4 Monte-Carlo
-/// standard errors (true sd / sqrt(ESS)), sd within `sd_tol` relative, R-hat below 1.05.
+/// standard errors (true sd / sqrt(ESS)), sd within `sd_tol` relative, split and
+/// rank-normalised R-hat below 1.05.
 fn check_moments(summary: &PosteriorSummary, mean: &[f64], sd: &[f64], sd_tol: f64) {
     for (i, p) in summary.parameters.iter().enumerate() {
         let mcse = sd[i] / p.ess.sqrt();
@@ -76,6 +77,7 @@ fn check_moments(summary: &PosteriorSummary, mean: &[f64], sd: &[f64], sd_tol: f
         );
         assert!((p.sd / sd[i] - 1.0).abs() < sd_tol, "{}: {} sd {} vs {}\n{summary}", summary.sampler, p.name, p.sd, sd[i]);
         assert!(p.rhat < 1.05, "{}: {} R-hat {}\n{summary}", summary.sampler, p.name, p.rhat);
+        assert!(p.rank_rhat < 1.05, "{}: {} rank R-hat {}\n{summary}", summary.sampler, p.name, p.rank_rhat);
     }
 }
 

@@ -41,7 +41,13 @@ pub fn trace_plot<S: AsRef<str>>(path: &Path, title: &str, names: &[S], chains: 
             .y_label_area_size(75)
             .build_cartesian_2d(0.0..length as f64, y0..y1)
             .map_err(|e| err(e.to_string()))?;
-        chart.configure_mesh().x_desc("iteration").y_desc(name_of(names, i)).draw().map_err(|e| err(e.to_string()))?;
+        chart
+            .configure_mesh()
+            .x_desc("iteration")
+            .y_desc(name_of(names, i))
+            .x_label_formatter(&|v| format!("{v:.0}"))
+            .draw()
+            .map_err(|e| err(e.to_string()))?;
         for (k, chain) in chains.iter().enumerate() {
             let colour = Palette99::pick(k).to_rgba();
             chart
@@ -111,7 +117,7 @@ pub fn marginal_histograms<S: AsRef<str>>(
             .x_labels(5)
             .draw()
             .map_err(|e| err(e.to_string()))?;
-        let colour = Palette99::pick(0).to_rgba();
+        let colour = Palette99::pick(3).to_rgba();
         chart
             .draw_series(counts.iter().enumerate().map(|(b, &c)| {
                 let left = x0 + b as f64 * width;

@@ -64,6 +64,70 @@ pub fn split_rhat(chains: &[Vec<f64>]) -> f64 {
     (var_plus / w).sqrt()
 }
 
+/// Inverse of the standard normal distribution function, `Φ⁻¹(p)` for `p` in (0, 1)
+/// (Acklam's rational approximation, relative error below 1.2e-9).
+fn normal_quantile(p: f64) -> f64 {
+    const A: [f64; 6] = [-3.969683028665376e1, 2.209460984245205e2, -2.759285104469687e2, 1.38357751867269e2, -3.066479806614716e1, 2.506628277459239];
+    const B: [f64; 5] = [-5.447609879822406e1, 1.615858368580409e2, -1.556989798598866e2, 6.680131188771972e1, -1.328068155288572e1];
+    const C: [f64; 6] = [-7.784894002430293e-3, -3.223964580411365e-1, -2.400758277161838, -2.549732539343734, 4.374664141464968, 2.938163982698783];
+    const D: [f64; 4] = [7.784695709041462e-3, 3.224671290700398e-1, 2.445134137142996, 3.754408661907416];
+    let tail = |q: f64| {
+        (((((C[0] * q + C[1]) * q + C[2]) * q + C[3]) * q + C[4]) * q + C[5]) / ((((D[0] * q + D[1]) * q + D[2]) * q + D[3]) * q + 1.0)
+    };
+    if p < 0.02425 {
+        tail((-2.0 * p.ln()).sqrt())
+    } else if p > 1.0 - 0.02425 {
+        -tail((-2.0 * (1.0 - p).ln()).sqrt())
+    } else {
+        let q = p - 0.5;
+        let r = q * q;
+        (((((A[0] * r + A[1]) * r + A[2]) * r + A[3]) * r + A[4]) * r + A[5]) * q
+            / (((((B[0] * r + B[1]) * r + B[2]) * r + B[3]) * r + B[4]) * r + 1.0)
+    }
+}
+
+/// Rank normalisation over all chains: each draw becomes `Φ⁻¹((r - 3/8) / (S + 1/4))`, `r` its
+/// pooled rank (ties averaged), `S` the number of draws.
+fn rank_normalise(chains: &[Vec<f64>]) -> Vec<Vec<f64>> {
+    let mut order: Vec<(f64, usize, usize)> =
+        chains.iter().enumerate().flat_map(|(c, x)| x.iter().enumerate().map(move |(t, &v)| (v, c, t))).collect();
+    order.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let total = order.len() as f64;
+    let mut z: Vec<Vec<f64>> = chains.iter().map(|c| vec![0.0; c.len()]).collect();
+    let mut i = 0;
+    while i < order.len() {
+        let mut j = i;
+        while j + 1 < order.len() && order[j + 1].0 == order[i].0 {
+            j += 1;
+        }
+        let rank = 0.5 * ((i + 1) + (j + 1)) as f64;
+        let value = normal_quantile((rank - 0.375) / (total + 0.25));
+        for &(_, c, t) in &order[i..=j] {
+            z[c][t] = value;
+        }
+        i = j + 1;
+    }
+    z
+}
+
+/// Rank-normalised split R-hat (Vehtari, Gelman, Simpson, Carpenter & Bürkner 2021): the
+/// larger of the split R-hat of the rank-normalised draws (bulk) and of the rank-normalised
+/// distances from the pooled median (tail). Unlike [`split_rhat`] it detects chains that
+/// differ in scale only, and it is defined for heavy-tailed posteriors. Recommended threshold:
+/// 1.01.
+pub fn rank_normalised_rhat(chains: &[Vec<f64>]) -> f64 {
+    let mut pooled: Vec<f64> = chains.iter().flatten().copied().collect();
+    if pooled.is_empty() {
+        return f64::NAN;
+    }
+    pooled.sort_by(f64::total_cmp);
+    let median = quantile(&pooled, 0.5);
+    let folded: Vec<Vec<f64>> = chains.iter().map(|c| c.iter().map(|v| (v - median).abs()).collect()).collect();
+    let bulk = split_rhat(&rank_normalise(chains));
+    let tail = split_rhat(&rank_normalise(&folded));
+    if bulk.is_nan() || tail.is_nan() { f64::NAN } else { bulk.max(tail) }
+}
+
 /// Autocovariance at `lag` (divided by the chain length, as Geyer's estimator needs).
 fn autocovariance(x: &[f64], m: f64, lag: usize) -> f64 {
     let n = x.len();
@@ -150,6 +214,29 @@ mod tests {
         let ess = effective_sample_size(&chains);
         assert!((ess / expected - 1.0).abs() < 0.1, "ess {ess} expected {expected}");
         assert!((split_rhat(&chains) - 1.0).abs() < 0.01);
+    }
+
+    /// Two chains with the same centre and different scales: split R-hat misses it, the
+    /// folded (tail) rank-normalised R-hat does not (Vehtari et al. 2021, section 4.2).
+    #[test]
+    fn rank_normalised_rhat_detects_a_scale_difference() {
+        let mut rng = StdRng::seed_from_u64(4);
+        let chains: Vec<Vec<f64>> = [1.0, 3.0]
+            .iter()
+            .map(|s| (0..4000).map(|_| s * Distribution::<f64>::sample(&StandardNormal, &mut rng)).collect::<Vec<f64>>())
+            .collect();
+        assert!(split_rhat(&chains) < 1.01, "{}", split_rhat(&chains));
+        assert!(rank_normalised_rhat(&chains) > 1.1, "{}", rank_normalised_rhat(&chains));
+        let same: Vec<Vec<f64>> = (0..4).map(|_| (0..1000).map(|_| StandardNormal.sample(&mut rng)).collect()).collect();
+        assert!(rank_normalised_rhat(&same) < 1.01);
+    }
+
+    #[test]
+    fn normal_quantiles() {
+        // Φ⁻¹ at tabulated points.
+        for (p, z) in [(0.5, 0.0), (0.975, 1.959_963_984_540_054), (0.001, -3.090_232_306_167_813_5), (0.9999, 3.719_016_485_455_709)] {
+            assert!((normal_quantile(p) - z).abs() < 1e-8 * (1.0 + z.abs()), "{p}: {}", normal_quantile(p));
+        }
     }
 
     #[test]

@@ -5,7 +5,7 @@ use std::fmt;
 use serde::{Deserialize, Serialize};
 
 use super::SampleResult;
-use super::diagnostics::{effective_sample_size, quantile, split_rhat};
+use super::diagnostics::{effective_sample_size, quantile, rank_normalised_rhat, split_rhat};
 
 /// Summary of the kept draws of one parameter, pooled over chains.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -21,8 +21,10 @@ pub struct ParameterSummary {
     pub median: f64,
     /// 97.5% quantile.
     pub q97_5: f64,
-    /// Split R-hat.
+    /// Split R-hat (Gelman et al.; below 1.05 when the chains agree).
     pub rhat: f64,
+    /// Rank-normalised split R-hat, bulk and tail (Vehtari et al. 2021; below 1.01).
+    pub rank_rhat: f64,
     /// Effective sample size (Geyer initial monotone sequence, over chains).
     pub ess: f64,
 }
@@ -45,6 +47,7 @@ impl ParameterSummary {
             median: quantile(&pooled, 0.5),
             q97_5: quantile(&pooled, 0.975),
             rhat: split_rhat(chains),
+            rank_rhat: rank_normalised_rhat(chains),
             ess,
         }
     }
@@ -99,13 +102,13 @@ impl PosteriorSummary {
     pub fn table(&self) -> String {
         let width = self.parameters.iter().map(|p| p.name.len()).max().unwrap_or(4).max(9);
         let mut out = format!(
-            "{:<width$} {:>12} {:>12} {:>12} {:>12} {:>12} {:>12} {:>7} {:>8}\n",
-            "parameter", "mean", "sd", "mcse", "2.5%", "50%", "97.5%", "R-hat", "ESS"
+            "{:<width$} {:>12} {:>12} {:>12} {:>12} {:>12} {:>12} {:>7} {:>7} {:>8}\n",
+            "parameter", "mean", "sd", "mcse", "2.5%", "50%", "97.5%", "R-hat", "rank-R", "ESS"
         );
         for p in &self.parameters {
             out += &format!(
-                "{:<width$} {:>12.5e} {:>12.5e} {:>12.3e} {:>12.5e} {:>12.5e} {:>12.5e} {:>7.3} {:>8.0}\n",
-                p.name, p.mean, p.sd, p.mcse_mean, p.q2_5, p.median, p.q97_5, p.rhat, p.ess
+                "{:<width$} {:>12.5e} {:>12.5e} {:>12.3e} {:>12.5e} {:>12.5e} {:>12.5e} {:>7.3} {:>7.3} {:>8.0}\n",
+                p.name, p.mean, p.sd, p.mcse_mean, p.q2_5, p.median, p.q97_5, p.rhat, p.rank_rhat, p.ess
             );
         }
         let rates: Vec<String> = self.acceptance_rate.iter().map(|a| format!("{a:.3}")).collect();
