@@ -273,10 +273,7 @@ fn segments(time: &[f64], current: &[f64], r: &[f64], floor: f64) -> Vec<Segment
         })
         .collect();
     let mut runs: Vec<(usize, usize)> = Vec::new();
-    for k in 0..n {
-        if !above[k] {
-            continue;
-        }
+    for k in (0..n).filter(|&k| above[k]) {
         match runs.last_mut() {
             Some((_, end)) if k <= *end + 10 => *end = k,
             _ => runs.push((k, k)),
