@@ -54,7 +54,12 @@ fn main() {
             solves.push(t.elapsed().as_secs_f64());
             stats = Some(sol.stats);
             if k == 0 {
-                eprintln!("{kind}: {} colours, {} factorisations", built.workspace.n_colours(), sol.stats.factorisations);
+                eprintln!(
+                    "{kind}: {} colours, {} factorisations, {} LU entries",
+                    built.workspace.n_colours(),
+                    sol.stats.factorisations,
+                    built.workspace.factor_nnz()
+                );
             }
         }
         let s = stats.unwrap();

@@ -16,6 +16,8 @@ use cellstudio::Error;
 use cellstudio::study::Study;
 use cellstudio::study::design::run_design;
 use cellstudio::study::fit::{FitStudy, parameter_table, run_fit};
+use cellstudio::study::sample::run_sample;
+use cellstudio::study::eis;
 use cellstudio::study::pareto::run_pareto;
 use cellstudio::study::sweep::run_sweep;
 
@@ -78,6 +80,44 @@ enum Command {
         /// Recording CSV (overrides the study's `data.file`).
         #[arg(long)]
         data: Option<PathBuf>,
+    },
+    /// Sample the posterior of a fitting study's parameters (fit first, then MCMC).
+    Sample {
+        /// Fitting study file with a `[sampler]` table, e.g. fits/spm_contact_resistance.toml.
+        study: PathBuf,
+        /// Recording CSV (overrides the study's `data.file`).
+        #[arg(long)]
+        data: Option<PathBuf>,
+    },
+    /// Impedance spectrum of a model at a state of charge (CSV + Nyquist plot), optionally
+    /// fitted to a measured spectrum.
+    Eis {
+        /// spm, spme or dfn.
+        #[arg(long, default_value = "spm")]
+        model: ModelKind,
+        /// State of charge (0..1) of the rest state.
+        #[arg(long, default_value_t = 0.5)]
+        soc: f64,
+        /// Parameter-set file: TOML, JSON or BPX JSON (default: embedded Chen 2020).
+        #[arg(long)]
+        params: Option<PathBuf>,
+        /// Switch on the contact-resistance submodel with this resistance (ohm).
+        #[arg(long)]
+        contact_resistance: Option<f64>,
+        /// Lowest and highest frequency (Hz) and number of frequencies of the model spectrum.
+        #[arg(long, num_args = 3, default_values_t = [1e-4, 1e3, 60.0])]
+        frequencies: Vec<f64>,
+        /// Measured spectrum CSV (frequency_Hz, z_re_ohm, z_im_ohm) to fit.
+        #[arg(long)]
+        fit: Option<PathBuf>,
+        /// Dotted parameters to fit, comma separated (with --fit).
+        #[arg(long, value_delimiter = ',', default_value = "negative.diffusivity,cell.contact_resistance")]
+        parameters: Vec<String>,
+        /// Optimiser for the fit.
+        #[arg(long, default_value = "nelder-mead")]
+        optimiser: String,
+        #[arg(long, default_value = "out/eis")]
+        out: PathBuf,
     },
     /// Locate where a model and a recording disagree, name the missing physics, refit the
     /// candidates and write a report (Markdown, JSON, plots).
@@ -189,6 +229,43 @@ fn run(cli: Cli) -> Result<(), Error> {
             );
             println!("{}", parameter_table(r));
             for f in &out.files {
+                println!("wrote {}", f.display());
+            }
+            Ok(())
+        }
+        Command::Sample { study, data } => {
+            let study = FitStudy::from_file(&study)?;
+            let out = run_sample(&study, data.as_deref())?;
+            println!("{}: {} draws per chain in {:.1} s", study.name, out.result.options.iterations, out.seconds);
+            println!("{}", out.summary.table());
+            for f in &out.files {
+                println!("wrote {}", f.display());
+            }
+            Ok(())
+        }
+        Command::Eis { model, soc, params, contact_resistance, frequencies, fit, parameters, optimiser, out } => {
+            let mut p = eis::parameters(params.as_deref())?;
+            if let Some(r) = contact_resistance {
+                p.cell.contact_resistance = r;
+            }
+            let run = eis::EisRun {
+                kind: model,
+                submodels: Submodels { contact_resistance: contact_resistance.is_some(), ..Default::default() },
+                params: p,
+                soc,
+                frequencies: (frequencies[0], frequencies[1], frequencies[2] as usize),
+                fit: fit.map(|f| (f, parameters)),
+                optimiser,
+                out,
+            };
+            let outcome = eis::run_eis(&run)?;
+            if let Some((names, x, result, seconds)) = &outcome.fit {
+                println!("fit: {} evaluations in {seconds:.2} s, cost {:.3e}, stop {:?}", result.evaluations, result.f, result.stop);
+                for (n, v) in names.iter().zip(x) {
+                    println!("  {n} = {v:.5e}");
+                }
+            }
+            for f in &outcome.files {
                 println!("wrote {}", f.display());
             }
             Ok(())

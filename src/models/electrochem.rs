@@ -68,9 +68,14 @@ impl Electrochem {
 
     /// Exchange-current density (A/m^2).
     pub fn j0(&self, side: Side, c_e: f64, c_s: f64, t: f64) -> f64 {
+        exchange_current(self.rate_constant(side, t), c_e, c_s, self.electrode(side).max_concentration)
+    }
+
+    /// Reaction rate constant at temperature `t` (K), A/m^2 (m^3/mol)^1.5: hoist it out of
+    /// loops over x and use [`exchange_current`] there.
+    pub fn rate_constant(&self, side: Side, t: f64) -> f64 {
         let e = self.electrode(side);
-        let k = e.rate_constant * arrhenius(e.rate_activation_energy, self.t_ref(), t);
-        exchange_current(k, c_e, c_s, e.max_concentration)
+        e.rate_constant * arrhenius(e.rate_activation_energy, self.t_ref(), t)
     }
 
     /// Electrode-averaged interfacial current density (A/m^2) for cell current `current` (A):

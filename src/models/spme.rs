@@ -8,7 +8,7 @@
 
 use super::electrochem::{Electrochem, Side};
 use super::electrolyte::ElectrolyteOp;
-use super::kinetics::overpotential;
+use super::kinetics::{exchange_current, log_mean, mean_overpotential};
 use super::submodels::thermal::bernardi_heat;
 use super::{Model, PhysicsModel, push_tridiagonal};
 use crate::params::{FARADAY, GAS_CONSTANT, ParameterSet};
@@ -20,8 +20,57 @@ pub struct Spme {
     /// Prescribed ionic current at the interior x faces per unit applied current density (-):
     /// the piecewise-linear profile at the volume centres, interpolated to the faces.
     ionic_current_shape: Vec<f64>,
+    consts: VoltageConsts,
     mass: Vec<f64>,
     scale: Vec<f64>,
+}
+
+/// Parameter-derived constants of the voltage, refreshed with the parameters.
+#[derive(Clone, Debug)]
+struct VoltageConsts {
+    /// x-average of `1 / eps` over the cell (-).
+    avg_inv_eps: f64,
+    /// Cell thickness (m).
+    length: f64,
+    /// `L_n / (3 eps_n^b) + L_s / eps_s^b + L_p / (3 eps_p^b)` (m): the electrolyte's ohmic
+    /// resistance times plate area times bulk conductivity.
+    ohmic_length: f64,
+    /// Solid-phase ohmic resistance times plate area (ohm m^2).
+    solid_resistance: f64,
+    /// x volumes of the negative and positive electrodes (each of uniform width).
+    negative: std::ops::Range<usize>,
+    positive: std::ops::Range<usize>,
+}
+
+impl VoltageConsts {
+    fn new(ec: &Electrochem, op: &ElectrolyteOp) -> Self {
+        let p = &ec.params;
+        let vols = &op.vols;
+        let length: f64 = vols.iter().map(|v| v.dx).sum();
+        let avg_inv_eps = vols.iter().map(|v| v.dx / v.eps).sum::<f64>() / length;
+        let (n, s, pe) = (&p.negative, &p.separator, &p.positive);
+        let ohmic_length = n.thickness / (3.0 * n.porosity.powf(n.bruggeman_electrolyte))
+            + s.thickness / s.porosity.powf(s.bruggeman)
+            + pe.thickness / (3.0 * pe.porosity.powf(pe.bruggeman_electrolyte));
+        let solid_resistance = [Side::Negative, Side::Positive]
+            .iter()
+            .map(|&s| ec.electrode(s).thickness / (3.0 * ec.effective_conductivity(s)))
+            .sum();
+        let range = |side: Side| {
+            let first = vols.iter().position(|v| v.side == Some(side)).unwrap_or(0);
+            let count = vols.iter().filter(|v| v.side == Some(side)).count();
+            debug_assert!(vols[first..first + count].iter().all(|v| v.side == Some(side) && v.dx == vols[first].dx));
+            first..first + count
+        };
+        Self { avg_inv_eps, length, ohmic_length, solid_resistance, negative: range(Side::Negative), positive: range(Side::Positive) }
+    }
+
+    fn electrode(&self, side: Side) -> std::ops::Range<usize> {
+        match side {
+            Side::Negative => self.negative.clone(),
+            Side::Positive => self.positive.clone(),
+        }
+    }
 }
 
 impl Spme {
@@ -37,7 +86,8 @@ impl Spme {
         }
         let mass = vec![1.0; scale.len()];
         let ionic_current_shape = Self::ionic_current_shape(&ec, &electrolyte);
-        Self { ec, electrolyte, ionic_current_shape, mass, scale }
+        let consts = VoltageConsts::new(&ec, &electrolyte);
+        Self { ec, electrolyte, ionic_current_shape, consts, mass, scale }
     }
 
     /// The leading-order ionic current `x/L_n`, 1, `(L - x)/L_p` at the volume centres,
@@ -85,54 +135,30 @@ impl Spme {
             .collect()
     }
 
-    /// Mean of `f` over the x volumes of one electrode.
-    fn electrode_mean(&self, side: Side, f: impl Fn(usize) -> f64) -> f64 {
-        let mut sum = 0.0;
-        let mut width = 0.0;
-        for (i, v) in self.electrolyte.vols.iter().enumerate() {
-            if v.side == Some(side) {
-                sum += f(i) * v.dx;
-                width += v.dx;
-            }
-        }
-        sum / width
-    }
-
     /// Electrolyte overpotential (V): PyBaMM's composite form, i.e. the concentration
     /// (MacInnes) term `chi R T / F (mean_p ln(c_e / c_av) - mean_n ln(c_e / c_av))` plus
     /// the ohmic drop `-(I/A) (L_n/(3 kappa_n) + L_s/kappa_s + L_p/(3 kappa_p))` with the
     /// effective conductivities at the cell-averaged concentration `c_av`.
     fn electrolyte_overpotential(&self, ce: &[f64], current: f64, temp: f64) -> f64 {
-        let p = &self.ec.params;
-        let e = &p.electrolyte;
-        let vols = &self.electrolyte.vols;
+        let e = &self.ec.params.electrolyte;
+        let k = &self.consts;
         // PyBaMM's x-average of c_e in the SPMe is avg(eps c_e) avg(1/eps) (its XAverage pulls
         // the piecewise-constant 1/eps out); it enters only through kappa.
-        let length: f64 = vols.iter().map(|v| v.dx).sum();
-        let avg_eps_c = vols.iter().zip(ce).map(|(v, c)| v.dx * v.eps * c).sum::<f64>() / length;
-        let avg_inv_eps = vols.iter().map(|v| v.dx / v.eps).sum::<f64>() / length;
-        let c_av = avg_eps_c * avg_inv_eps;
+        let avg_eps_c = self.electrolyte.vols.iter().zip(ce).map(|(v, c)| v.dx * v.eps * c).sum::<f64>() / k.length;
+        let c_av = avg_eps_c * k.avg_inv_eps;
         let arr = super::kinetics::arrhenius(e.activation_energy, self.ec.t_ref(), temp);
         let kappa = e.conductivity.eval(c_av) * arr;
         let chi = 2.0 * (1.0 - e.transference_number) * e.thermodynamic_factor;
         let rt_f = GAS_CONSTANT * temp / FARADAY;
-        let macinnes = |side: Side| self.electrode_mean(side, |i| (ce[i].max(1e-6) / c_av).ln());
+        // mean over an electrode's (equal-width) volumes of ln(c_e / c_av)
+        let macinnes = |side: Side| log_mean(ce[k.electrode(side)].iter().map(|&c| c.max(1e-6))) - c_av.ln();
         let concentration = chi * rt_f * (macinnes(Side::Positive) - macinnes(Side::Negative));
-        let tor = |eps: f64, b: f64| eps.powf(b);
-        let (n, s, pe) = (&p.negative, &p.separator, &p.positive);
-        let resistance = n.thickness / (3.0 * kappa * tor(n.porosity, n.bruggeman_electrolyte))
-            + s.thickness / (kappa * tor(s.porosity, s.bruggeman))
-            + pe.thickness / (3.0 * kappa * tor(pe.porosity, pe.bruggeman_electrolyte));
-        concentration - current / self.ec.area() * resistance
+        concentration - current / self.ec.area() * k.ohmic_length / kappa
     }
 
     /// Solid-phase ohmic drop between the x-averaged and current-collector potentials (V).
     fn solid_ohmic(&self, current: f64) -> f64 {
-        let i_app = current / self.ec.area();
-        [Side::Negative, Side::Positive]
-            .iter()
-            .map(|&s| i_app * self.ec.electrode(s).thickness / (3.0 * self.ec.effective_conductivity(s)))
-            .sum()
+        current / self.ec.area() * self.consts.solid_resistance
     }
 
     fn surfaces(&self, y: &[f64]) -> (f64, f64) {
@@ -218,7 +244,9 @@ impl Model for Spme {
         let eta = |side: Side, c_s: f64| {
             let alpha = ec.electrode(side).charge_transfer_coefficient;
             let j = ec.mean_interfacial_current(side, current);
-            self.electrode_mean(side, |i| overpotential(j, ec.j0(side, ce[i], c_s, temp), alpha, temp))
+            let (k, c_max) = (ec.rate_constant(side, temp), ec.electrode(side).max_concentration);
+            let j0 = ce[self.consts.electrode(side)].iter().map(|&c| exchange_current(k, c, c_s, c_max));
+            mean_overpotential(j, j0, alpha, temp)
         };
         ec.ocp(Side::Positive, sp) + eta(Side::Positive, sp) - ec.ocp(Side::Negative, sn) - eta(Side::Negative, sn)
             + self.electrolyte_overpotential(ce, current, temp)
@@ -248,5 +276,6 @@ impl PhysicsModel for Spme {
     fn set_params(&mut self, params: ParameterSet) {
         self.ec.set_params(params);
         self.electrolyte.refresh(&self.ec);
+        self.consts = VoltageConsts::new(&self.ec, &self.electrolyte);
     }
 }

@@ -9,8 +9,10 @@ pub mod mass;
 mod initial_state;
 mod load;
 mod set;
+pub mod soc;
 
 pub use chen2020::chen2020;
 pub use function::Function1D;
 pub use mass::CellBudget;
+pub use soc::{StoichiometryWindow, set_initial_soc, stoichiometry_window};
 pub use set::{Cell, Electrode, Electrolyte, FARADAY, GAS_CONSTANT, ParameterSet, Separator, Thermal};

@@ -3,5 +3,6 @@
 pub mod design;
 pub mod fit;
 pub mod fitting;
+pub mod posterior;
 pub mod sensitivity;
 pub mod sweep;

@@ -1,4 +1,6 @@
 //! Reports: plots (SVG via plotters) and summaries.
 
+pub mod nyquist;
 pub mod plot;
 pub mod diagnosis_plot;
+pub mod mcmc_plot;

@@ -3,6 +3,8 @@
 
 pub mod bdf;
 pub mod jacobian;
+pub mod ordering;
 pub mod sparse;
+pub mod static_lu;
 
 pub use bdf::{Dae, DenseOutput, SolverOptions, SolverStats, StopReason, Workspace, integrate};

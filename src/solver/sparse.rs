@@ -1,18 +1,103 @@
-//! Sparse Newton matrix `M - c J` with a fixed pattern, factorised by faer's sparse LU.
+//! Sparse Newton matrix `M - c J` with a fixed pattern.
 //!
-//! The symbolic factorisation (fill-reducing ordering, elimination structure) is done once
-//! per pattern, i.e. once per model build; every Newton-matrix update is a numeric
-//! refactorisation into preallocated storage, and solves reuse preallocated scratch.
+//! The matrix is factorised by [`StaticLu`] (minimum-degree ordering, no pivoting, symbolic
+//! structure computed once per pattern, i.e. once per model build). Should a pivot come out
+//! tiny, that factorisation is redone by faer's sparse LU with partial pivoting, whose
+//! symbolic analysis is built on first need.
 
 use faer::dyn_stack::{MemBuffer, MemStack};
 use faer::sparse::linalg::lu::{LuRef, NumericLu, SymbolicLu, factorize_symbolic_lu};
 use faer::sparse::{SparseColMatRef, SymbolicSparseColMat};
 use faer::{Conj, Par};
 
+use super::static_lu::StaticLu;
 use crate::error::Error;
 
 /// A square sparse matrix with a fixed pattern (the Jacobian pattern plus the diagonal).
+#[derive(Clone)]
 pub struct SparseSystem {
+    n: usize,
+    entries: Vec<(usize, usize)>,
+    lu: StaticLu,
+    /// Slots in `lu`'s value array of the Jacobian entries and of the diagonal.
+    jac_slots: Vec<usize>,
+    diag_slots: Vec<usize>,
+    /// Pivoting fallback, built on first need.
+    fallback: Option<Box<PivotingLu>>,
+    /// Which factorisation `solve` uses.
+    state: Factorised,
+}
+
+#[derive(Clone, Copy, PartialEq)]
+enum Factorised {
+    No,
+    Static,
+    Pivoting,
+}
+
+impl SparseSystem {
+    /// Builds the pattern from distinct Jacobian entries `(row, col)`.
+    pub fn new(n: usize, entries: &[(usize, usize)]) -> Result<Self, Error> {
+        if let Some(&(r, c)) = entries.iter().find(|&&(r, c)| r >= n || c >= n) {
+            return Err(Error::Linear(format!("Jacobian entry ({r}, {c}) outside a {n} x {n} matrix")));
+        }
+        let mut all = entries.to_vec();
+        all.extend((0..n).map(|i| (i, i)));
+        let (lu, mut slots) = StaticLu::new(n, &all);
+        let diag_slots = slots.split_off(entries.len());
+        Ok(Self {
+            n,
+            entries: entries.to_vec(),
+            lu,
+            jac_slots: slots,
+            diag_slots,
+            fallback: None,
+            state: Factorised::No,
+        })
+    }
+
+    /// Sets the matrix to `diag(mass) - c * J`, where `jac[k]` is the value of entry `k` of the
+    /// pattern given to [`SparseSystem::new`], and factorises it.
+    pub fn factorise(&mut self, mass: &[f64], c: f64, jac: &[f64]) -> Result<(), Error> {
+        self.state = Factorised::No;
+        let vals = self.lu.values_mut();
+        vals.iter_mut().for_each(|v| *v = 0.0);
+        for (&slot, &j) in self.jac_slots.iter().zip(jac) {
+            vals[slot] -= c * j;
+        }
+        for (&slot, &m) in self.diag_slots.iter().zip(mass) {
+            vals[slot] += m;
+        }
+        if self.lu.factorise() {
+            self.state = Factorised::Static;
+            return Ok(());
+        }
+        if self.fallback.is_none() {
+            self.fallback = Some(Box::new(PivotingLu::new(self.n, &self.entries)?));
+        }
+        self.fallback.as_mut().expect("built above").factorise(mass, c, jac)?;
+        self.state = Factorised::Pivoting;
+        Ok(())
+    }
+
+    /// Solves in place with the last factorisation.
+    pub fn solve(&mut self, rhs: &mut [f64]) {
+        debug_assert_eq!(rhs.len(), self.n);
+        match self.state {
+            Factorised::Static => self.lu.solve(rhs),
+            Factorised::Pivoting => self.fallback.as_mut().expect("factorised").solve(rhs),
+            Factorised::No => panic!("factorise before solve"),
+        }
+    }
+
+    /// Entries of the triangular factors of the unpivoted LU, fill included.
+    pub fn factor_nnz(&self) -> usize {
+        self.lu.nnz()
+    }
+}
+
+/// faer's sparse LU with partial pivoting on the same pattern.
+struct PivotingLu {
     n: usize,
     symbolic: SymbolicSparseColMat<usize>,
     /// Position of each diagonal entry in `values`.
@@ -27,15 +112,15 @@ pub struct SparseSystem {
     solve_scratch: MemBuffer,
 }
 
-impl Clone for SparseSystem {
+impl Clone for PivotingLu {
     fn clone(&self) -> Self {
         Self::from_parts(self.n, self.symbolic.clone(), self.diag.clone(), self.slots.clone(), self.symbolic_lu.clone())
     }
 }
 
-impl SparseSystem {
+impl PivotingLu {
     /// Builds the pattern from distinct Jacobian entries `(row, col)`.
-    pub fn new(n: usize, entries: &[(usize, usize)]) -> Result<Self, Error> {
+    fn new(n: usize, entries: &[(usize, usize)]) -> Result<Self, Error> {
         let mut cols: Vec<Vec<usize>> = vec![Vec::new(); n];
         for &(r, c) in entries {
             cols[c].push(r);

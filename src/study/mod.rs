@@ -2,7 +2,9 @@
 //! objectives, optimiser and outputs. Unknown keys are errors naming the key and line.
 
 pub mod design;
+pub mod eis;
 pub mod fit;
+pub mod sample;
 pub mod pareto;
 pub mod sweep;
 

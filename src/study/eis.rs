@@ -1,0 +1,84 @@
+//! The `eis` run: a model's impedance spectrum at a state of charge, and optionally a fit of
+//! named parameters to a measured spectrum, with CSV output and a Nyquist plot.
+
+use std::path::{Path, PathBuf};
+
+use crate::eis::{EisFit, Spectrum, log_frequencies};
+use crate::error::Error;
+use crate::models::{ModelKind, Submodels};
+use crate::optim::{Bounds, NoObserver, OptimOptions, OptimResult, Problem, Transform, by_name};
+use crate::params::{ParameterSet, set_initial_soc};
+use crate::report::nyquist::nyquist_plot;
+
+/// What to compute.
+pub struct EisRun {
+    pub kind: ModelKind,
+    pub submodels: Submodels,
+    pub params: ParameterSet,
+    /// State of charge (-) of the rest state.
+    pub soc: f64,
+    /// Frequency range (Hz) and points of the model spectrum when no data are given.
+    pub frequencies: (f64, f64, usize),
+    /// Measured spectrum to fit, and the dotted parameters to fit (searched on a log scale
+    /// between a tenth and ten times the parameter set's values).
+    pub fit: Option<(PathBuf, Vec<String>)>,
+    pub optimiser: String,
+    pub out: PathBuf,
+}
+
+/// What an `eis` run produced.
+pub struct EisOutcome {
+    pub spectrum: Spectrum,
+    /// Fitted values with the optimiser's result, when fitting.
+    pub fit: Option<(Vec<String>, Vec<f64>, OptimResult, f64)>,
+    pub files: Vec<PathBuf>,
+}
+
+pub fn run_eis(run: &EisRun) -> Result<EisOutcome, Error> {
+    let mut base = run.params.clone();
+    set_initial_soc(&mut base, run.soc)?;
+    std::fs::create_dir_all(&run.out).map_err(|source| Error::Io { path: run.out.display().to_string(), source })?;
+    let (f0, f1, n) = run.frequencies;
+    let dense = log_frequencies(f0, f1, n)?;
+    let spectrum_of = |variables: &[String], x: &[f64]| -> Result<Spectrum, Error> {
+        let probe = Spectrum::new(dense.clone(), vec![1.0; dense.len()], vec![0.0; dense.len()])?;
+        EisFit::new(base.clone(), variables.to_vec(), probe, run.kind)?.with_submodels(run.submodels).model_spectrum(x)
+    };
+    let mut files = Vec::new();
+    let nyquist = run.out.join("nyquist.svg");
+    let title = format!("{} impedance at {:.0} % SOC", run.kind, 100.0 * run.soc);
+    let (spectrum, fit) = match &run.fit {
+        None => {
+            let s = spectrum_of(&[], &[])?;
+            nyquist_plot(&nyquist, &title, None, &[("model", &s)])?;
+            (s, None)
+        }
+        Some((data_path, variables)) => {
+            let data = Spectrum::from_csv(data_path)?;
+            let objective = EisFit::new(base.clone(), variables.clone(), data.clone(), run.kind)?.with_submodels(run.submodels);
+            let x0: Vec<f64> = variables.iter().map(|v| base.get(v)).collect::<Result<_, _>>()?;
+            if let Some((v, x)) = variables.iter().zip(&x0).find(|(_, x)| !(**x > 0.0)) {
+                return Err(Error::invalid(v.clone(), *x, "must be positive to be fitted on a log scale"));
+            }
+            let bounds = Bounds::new(x0.iter().map(|x| x / 10.0).collect(), x0.iter().map(|x| x * 10.0).collect())?;
+            let problem = Problem::new(&objective, bounds)?.with_transforms(vec![Transform::Log; x0.len()])?;
+            let options = OptimOptions::default().with_seed(1).with_max_evaluations(2000)?.with_f_tolerance(1e-12)?;
+            let start = std::time::Instant::now();
+            let result = by_name(&run.optimiser, options)?.minimise(&problem, &x0, &mut NoObserver)?;
+            let seconds = start.elapsed().as_secs_f64();
+            let (initial, fitted) = (spectrum_of(variables, &x0)?, spectrum_of(variables, &result.x)?);
+            nyquist_plot(&nyquist, &title, Some(("data", &data)), &[("initial", &initial), ("fitted", &fitted)])?;
+            (fitted, Some((variables.clone(), result.x.clone(), result, seconds)))
+        }
+    };
+    files.push(nyquist);
+    let csv = run.out.join("spectrum.csv");
+    spectrum.write_csv(&csv)?;
+    files.push(csv);
+    Ok(EisOutcome { spectrum, fit, files })
+}
+
+/// Reads a parameter set file or the embedded default.
+pub fn parameters(path: Option<&Path>) -> Result<ParameterSet, Error> {
+    path.map_or_else(|| Ok(crate::params::chen2020()), ParameterSet::from_file)
+}

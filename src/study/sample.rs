@@ -1,0 +1,142 @@
+//! Posterior sampling of a fitting study: fit first, then run the study's sampler from
+//! over-dispersed starts around the optimum, and report the posterior (summary table with
+//! R-hat and ESS, credible intervals, samples, trace and marginal plots).
+
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+use rand::SeedableRng;
+use rand_distr::{Distribution, Normal};
+
+use super::fit::{FitStudy, run_fit};
+use crate::cost::CostKind;
+use crate::error::Error;
+use crate::problem::posterior::Posterior;
+use crate::report::mcmc_plot::{marginal_histograms, trace_plot};
+use crate::sample::{PosteriorSummary, SampleOptions, SampleResult, SamplerOptions, by_name, sample};
+
+/// Keys of the `[sampler]` table that belong to the run rather than the sampler.
+const RUN_KEYS: [&str; 5] = ["chains", "iterations", "warmup", "seed", "progress"];
+
+/// What a sampling run produced.
+pub struct SampleOutcome {
+    pub names: Vec<String>,
+    pub result: SampleResult,
+    /// Summary in model units (log-sampled parameters mapped back).
+    pub summary: PosteriorSummary,
+    pub seconds: f64,
+    pub files: Vec<PathBuf>,
+}
+
+impl FitStudy {
+    /// The sampler's name, its options and the run options from `[sampler]`.
+    pub fn sampler(&self) -> Result<(String, SamplerOptions, SampleOptions), Error> {
+        let mut table = self.sampler.clone();
+        let method = table.remove("method").and_then(|v| v.as_str().map(str::to_string)).unwrap_or_else(|| "haario-bardenet".into());
+        let mut run = toml::Table::new();
+        for key in RUN_KEYS {
+            if let Some(v) = table.remove(key) {
+                run.insert(key.into(), v);
+            }
+        }
+        let bad = |e: toml::de::Error| Error::InvalidSetting { field: "sampler".into(), reason: e.to_string() };
+        let sampler: SamplerOptions = table.try_into().map_err(bad)?;
+        let run: SampleOptions = run.try_into().map_err(bad)?;
+        sampler.validate()?;
+        run.validate()?;
+        Ok((method, sampler, run))
+    }
+}
+
+/// Fits the study (writing its fit report), then samples the posterior and writes
+/// `posterior.md`, `posterior.json`, `samples.csv`, `trace.svg` and `marginals.svg`.
+pub fn run_sample(study: &FitStudy, data: Option<&Path>) -> Result<SampleOutcome, Error> {
+    let (method, mut sampler_options, mut run) = study.sampler()?;
+    run.progress = true;
+    let fitted = run_fit(study, data)?;
+    let problem = study.problem(data)?;
+    let sigma = match study.cost {
+        CostKind::GaussianLogLikelihood { sigma } | CostKind::Map { sigma } => sigma,
+        _ => None,
+    };
+    let posterior = Posterior::new(&problem, sigma);
+    let names = posterior.names();
+    // Centre: the fitted parameters (and the RMS residual as sigma when it is sampled).
+    let mut centre = fitted.result.x[..problem.dim()].to_vec();
+    let mut spread: Vec<f64> = centre.iter().zip(&fitted.result.std_errors).map(|(x, e)| e.min(0.1 * x.abs())).collect();
+    if names.len() > problem.dim() {
+        let n = problem.weights.iter().filter(|w| **w > 0.0).count() as f64;
+        centre.push(fitted.result.rmse);
+        spread.push(fitted.result.rmse / (2.0 * n).sqrt());
+    }
+    let z0 = posterior.to_sampling(&centre);
+    // Standard deviations in the sampling space (log coordinates: relative errors).
+    let sd_z: Vec<f64> = posterior.to_sampling(&centre.iter().zip(&spread).map(|(c, s)| c + s).collect::<Vec<_>>())
+        .iter()
+        .zip(&z0)
+        .map(|(a, b)| (a - b).abs().max(1e-12))
+        .collect();
+    let smallest = sd_z.iter().copied().fold(f64::INFINITY, f64::min);
+    if sampler_options.proposal_scale == SamplerOptions::default().proposal_scale {
+        sampler_options.proposal_scale = smallest;
+    }
+    if sampler_options.slice_width == SamplerOptions::default().slice_width {
+        sampler_options.slice_width = 2.0 * smallest;
+    }
+    let mut rng = rand::rngs::StdRng::seed_from_u64(run.seed);
+    let unit = Normal::new(0.0, 1.0).expect("unit normal");
+    let starts: Vec<Vec<f64>> = (0..run.chains)
+        .map(|_| z0.iter().zip(&sd_z).map(|(z, s)| z + 2.0 * s * unit.sample(&mut rng)).collect())
+        .map(|z: Vec<f64>| if crate::sample::LogDensity::log_density(&posterior, &z).is_finite() { z } else { z0.clone() })
+        .collect();
+    let sampler = by_name(&method, sampler_options)?;
+    let start = std::time::Instant::now();
+    let result = sample(&posterior, sampler.as_ref(), &run, &starts)?;
+    let seconds = start.elapsed().as_secs_f64();
+    let mut in_model = result.clone();
+    for chain in &mut in_model.chains {
+        for d in &mut chain.draws {
+            *d = posterior.to_model(d);
+        }
+    }
+    let summary = in_model.summary(&names);
+    let dir = &study.output.dir;
+    let mut files = fitted.files;
+    let write = |name: &str, text: String, files: &mut Vec<PathBuf>| -> Result<(), Error> {
+        let path = dir.join(name);
+        std::fs::write(&path, text).map_err(|source| Error::Io { path: path.display().to_string(), source })?;
+        files.push(path);
+        Ok(())
+    };
+    let mut csv = format!("chain,{}\n", names.join(","));
+    for (k, chain) in in_model.chains.iter().enumerate() {
+        for d in &chain.draws {
+            let _ = writeln!(csv, "{k},{}", d.iter().map(|v| format!("{v:e}")).collect::<Vec<_>>().join(","));
+        }
+    }
+    write("samples.csv", csv, &mut files)?;
+    for (name, path) in [("trace", dir.join("trace.svg")), ("marginals", dir.join("marginals.svg"))] {
+        let title = format!("{}: {name}", study.name);
+        if name == "trace" {
+            trace_plot(&path, &title, &names, &in_model.chains)?;
+        } else {
+            marginal_histograms(&path, &title, &names, &in_model.chains, None, 40)?;
+        }
+        files.push(path);
+    }
+    write("posterior.json", serde_json::to_string_pretty(&summary).expect("serialisable"), &mut files)?;
+    let mut md = format!("# {}: posterior\n\n", study.name);
+    let _ = writeln!(
+        md,
+        "{} sampler, {} chains x {} kept iterations after {} warmup, {:.1} s; acceptance {:?}.\n",
+        result.sampler,
+        run.chains,
+        run.iterations,
+        run.warmup,
+        seconds,
+        result.acceptance_rates().iter().map(|a| (a * 1000.0).round() / 1000.0).collect::<Vec<_>>()
+    );
+    let _ = writeln!(md, "```\n{}\n```", summary.table());
+    write("posterior.md", md, &mut files)?;
+    Ok(SampleOutcome { names, result: in_model, summary, seconds, files })
+}

@@ -1,0 +1,51 @@
+//! Performance regressions fail here: work counters of a 1C discharge of Chen 2020 at the
+//! default mesh and tolerances (issue 2's benchmark case), and the fill of the Newton
+//! matrix's LU factors.
+//!
+//! Before the speed work (November 2026) the DFN took 213-218 steps, 14-15 Jacobians and
+//! ~880 right-hand sides; the SPMe 130 steps and 325 right-hand sides; the SPM 84 steps and
+//! 183 right-hand sides. The bounds below leave ~15 % headroom over today's counts.
+
+use cellstudio::geometry::{MeshSizes, ModelBuilder};
+use cellstudio::models::{ModelKind, Submodels};
+use cellstudio::params::chen2020;
+use cellstudio::protocol::Protocol;
+use cellstudio::simulation::{SimOptions, simulate};
+
+/// (model, max steps, max Jacobians, max right-hand sides)
+const BOUNDS: [(ModelKind, usize, usize, usize); 3] =
+    [(ModelKind::Spm, 100, 2, 180), (ModelKind::Spme, 150, 4, 310), (ModelKind::Dfn, 230, 10, 680)];
+
+#[test]
+fn one_c_discharge_work_stays_bounded() {
+    let p = chen2020();
+    for (kind, steps, jacobians, rhs) in BOUNDS {
+        let mut b = ModelBuilder::new(kind, Submodels::default(), MeshSizes::default());
+        let built = b.build(&p).unwrap();
+        let sol = simulate(built.model.as_ref(), &mut built.workspace, &Protocol::discharge(1.0), &SimOptions::for_cell(&p), None)
+            .unwrap();
+        let s = sol.stats;
+        println!("{kind}: {s:?}");
+        assert!(s.steps <= steps, "{kind}: {} steps (bound {steps})", s.steps);
+        assert!(s.jacobian_evals <= jacobians, "{kind}: {} Jacobians (bound {jacobians})", s.jacobian_evals);
+        assert!(s.rhs_evals <= rhs, "{kind}: {} right-hand sides (bound {rhs})", s.rhs_evals);
+    }
+}
+
+/// Minimum-degree ordering eliminates each particle's shells onto its x-node: the DFN's LU
+/// factors have almost no fill beyond the Jacobian pattern plus the diagonal.
+#[test]
+fn dfn_newton_matrix_factors_with_little_fill() {
+    let p = chen2020();
+    let mut b = ModelBuilder::new(ModelKind::Dfn, Submodels::default(), MeshSizes::default());
+    let built = b.build(&p).unwrap();
+    let mut pattern = built.model.jacobian_pattern();
+    pattern.extend((0..built.model.len()).map(|i| (i, i)));
+    // symmetrised, as the factorisation stores it
+    pattern.extend(pattern.clone().into_iter().map(|(r, c)| (c, r)));
+    pattern.sort_unstable();
+    pattern.dedup();
+    let nnz = built.workspace.factor_nnz();
+    println!("DFN: pattern {} entries (symmetrised), factors {nnz}", pattern.len());
+    assert!(nnz as f64 <= 1.2 * pattern.len() as f64, "fill: {nnz} factor entries for {} pattern entries", pattern.len());
+}
