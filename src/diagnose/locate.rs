@@ -98,8 +98,7 @@ pub struct ResidualAnalysis {
     pub lag1_autocorrelation: f64,
     pub ljung_box: TestResult,
     pub runs: TestResult,
-    /// Whether noise cannot explain the residual (both tests at p < 0.001 and
-    /// `structure_ratio > 1.5`).
+    /// Whether noise cannot explain the residual: both whiteness tests reject at p < 0.001.
     pub structured: bool,
     /// `r` against current (slope in ohm).
     pub vs_current: Option<Regression>,
@@ -164,7 +163,7 @@ pub fn analyse(rec: &Recording, features: &Features, residual: &[f64], nominal_c
     let lb = ljung_box(&r, lags);
     let runs = runs_test(&r);
     let structure_ratio = rmse / noise;
-    let structured = lb.p_value < 1e-3 && runs.p_value < 1e-3 && structure_ratio > 1.5;
+    let structured = lb.p_value < 1e-3 && runs.p_value < 1e-3;
 
     // Steps: residual jump against current jump.
     let (mut di, mut dr) = (Vec::new(), Vec::new());
@@ -274,10 +273,7 @@ fn segments(time: &[f64], current: &[f64], r: &[f64], floor: f64) -> Vec<Segment
         })
         .collect();
     let mut runs: Vec<(usize, usize)> = Vec::new();
-    for k in 0..n {
-        if !above[k] {
-            continue;
-        }
+    for k in (0..n).filter(|&k| above[k]) {
         match runs.last_mut() {
             Some((_, end)) if k <= *end + 10 => *end = k,
             _ => runs.push((k, k)),
