@@ -5,11 +5,9 @@
 //! geometric parameters (e.g. `negative.particle_radius`) can be identified; the builders
 //! rebuild only when the geometry changes.
 
-use std::sync::Mutex;
-
 use super::spectrum::Spectrum;
 use crate::error::Error;
-use crate::geometry::{MeshSizes, ModelBuilder};
+use crate::geometry::{BuilderPool, MeshSizes, ModelBuilder};
 use crate::models::{ModelKind, Submodels};
 use crate::optim::Objective;
 use crate::params::{ParameterSet, set_initial_soc};
@@ -29,7 +27,7 @@ pub struct EisFit {
     /// capacities keep the cell at the measured SOC); `None` keeps the base concentrations.
     pub soc: Option<f64>,
     /// Builders re-used across evaluations (one per concurrent evaluation).
-    pool: Mutex<Vec<ModelBuilder>>,
+    pool: BuilderPool,
 }
 
 impl EisFit {
@@ -47,7 +45,7 @@ impl EisFit {
             submodels: Submodels::default(),
             mesh: MeshSizes::default(),
             soc: None,
-            pool: Mutex::new(Vec::new()),
+            pool: BuilderPool::default(),
         })
     }
 
@@ -93,17 +91,12 @@ impl EisFit {
     /// Model spectrum of candidate `x` at the data's frequencies.
     pub fn model_spectrum(&self, x: &[f64]) -> Result<Spectrum, Error> {
         let p = self.parameters(x)?;
-        let mut builder = self
-            .pool
-            .lock()
-            .expect("builder pool")
-            .pop()
-            .unwrap_or_else(|| ModelBuilder::new(self.kind, self.submodels, self.mesh));
-        let result = builder
-            .build(&p)
-            .and_then(|b| super::model_impedance(b.model.as_ref(), &mut b.workspace, &self.data.frequency));
-        self.pool.lock().expect("builder pool").push(builder);
-        result
+        self.pool.with(
+            || ModelBuilder::new(self.kind, self.submodels, self.mesh),
+            |builder| {
+                builder.build(&p).and_then(|b| super::model_impedance(b.model.as_ref(), &mut b.workspace, &self.data.frequency))
+            },
+        )
     }
 
     /// Relative squared misfit of candidate `x`.
@@ -113,7 +106,7 @@ impl EisFit {
 
     /// Model builds so far across all builders.
     pub fn rebuild_count(&self) -> usize {
-        self.pool.lock().expect("builder pool").iter().map(|b| b.rebuild_count()).sum()
+        self.pool.rebuild_count()
     }
 }
 

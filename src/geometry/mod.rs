@@ -3,8 +3,10 @@
 
 pub mod builder;
 pub mod mesh;
+pub mod pool;
 
 pub use builder::ModelBuilder;
+pub use pool::BuilderPool;
 pub use mesh::{Mesh1D, SphereMesh};
 
 use serde::{Deserialize, Serialize};

@@ -2,12 +2,10 @@
 //! parameter set, discharged in simulation, and measured as energy and power per cell mass
 //! and volume.
 
-use std::sync::Mutex;
-
 use serde::{Deserialize, Serialize};
 
 use crate::error::Error;
-use crate::geometry::{MeshSizes, ModelBuilder};
+use crate::geometry::{BuilderPool, MeshSizes, ModelBuilder};
 use crate::models::{ModelKind, Submodels};
 use crate::params::{FARADAY, ParameterSet};
 use crate::protocol::{Protocol, Step};
@@ -125,7 +123,7 @@ pub struct DesignProblem {
     /// Constant discharge power (W) instead of the C-rate, when set.
     pub power: Option<f64>,
     /// Builders re-used across evaluations (one per concurrent evaluation).
-    pool: Mutex<Vec<ModelBuilder>>,
+    pool: BuilderPool,
 }
 
 impl DesignProblem {
@@ -153,7 +151,7 @@ impl DesignProblem {
             c_rate,
             rate_from_theoretical_capacity,
             power: None,
-            pool: Mutex::new(Vec::new()),
+            pool: BuilderPool::default(),
         })
     }
 
@@ -203,15 +201,7 @@ impl DesignProblem {
     /// Simulates the discharge of candidate `x` and measures it.
     pub fn evaluate(&self, x: &[f64]) -> Result<DesignMetrics, Error> {
         let p = self.parameters(x)?;
-        let mut builder = self
-            .pool
-            .lock()
-            .expect("builder pool")
-            .pop()
-            .unwrap_or_else(|| ModelBuilder::new(self.kind, self.submodels, self.mesh));
-        let result = self.discharge(&mut builder, &p);
-        self.pool.lock().expect("builder pool").push(builder);
-        result
+        self.pool.with(|| ModelBuilder::new(self.kind, self.submodels, self.mesh), |builder| self.discharge(builder, &p))
     }
 
     fn discharge(&self, builder: &mut ModelBuilder, p: &ParameterSet) -> Result<DesignMetrics, Error> {
@@ -238,6 +228,6 @@ impl DesignProblem {
 
     /// Model builds so far across all builders.
     pub fn rebuild_count(&self) -> usize {
-        self.pool.lock().expect("builder pool").iter().map(|b| b.rebuild_count()).sum()
+        self.pool.rebuild_count()
     }
 }
