@@ -1134,7 +1134,7 @@ pub struct StoichiometryWindows {
 /// with the cyclable lithium of the initial state (clamped to [0, 1] where a cut-off is out of
 /// reach), and the initial state of charge between them.
 pub fn stoichiometry_windows(p: &ParameterSet) -> Result<StoichiometryWindows, Error> {
-    let line = LithiumLine::of(p);
+    let line = super::soc::LithiumLine::of(p);
     let solve = |v: f64| line.negative_at_ocv(p, v);
     let x_n_min = solve(p.cell.lower_cutoff);
     let x_n_max = solve(p.cell.upper_cutoff);
@@ -1153,57 +1153,6 @@ pub fn stoichiometry_windows(p: &ParameterSet) -> Result<StoichiometryWindows, E
         positive: (line.positive(x_n_max), line.positive(x_n_min)),
         soc: (line.x_n0 - x_n_min) / (x_n_max - x_n_min),
     })
-}
-
-/// The stoichiometries reachable with the cyclable lithium of a set's initial state: the
-/// positive stoichiometry as a function of the negative one (lithium conserved).
-pub struct LithiumLine {
-    /// Lithium capacity of each electrode per unit area, `eps L c_max` (mol/m^2).
-    a_n: f64,
-    a_p: f64,
-    /// Cyclable lithium per unit area (mol/m^2).
-    lithium: f64,
-    /// Initial negative stoichiometry.
-    pub x_n0: f64,
-}
-
-impl LithiumLine {
-    pub fn of(p: &ParameterSet) -> Self {
-        let (n, q) = (&p.negative, &p.positive);
-        let a_n = n.active_fraction * n.thickness * n.max_concentration;
-        let a_p = q.active_fraction * q.thickness * q.max_concentration;
-        let x_n0 = n.initial_concentration / n.max_concentration;
-        let lithium = a_n * x_n0 + a_p * q.initial_concentration / q.max_concentration;
-        Self { a_n, a_p, lithium, x_n0 }
-    }
-
-    /// Positive stoichiometry at negative stoichiometry `x_n` (clamped to [0, 1]).
-    pub fn positive(&self, x_n: f64) -> f64 {
-        ((self.lithium - self.a_n * x_n) / self.a_p).clamp(0.0, 1.0)
-    }
-
-    /// The negative stoichiometry at which the open-circuit voltage is `v` (V), clamped to the
-    /// reachable range when `v` is out of reach. The OCV rises with `x_n`; bisection.
-    pub fn negative_at_ocv(&self, p: &ParameterSet, v: f64) -> f64 {
-        let lo = ((self.lithium - self.a_p) / self.a_n).max(0.0);
-        let hi = (self.lithium / self.a_n).min(1.0);
-        let ocv = |x_n: f64| p.positive.ocp.eval(self.positive(x_n)) - p.negative.ocp.eval(x_n);
-        let (mut a, mut b) = (lo, hi);
-        if ocv(a) >= v {
-            return a;
-        }
-        if ocv(b) <= v {
-            return b;
-        }
-        for _ in 0..200 {
-            let m = 0.5 * (a + b);
-            if m <= a || m >= b {
-                break;
-            }
-            if ocv(m) < v { a = m } else { b = m }
-        }
-        0.5 * (a + b)
-    }
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -1,7 +1,7 @@
 //! Initial particle concentrations from a measured open-circuit voltage.
 
 use super::ParameterSet;
-use super::bpx::LithiumLine;
+use super::soc::LithiumLine;
 use crate::error::Error;
 
 impl ParameterSet {
@@ -11,7 +11,7 @@ impl ParameterSet {
         let line = LithiumLine::of(self);
         let x_n = line.negative_at_ocv(self, v);
         let x_p = line.positive(x_n);
-        let reached = self.positive.ocp.eval(x_p) - self.negative.ocp.eval(x_n);
+        let reached = line.ocv(self, x_n);
         if !((reached - v).abs() < 1e-6) || !(x_n > 0.0 && x_n < 1.0 && x_p > 0.0 && x_p < 1.0) {
             return Err(Error::invalid(
                 "initial_ocv",

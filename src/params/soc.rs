@@ -36,16 +36,64 @@ impl StoichiometryWindow {
     }
 }
 
-/// Lithium per unit stoichiometry of each electrode, `eps c_max L A` (mol), and the
-/// cyclable lithium held in the particles at the set's initial concentrations (mol).
-fn capacities(p: &ParameterSet) -> (f64, f64, f64) {
-    let a = p.cell.area();
-    let (n, q) = (&p.negative, &p.positive);
-    let qn = n.active_fraction * n.max_concentration * n.thickness * a;
-    let qp = q.active_fraction * q.max_concentration * q.thickness * a;
-    let li = n.active_fraction * n.initial_concentration * n.thickness * a
-        + q.active_fraction * q.initial_concentration * q.thickness * a;
-    (qn, qp, li)
+/// The stoichiometries reachable with the cyclable lithium of a set's initial state: the
+/// positive stoichiometry as a function of the negative one (lithium conserved).
+pub struct LithiumLine {
+    /// Lithium capacity of each electrode per unit area, `eps L c_max` (mol/m^2).
+    a_n: f64,
+    a_p: f64,
+    /// Cyclable lithium per unit area (mol/m^2).
+    lithium: f64,
+    /// Initial negative stoichiometry.
+    pub x_n0: f64,
+}
+
+impl LithiumLine {
+    pub fn of(p: &ParameterSet) -> Self {
+        let (n, q) = (&p.negative, &p.positive);
+        let a_n = n.active_fraction * n.thickness * n.max_concentration;
+        let a_p = q.active_fraction * q.thickness * q.max_concentration;
+        let x_n0 = n.initial_concentration / n.max_concentration;
+        let lithium = a_n * x_n0 + a_p * q.initial_concentration / q.max_concentration;
+        Self { a_n, a_p, lithium, x_n0 }
+    }
+
+    /// Positive stoichiometry at negative stoichiometry `x_n` (clamped to [0, 1]).
+    pub fn positive(&self, x_n: f64) -> f64 {
+        ((self.lithium - self.a_n * x_n) / self.a_p).clamp(0.0, 1.0)
+    }
+
+    /// Negative stoichiometries at which both electrodes stay within [0, 1].
+    pub fn negative_range(&self) -> (f64, f64) {
+        (((self.lithium - self.a_p) / self.a_n).max(0.0), (self.lithium / self.a_n).min(1.0))
+    }
+
+    /// Open-circuit voltage (V) at negative stoichiometry `x_n` on the line.
+    pub fn ocv(&self, p: &ParameterSet, x_n: f64) -> f64 {
+        p.positive.ocp.eval(self.positive(x_n)) - p.negative.ocp.eval(x_n)
+    }
+
+    /// The negative stoichiometry at which the open-circuit voltage is `v` (V), clamped to the
+    /// reachable range when `v` is out of reach. The OCV rises with `x_n`; bisection.
+    pub fn negative_at_ocv(&self, p: &ParameterSet, v: f64) -> f64 {
+        let (lo, hi) = self.negative_range();
+        let ocv = |x_n: f64| self.ocv(p, x_n);
+        let (mut a, mut b) = (lo, hi);
+        if ocv(a) >= v {
+            return a;
+        }
+        if ocv(b) <= v {
+            return b;
+        }
+        for _ in 0..200 {
+            let m = 0.5 * (a + b);
+            if m <= a || m >= b {
+                break;
+            }
+            if ocv(m) < v { a = m } else { b = m }
+        }
+        0.5 * (a + b)
+    }
 }
 
 /// The stoichiometry window between `cell.lower_cutoff` and `cell.upper_cutoff` with the
@@ -53,40 +101,27 @@ fn capacities(p: &ParameterSet) -> (f64, f64, f64) {
 /// stoichiometries (0, 1) with that lithium.
 pub fn stoichiometry_window(p: &ParameterSet) -> Result<StoichiometryWindow, Error> {
     p.validate()?;
-    let (qn, qp, li) = capacities(p);
-    // x range where both x and y = (li - qn x) / qp lie strictly inside (0, 1).
-    let margin = 1e-10;
-    let lo = ((li - qp) / qn).max(0.0) + margin;
-    let hi = (li / qn).min(1.0) - margin;
-    let y_of = |x: f64| (li - qn * x) / qp;
-    // OCV as a function of x; increasing in x (U_p falls with y, y falls with x; U_n falls with x).
-    let ocv = |x: f64| p.positive.ocp.eval(y_of(x)) - p.negative.ocp.eval(x);
+    let line = LithiumLine::of(p);
     let solve = |field: &str, v: f64| -> Result<f64, Error> {
-        let (mut a, mut b) = (lo, hi);
-        let (fa, fb) = (ocv(a) - v, ocv(b) - v);
-        if !(hi > lo) || !(fa <= 0.0 && fb >= 0.0) {
+        let x = line.negative_at_ocv(p, v);
+        let y = line.positive(x);
+        if (line.ocv(p, x) - v).abs() > 1e-9 || !(x > 0.0 && x < 1.0 && y > 0.0 && y < 1.0) {
+            let (lo, hi) = line.negative_range();
             return Err(Error::invalid(
                 field,
                 v,
                 format!(
                     "not reachable with the cell's lithium: the OCV spans {:.4} V to {:.4} V over the usable stoichiometries",
-                    ocv(lo),
-                    ocv(hi)
+                    line.ocv(p, lo),
+                    line.ocv(p, hi)
                 ),
             ));
         }
-        for _ in 0..200 {
-            let m = 0.5 * (a + b);
-            if ocv(m) - v < 0.0 { a = m } else { b = m }
-            if b - a <= 1e-15 {
-                break;
-            }
-        }
-        Ok(0.5 * (a + b))
+        Ok(x)
     };
     let x100 = solve("cell.upper_cutoff", p.cell.upper_cutoff)?;
     let x0 = solve("cell.lower_cutoff", p.cell.lower_cutoff)?;
-    Ok(StoichiometryWindow { x0, x100, y0: y_of(x0), y100: y_of(x100) })
+    Ok(StoichiometryWindow { x0, x100, y0: line.positive(x0), y100: line.positive(x100) })
 }
 
 /// Sets the initial particle concentrations of `p` to state of charge `soc` in [0, 1]
