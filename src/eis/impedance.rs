@@ -15,6 +15,7 @@ use rayon::prelude::*;
 use super::linearise::Linearisation;
 use super::spectrum::Spectrum;
 use crate::error::Error;
+use crate::solver::sparse::pattern_with_diagonal;
 
 /// Reusable complex solver for the impedance of one linearisation at many frequencies.
 pub struct ImpedanceSolver<'a> {
@@ -40,27 +41,8 @@ impl<'a> ImpedanceSolver<'a> {
     /// Builds the pattern of `i w M - J` (Jacobian entries plus the diagonal) and its
     /// symbolic LU.
     pub fn new(lin: &'a Linearisation) -> Result<Self, Error> {
-        let n = lin.n;
-        let mut cols: Vec<Vec<usize>> = vec![Vec::new(); n];
-        for &(r, c, _) in &lin.jacobian {
-            cols[c].push(r);
-        }
-        for (c, rows) in cols.iter_mut().enumerate() {
-            rows.push(c);
-            rows.sort_unstable();
-            rows.dedup();
-        }
-        let mut col_ptr = Vec::with_capacity(n + 1);
-        let mut row_idx = Vec::new();
-        col_ptr.push(0);
-        for rows in &cols {
-            row_idx.extend_from_slice(rows);
-            col_ptr.push(row_idx.len());
-        }
-        let slot = |r: usize, c: usize| col_ptr[c] + row_idx[col_ptr[c]..col_ptr[c + 1]].partition_point(|&x| x < r);
-        let slots = lin.jacobian.iter().map(|&(r, c, _)| slot(r, c)).collect();
-        let diag = (0..n).map(|i| slot(i, i)).collect();
-        let symbolic = SymbolicSparseColMat::new_checked(n, n, col_ptr, None, row_idx);
+        let entries: Vec<(usize, usize)> = lin.jacobian.iter().map(|&(r, c, _)| (r, c)).collect();
+        let (symbolic, slots, diag) = pattern_with_diagonal(lin.n, &entries);
         let symbolic_lu = factorize_symbolic_lu(symbolic.as_ref(), Default::default())
             .map_err(|e| Error::Linear(format!("symbolic LU: {e:?}")))?;
         Ok(Self { lin, symbolic, slots, diag, symbolic_lu })

@@ -13,6 +13,34 @@ use faer::{Conj, Par};
 use super::static_lu::StaticLu;
 use crate::error::Error;
 
+/// The compressed-column pattern of `entries` (row, col) plus the diagonal of an `n x n`
+/// matrix, with the value slot of each entry and of each diagonal element.
+pub(crate) fn pattern_with_diagonal(n: usize, entries: &[(usize, usize)]) -> (SymbolicSparseColMat<usize>, Vec<usize>, Vec<usize>) {
+    let mut cols: Vec<Vec<usize>> = vec![Vec::new(); n];
+    for &(r, c) in entries {
+        cols[c].push(r);
+    }
+    for (c, rows) in cols.iter_mut().enumerate() {
+        rows.push(c);
+        rows.sort_unstable();
+        rows.dedup();
+    }
+    let mut col_ptr = Vec::with_capacity(n + 1);
+    let mut row_idx = Vec::new();
+    col_ptr.push(0);
+    for rows in &cols {
+        row_idx.extend_from_slice(rows);
+        col_ptr.push(row_idx.len());
+    }
+    let slot_of = |r: usize, c: usize| -> usize {
+        let start = col_ptr[c];
+        start + row_idx[start..col_ptr[c + 1]].binary_search(&r).expect("entry in pattern")
+    };
+    let slots = entries.iter().map(|&(r, c)| slot_of(r, c)).collect();
+    let diag = (0..n).map(|i| slot_of(i, i)).collect();
+    (SymbolicSparseColMat::new_checked(n, n, col_ptr, None, row_idx), slots, diag)
+}
+
 /// A square sparse matrix with a fixed pattern (the Jacobian pattern plus the diagonal).
 #[derive(Clone)]
 pub struct SparseSystem {
@@ -121,29 +149,7 @@ impl Clone for PivotingLu {
 impl PivotingLu {
     /// Builds the pattern from distinct Jacobian entries `(row, col)`.
     fn new(n: usize, entries: &[(usize, usize)]) -> Result<Self, Error> {
-        let mut cols: Vec<Vec<usize>> = vec![Vec::new(); n];
-        for &(r, c) in entries {
-            cols[c].push(r);
-        }
-        for (c, rows) in cols.iter_mut().enumerate() {
-            rows.push(c);
-            rows.sort_unstable();
-            rows.dedup();
-        }
-        let mut col_ptr = Vec::with_capacity(n + 1);
-        let mut row_idx = Vec::new();
-        col_ptr.push(0);
-        for rows in &cols {
-            row_idx.extend_from_slice(rows);
-            col_ptr.push(row_idx.len());
-        }
-        let slot_of = |r: usize, c: usize| -> usize {
-            let start = col_ptr[c];
-            start + row_idx[start..col_ptr[c + 1]].binary_search(&r).expect("entry in pattern")
-        };
-        let diag = (0..n).map(|i| slot_of(i, i)).collect();
-        let slots = entries.iter().map(|&(r, c)| slot_of(r, c)).collect();
-        let symbolic = SymbolicSparseColMat::new_checked(n, n, col_ptr, None, row_idx);
+        let (symbolic, slots, diag) = pattern_with_diagonal(n, entries);
         let symbolic_lu = factorize_symbolic_lu(symbolic.as_ref(), Default::default())
             .map_err(|e| Error::Linear(format!("symbolic LU: {e:?}")))?;
         Ok(Self::from_parts(n, symbolic, diag, slots, symbolic_lu))
