@@ -8,7 +8,7 @@ use clap::{Parser, Subcommand};
 
 use cellstudio::geometry::{MeshSizes, ModelBuilder};
 use cellstudio::models::{ModelKind, Submodels};
-use cellstudio::params::{ParameterSet, chen2020};
+use cellstudio::params::ParameterSet;
 use cellstudio::protocol::Protocol;
 use cellstudio::report::plot::{Series, line_plot};
 use cellstudio::simulation::{SimOptions, simulate};
@@ -179,10 +179,7 @@ fn run(cli: Cli) -> Result<(), Error> {
     match cli.command {
         Command::Diagnose { model, data, params, contact_resistance, thermal, fit, refits, start_at_rest, max_rounds, out } => {
             use cellstudio::diagnose::{DiagnoseOptions, default_fit_parameter, diagnose_rounds, report};
-            let p = match &params {
-                Some(path) => ParameterSet::from_file(path)?,
-                None => chen2020(),
-            };
+            let p = ParameterSet::from_file_or_default(params.as_deref())?;
             let rec = cellstudio::data::Recording::from_csv(&data)?;
             let submodels = Submodels { contact_resistance, thermal, ..Default::default() };
             let mut options = DiagnoseOptions::new(cellstudio::problem::fitting::ModelSpec::new(model, submodels));
@@ -244,7 +241,7 @@ fn run(cli: Cli) -> Result<(), Error> {
             Ok(())
         }
         Command::Eis { model, soc, params, contact_resistance, frequencies, fit, parameters, optimiser, out } => {
-            let mut p = eis::parameters(params.as_deref())?;
+            let mut p = ParameterSet::from_file_or_default(params.as_deref())?;
             if let Some(r) = contact_resistance {
                 p.cell.contact_resistance = r;
             }
@@ -305,10 +302,7 @@ fn run(cli: Cli) -> Result<(), Error> {
             Ok(())
         }
         Command::Simulate { model, c_rate, protocol, params, contact_resistance, thermal, mesh, out, repeat, json } => {
-            let mut p: ParameterSet = match &params {
-                Some(path) => ParameterSet::from_file(path)?,
-                None => chen2020(),
-            };
+            let mut p = ParameterSet::from_file_or_default(params.as_deref())?;
             if let Some(r) = contact_resistance {
                 p.cell.contact_resistance = r;
             }

@@ -7,6 +7,12 @@ use super::bpx::from_bpx_json;
 use crate::error::Error;
 
 impl ParameterSet {
+    /// Reads the parameter set at `path` (see [`from_file`](Self::from_file)), or returns the
+    /// embedded Chen 2020 set when no path is given.
+    pub fn from_file_or_default(path: Option<&Path>) -> Result<Self, Error> {
+        path.map_or_else(|| Ok(super::chen2020()), Self::from_file)
+    }
+
     /// Reads a parameter set: `.toml` (this crate's layout), `.json` holding either this
     /// crate's layout or a BPX document (recognised by its `Parameterisation` section; the
     /// import's unknown fields are printed as warnings to stderr), validated.

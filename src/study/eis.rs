@@ -1,7 +1,7 @@
 //! The `eis` run: a model's impedance spectrum at a state of charge, and optionally a fit of
 //! named parameters to a measured spectrum, with CSV output and a Nyquist plot.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use crate::eis::{EisFit, Spectrum, log_frequencies};
 use crate::error::Error;
@@ -76,9 +76,4 @@ pub fn run_eis(run: &EisRun) -> Result<EisOutcome, Error> {
     spectrum.write_csv(&csv)?;
     files.push(csv);
     Ok(EisOutcome { spectrum, fit, files })
-}
-
-/// Reads a parameter set file or the embedded default.
-pub fn parameters(path: Option<&Path>) -> Result<ParameterSet, Error> {
-    path.map_or_else(|| Ok(crate::params::chen2020()), ParameterSet::from_file)
 }
