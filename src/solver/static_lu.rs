@@ -23,9 +23,23 @@ pub struct StaticLu {
     vals: Vec<f64>,
     /// `1 / U_ii`.
     inv_diag: Vec<f64>,
+    /// Off-diagonal entries of `L` in row order, and of `D^-1 U` in reverse row order (one
+    /// flat sweep each: no per-row loop in the solve).
+    lower: Vec<Entry>,
+    upper: Vec<Entry>,
     /// Dense work row (zero between uses) and permuted solve vector.
     work: Vec<f64>,
     z: Vec<f64>,
+}
+
+/// A factor entry for the solve's sweeps: `z[row] -= val * z[col]`; `pos` is its place in
+/// the factor values.
+#[derive(Clone, Copy)]
+struct Entry {
+    val: f64,
+    row: u32,
+    col: u32,
+    pos: u32,
 }
 
 /// Smallest accepted |pivot| relative to the largest |entry| of its original row.
@@ -70,6 +84,10 @@ impl StaticLu {
         };
         let slots = entries.iter().map(|&(r, c)| pos(r, c)).collect();
         let nnz = cols.len();
+        let entry = |i: usize, p: usize| Entry { val: 0.0, row: i as u32, col: cols[p] as u32, pos: p as u32 };
+        let lower = (0..n).flat_map(|i| (row_ptr[i]..diag_pos[i]).map(move |p| (i, p))).map(|(i, p)| entry(i, p)).collect();
+        let upper =
+            (0..n).rev().flat_map(|i| (diag_pos[i] + 1..row_ptr[i + 1]).map(move |p| (i, p))).map(|(i, p)| entry(i, p)).collect();
         let lu = Self {
             n,
             perm,
@@ -78,6 +96,8 @@ impl StaticLu {
             diag_pos,
             vals: vec![0.0; nnz],
             inv_diag: vec![0.0; n],
+            lower,
+            upper,
             work: vec![0.0; n],
             z: vec![0.0; n],
         };
@@ -98,54 +118,77 @@ impl StaticLu {
     /// Factorises in place the matrix loaded into [`StaticLu::values_mut`]. Returns `false`
     /// when a pivot is tiny relative to its row or not finite (the factors are then invalid).
     pub fn factorise(&mut self) -> bool {
-        let (cols, vals, w) = (&self.cols, &mut self.vals, &mut self.work);
-        for i in 0..self.n {
-            let (start, end, d) = (self.row_ptr[i], self.row_ptr[i + 1], self.diag_pos[i]);
-            let mut row_max = 0.0f64;
-            for p in start..end {
-                w[cols[p]] = vals[p];
-                row_max = row_max.max(vals[p].abs());
-            }
-            for p in start..d {
-                let k = cols[p];
-                let l = w[k] * self.inv_diag[k];
-                w[k] = l;
-                if l != 0.0 {
-                    for q in self.diag_pos[k] + 1..self.row_ptr[k + 1] {
-                        w[cols[q]] -= l * vals[q];
+        let (cols, vals, w) = (&self.cols[..], &mut self.vals[..], &mut self.work[..]);
+        let (row_ptr, diag_pos, inv_diag) = (&self.row_ptr[..], &self.diag_pos[..], &mut self.inv_diag[..]);
+        // SAFETY: `new` builds `row_ptr` (length n + 1, non-decreasing, ending at
+        // `cols.len() == vals.len()`), `diag_pos[i]` within row i, and every column index
+        // below n (the length of `w` and `inv_diag`); the eliminated rows k < i are earlier
+        // rows of the same structure.
+        unsafe {
+            for i in 0..self.n {
+                let (start, end, d) = (*row_ptr.get_unchecked(i), *row_ptr.get_unchecked(i + 1), *diag_pos.get_unchecked(i));
+                let mut row_max = 0.0f64;
+                for p in start..end {
+                    let v = *vals.get_unchecked(p);
+                    *w.get_unchecked_mut(*cols.get_unchecked(p)) = v;
+                    row_max = row_max.max(v.abs());
+                }
+                for p in start..d {
+                    let k = *cols.get_unchecked(p);
+                    let l = *w.get_unchecked(k) * *inv_diag.get_unchecked(k);
+                    *w.get_unchecked_mut(k) = l;
+                    if l != 0.0 {
+                        for q in *diag_pos.get_unchecked(k) + 1..*row_ptr.get_unchecked(k + 1) {
+                            *w.get_unchecked_mut(*cols.get_unchecked(q)) -= l * vals.get_unchecked(q);
+                        }
                     }
                 }
+                for p in start..end {
+                    let c = *cols.get_unchecked(p);
+                    *vals.get_unchecked_mut(p) = *w.get_unchecked(c);
+                    *w.get_unchecked_mut(c) = 0.0;
+                }
+                let pivot = *vals.get_unchecked(d);
+                if !(pivot.abs() > PIVOT_TOL * row_max) || !pivot.is_finite() {
+                    return false;
+                }
+                *inv_diag.get_unchecked_mut(i) = 1.0 / pivot;
             }
-            for p in start..end {
-                vals[p] = w[cols[p]];
-                w[cols[p]] = 0.0;
-            }
-            let pivot = vals[d];
-            if !(pivot.abs() > PIVOT_TOL * row_max) || !pivot.is_finite() {
-                return false;
-            }
-            self.inv_diag[i] = 1.0 / pivot;
+        }
+        for e in &mut self.lower {
+            e.val = self.vals[e.pos as usize];
+        }
+        for e in &mut self.upper {
+            e.val = self.vals[e.pos as usize] * self.inv_diag[e.row as usize];
         }
         true
     }
 
     /// Solves `A x = b` in place with the last successful factorisation.
     pub fn solve(&mut self, b: &mut [f64]) {
-        let (cols, vals, z) = (&self.cols, &self.vals, &mut self.z);
-        for (zi, &p) in z.iter_mut().zip(&self.perm) {
-            *zi = b[p];
-        }
-        let rows = self.row_ptr.windows(2).zip(&self.diag_pos);
-        for (i, (r, &d)) in rows.clone().enumerate() {
-            let lower = cols[r[0]..d].iter().zip(&vals[r[0]..d]);
-            z[i] = lower.fold(z[i], |s, (&c, &v)| s - v * z[c]);
-        }
-        for (i, ((r, &d), &inv)) in rows.zip(&self.inv_diag).enumerate().rev() {
-            let upper = cols[d + 1..r[1]].iter().zip(&vals[d + 1..r[1]]);
-            z[i] = upper.fold(z[i], |s, (&c, &v)| s - v * z[c]) * inv;
-        }
-        for (zi, &p) in z.iter().zip(&self.perm) {
-            b[p] = *zi;
+        assert_eq!(b.len(), self.n);
+        let z = &mut self.z[..];
+        // SAFETY: `perm` is a permutation of 0..n, `b.len() == n`, and every entry's row and
+        // column are below n (built by `new`). This is the innermost loop of every Newton
+        // iteration, where bounds checks would cost as much as the arithmetic.
+        unsafe {
+            for (zi, &p) in z.iter_mut().zip(&self.perm) {
+                *zi = *b.get_unchecked(p);
+            }
+            // L z = P b, row by row: each row's columns are earlier rows, already final.
+            for e in &self.lower {
+                *z.get_unchecked_mut(e.row as usize) -= e.val * z.get_unchecked(e.col as usize);
+            }
+            // (D^-1 U) x = D^-1 z, from the last row up.
+            for (zi, d) in z.iter_mut().zip(&self.inv_diag) {
+                *zi *= d;
+            }
+            for e in &self.upper {
+                *z.get_unchecked_mut(e.row as usize) -= e.val * z.get_unchecked(e.col as usize);
+            }
+            for (zi, &p) in z.iter().zip(&self.perm) {
+                *b.get_unchecked_mut(p) = *zi;
+            }
         }
     }
 }
