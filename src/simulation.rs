@@ -221,6 +221,9 @@ pub fn consistent_initialisation(
 /// Running totals and recording of outputs.
 struct Recorder<'a> {
     model: &'a dyn Model,
+    /// The states that voltage and temperature read ([`Model::output_states`]), as runs of
+    /// consecutive indices.
+    outputs: Vec<std::ops::Range<usize>>,
     keep_states: bool,
     sol: Solution,
     /// Discharged charge (A h) and delivered energy (W h) at the end of the last step.
@@ -256,12 +259,13 @@ impl Recorder<'_> {
     }
 
     /// Charge and energy over `[a, b]` by adaptive Simpson quadrature on the interpolant, from
-    /// the current and power (`self.i`, `self.p`) at `a`; leaves `y(b)` in `buf`. A step is
+    /// the current and power (`self.i`, `self.p`) at `a`; leaves `y(b)` in `buf` (only the
+    /// output states unless every state is kept). A step is
     /// halved until the two halves agree with the whole to 1e-7 of the charge and energy
     /// scales, so long solver steps on a curved voltage do not bias the energy.
     fn integrate_to(&self, dense: &DenseOutput, drive: &Driven, a: f64, b: f64, buf: &mut [f64]) -> IntervalEnd {
         let mut sample = |t: f64, buf: &mut [f64]| {
-            dense.eval(t, buf);
+            dense.eval_ranges(t, &self.outputs, buf);
             let i = drive.current(t, buf);
             (i, i * self.model.voltage(buf, i))
         };
@@ -270,7 +274,11 @@ impl Recorder<'_> {
         let voltage = if end.0 != 0.0 { end.1 / end.0 } else { self.model.voltage(buf, 0.0) };
         let (dq, de) = adaptive_simpson(&mut sample, buf, a, b, (self.i, self.p), mid, end, 12);
         // `buf` was overwritten by interior samples: restore y(b).
-        dense.eval(b, buf);
+        if self.keep_states {
+            dense.eval(b, buf);
+        } else {
+            dense.eval_ranges(b, &self.outputs, buf);
+        }
         IntervalEnd { dq: dq / 3600.0, de: de / 3600.0, current: end.0, voltage }
     }
 }
@@ -327,7 +335,7 @@ pub fn simulate(
             return Err(Error::invalid("t_eval", w[1], "output times must increase strictly"));
         }
     }
-    let mut rec = Recorder { model, keep_states: opts.keep_states, sol: Solution::default(), q: 0.0, e: 0.0, i: 0.0, p: 0.0 };
+    let mut rec = Recorder { model, outputs: index_runs(model.output_states()), keep_states: opts.keep_states, sol: Solution::default(), q: 0.0, e: 0.0, i: 0.0, p: 0.0 };
     let mut next_eval = 0usize;
     let mut buf = vec![0.0; n];
     let mut t0 = 0.0;
@@ -409,6 +417,20 @@ pub fn simulate(
         }
     }
     Ok(rec.sol)
+}
+
+/// Sorted indices as runs of consecutive indices.
+fn index_runs(mut idx: Vec<usize>) -> Vec<std::ops::Range<usize>> {
+    idx.sort_unstable();
+    idx.dedup();
+    let mut runs: Vec<std::ops::Range<usize>> = Vec::new();
+    for i in idx {
+        match runs.last_mut() {
+            Some(r) if r.end == i => r.end += 1,
+            _ => runs.push(i..i + 1),
+        }
+    }
+    runs
 }
 
 fn at_time(err: Error, t: f64) -> Error {

@@ -322,6 +322,11 @@ impl Model for Dfn {
         total
     }
 
+    fn output_states(&self) -> Vec<usize> {
+        let l = &self.layout;
+        std::iter::once(l.phis_p + l.nxp - 1).chain(l.temp).collect()
+    }
+
     fn open_circuit_voltage(&self, y: &[f64]) -> f64 {
         let l = &self.layout;
         let mut mean = [0.0; 2];

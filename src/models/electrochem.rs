@@ -122,6 +122,14 @@ impl Electrochem {
         (self.disc.sphere_n.surface(cn), self.disc.sphere_p.surface(cp))
     }
 
+    /// Indices that [`Self::single_particle_surfaces`] reads in a state laid out `[cn, cp, ..]`:
+    /// the last two shells of each particle.
+    pub fn single_particle_surface_states(&self) -> Vec<usize> {
+        let (nn, np) = (self.disc.sphere_n.len(), self.disc.sphere_p.len());
+        let last_two = |start: usize, n: usize| start + n.saturating_sub(2)..start + n;
+        last_two(0, nn).chain(last_two(nn, np)).collect()
+    }
+
     /// Lithium (mol) in both electrodes of a single particle model.
     pub fn single_particle_lithium(&self, cn: &[f64], cp: &[f64]) -> f64 {
         let p = &self.params;

@@ -103,6 +103,11 @@ pub trait Model: Send + Sync {
     fn solid_lithium(&self, y: &[f64]) -> f64;
     /// Open-circuit voltage at the particles' average stoichiometries (V).
     fn open_circuit_voltage(&self, y: &[f64]) -> f64;
+    /// Indices of the states that [`Model::voltage`] and [`Model::temperature`] read: the
+    /// energy quadrature interpolates only these (all states unless a model says fewer).
+    fn output_states(&self) -> Vec<usize> {
+        (0..self.len()).collect()
+    }
 }
 
 /// Appends the pattern of a tridiagonal block (a 1-D three-point stencil) on states

@@ -136,6 +136,12 @@ impl Model for Spm {
         self.ec.single_particle_lithium(cn, cp)
     }
 
+    fn output_states(&self) -> Vec<usize> {
+        let mut out = self.ec.single_particle_surface_states();
+        out.extend(self.ec.submodels.thermal.then(|| self.len() - 1));
+        out
+    }
+
     fn open_circuit_voltage(&self, y: &[f64]) -> f64 {
         let (cn, cp) = self.split(y);
         self.ec.single_particle_ocv(cn, cp)

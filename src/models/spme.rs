@@ -263,6 +263,14 @@ impl Model for Spme {
         self.ec.single_particle_lithium(cn, cp)
     }
 
+    fn output_states(&self) -> Vec<usize> {
+        let (nn, np) = (self.ec.disc.sphere_n.len(), self.ec.disc.sphere_p.len());
+        let mut out = self.ec.single_particle_surface_states();
+        out.extend(nn + np..nn + np + self.electrolyte.len());
+        out.extend(self.ec.submodels.thermal.then(|| self.len() - 1));
+        out
+    }
+
     fn open_circuit_voltage(&self, y: &[f64]) -> f64 {
         let (cn, cp, _) = self.blocks(y);
         self.ec.single_particle_ocv(cn, cp)

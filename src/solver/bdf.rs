@@ -98,17 +98,27 @@ impl DenseOutput<'_> {
         self.end
     }
 
-    /// Writes `y(t)` into `out`.
-    pub fn eval(&self, t: f64, out: &mut [f64]) {
-        out.copy_from_slice(&self.d[0]);
+    /// Writes the states in `ranges` (of indices) at `t` into the same places of `out`; other
+    /// entries are left alone.
+    pub fn eval_ranges(&self, t: f64, ranges: &[std::ops::Range<usize>], out: &mut [f64]) {
+        for r in ranges {
+            out[r.clone()].copy_from_slice(&self.d[0][r.clone()]);
+        }
         let mut p = 1.0;
         for j in 0..self.order {
             let shift = self.t - self.h * j as f64;
             p *= (t - shift) / (self.h * (j + 1) as f64);
-            for (o, dj) in out.iter_mut().zip(&self.d[j + 1]) {
-                *o += dj * p;
+            for r in ranges {
+                for (o, dj) in out[r.clone()].iter_mut().zip(&self.d[j + 1][r.clone()]) {
+                    *o += dj * p;
+                }
             }
         }
+    }
+
+    /// Writes `y(t)` into `out`.
+    pub fn eval(&self, t: f64, out: &mut [f64]) {
+        self.eval_ranges(t, &[0..out.len()], out)
     }
 }
 

@@ -143,6 +143,12 @@ impl Model for Augmented {
     fn open_circuit_voltage(&self, y: &[f64]) -> f64 {
         self.base.open_circuit_voltage(&y[..self.n_base])
     }
+
+    fn output_states(&self) -> Vec<usize> {
+        let mut out = self.base.output_states();
+        out.extend(self.n_base..self.len());
+        out
+    }
 }
 
 impl PhysicsModel for Augmented {
