@@ -181,6 +181,19 @@ fn rms(x: &[f64], scale: &[f64]) -> f64 {
     (s / x.len() as f64).sqrt()
 }
 
+/// Root mean square of `c x` weighted by `w = 1 / scale`.
+fn weighted_rms(c: f64, x: &[f64], w: &[f64]) -> f64 {
+    let s: f64 = x.iter().zip(w).map(|(a, b)| (a * b) * (a * b)).sum();
+    c.abs() * (s / x.len() as f64).sqrt()
+}
+
+/// Error weights `1 / (atol + rtol |y|)`.
+fn set_weights(w: &mut [f64], atol: &[f64], rtol: f64, y: &[f64]) {
+    for ((w, a), y) in w.iter_mut().zip(atol).zip(y) {
+        *w = 1.0 / (a + rtol * y.abs());
+    }
+}
+
 /// Rescales the difference array `d` for a step-size change by `factor`, using `scratch`
 /// (at least `order + 1` rows of length n) as work space.
 fn change_d(d: &mut [Vec<f64>], scratch: &mut [Vec<f64>], order: usize, factor: f64) {
@@ -320,8 +333,8 @@ pub fn integrate(
     let mut psi = vec![0.0; n];
     let mut y_new = vec![0.0; n];
     let mut dvec = vec![0.0; n];
-    let mut scale = vec![0.0; n];
-    let mut err = vec![0.0; n];
+    // Error weights 1 / (atol + rtol |y|) of the current step.
+    let mut weight = vec![0.0; n];
     let mut g_old = event.map(|g| g(t, y0));
     let mut steps = 0usize;
 
@@ -360,9 +373,7 @@ pub fn integrate(
                     *ps += w * dk;
                 }
             }
-            for i in 0..n {
-                scale[i] = atol[i] + rtol * y_pred[i].abs();
-            }
+            set_weights(&mut weight, &atol, rtol, &y_pred);
             let c = h / alpha[order];
             let mut converged;
             loop {
@@ -395,14 +406,16 @@ pub fn integrate(
                     n_iter = k + 1;
                     dae.rhs(t_new, &y_new, &mut f);
                     stats.rhs_evals += 1;
-                    if f.iter().any(|v| !v.is_finite()) {
+                    let mut finite = true;
+                    for ((((r, fi), m), ps), dv) in rhs.iter_mut().zip(&f).zip(mass).zip(&psi).zip(&dvec) {
+                        finite &= fi.is_finite();
+                        *r = c * fi - m * (ps + dv);
+                    }
+                    if !finite {
                         break;
                     }
-                    for i in 0..n {
-                        rhs[i] = c * f[i] - mass[i] * (psi[i] + dvec[i]);
-                    }
                     ws.system.solve(&mut rhs);
-                    let dy_norm = rms(&rhs, &scale);
+                    let dy_norm = weighted_rms(1.0, &rhs, &weight);
                     let rate = dy_norm_old.map(|old| dy_norm / old);
                     if let Some(r) = rate {
                         if r >= 1.0
@@ -411,9 +424,9 @@ pub fn integrate(
                             break;
                         }
                     }
-                    for i in 0..n {
-                        y_new[i] += rhs[i];
-                        dvec[i] += rhs[i];
+                    for ((yn, dv), r) in y_new.iter_mut().zip(dvec.iter_mut()).zip(&rhs) {
+                        *yn += r;
+                        *dv += r;
                     }
                     if let Some(r) = rate {
                         rate_memory = Some(r);
@@ -458,11 +471,8 @@ pub fn integrate(
                 continue;
             }
             safety = 0.9 * (2 * NEWTON_MAXITER + 1) as f64 / (2 * NEWTON_MAXITER + n_iter) as f64;
-            for i in 0..n {
-                scale[i] = atol[i] + rtol * y_new[i].abs();
-                err[i] = error_const[order] * dvec[i];
-            }
-            error_norm = rms(&err, &scale);
+            set_weights(&mut weight, &atol, rtol, &y_new);
+            error_norm = weighted_rms(error_const[order], &dvec, &weight);
             if error_norm > 1.0 {
                 let factor = MIN_FACTOR.max(safety * error_norm.powf(-1.0 / (order as f64 + 1.0)));
                 h_abs *= factor;
@@ -480,9 +490,12 @@ pub fn integrate(
         jac_current = false;
         n_equal_steps += 1;
         // Update the difference array.
-        for i in 0..n {
-            d[order + 2][i] = dvec[i] - d[order + 1][i];
-            d[order + 1][i] = dvec[i];
+        {
+            let (lo, hi) = d.split_at_mut(order + 2);
+            for ((next, last), dv) in hi[0].iter_mut().zip(lo[order + 1].iter_mut()).zip(&dvec) {
+                *next = dv - *last;
+                *last = *dv;
+            }
         }
         for k in (0..=order).rev() {
             let (lo, hi) = d.split_at_mut(k + 1);
@@ -544,18 +557,10 @@ pub fn integrate(
         if n_equal_steps < order + 1 {
             continue;
         }
-        let error_m_norm = if order > 1 {
-            let e: Vec<f64> = d[order].iter().map(|v| error_const[order - 1] * v).collect();
-            rms(&e, &scale)
-        } else {
-            f64::INFINITY
-        };
-        let error_p_norm = if order < MAX_ORDER {
-            let e: Vec<f64> = d[order + 2].iter().map(|v| error_const[order + 1] * v).collect();
-            rms(&e, &scale)
-        } else {
-            f64::INFINITY
-        };
+        let error_m_norm =
+            if order > 1 { weighted_rms(error_const[order - 1], &d[order], &weight) } else { f64::INFINITY };
+        let error_p_norm =
+            if order < MAX_ORDER { weighted_rms(error_const[order + 1], &d[order + 2], &weight) } else { f64::INFINITY };
         let norms = [error_m_norm, error_norm, error_p_norm];
         let mut best = 0;
         let mut best_factor = f64::NEG_INFINITY;
