@@ -127,6 +127,10 @@ pub struct Workspace {
     pattern: ColouredPattern,
     system: SparseSystem,
     jac: Vec<f64>,
+    /// The algebraic block (algebraic rows and columns) with its own, smaller colouring, and
+    /// each of its entries' place in `pattern`; built at the first consistent initialisation.
+    algebraic: Option<(ColouredPattern, Vec<usize>)>,
+    algebraic_jac: Vec<f64>,
 }
 
 impl Workspace {
@@ -137,7 +141,7 @@ impl Workspace {
         entries.dedup();
         let system = SparseSystem::new(n, &entries)?;
         let jac = vec![0.0; entries.len()];
-        Ok(Self { pattern: ColouredPattern::new(n, entries), system, jac })
+        Ok(Self { pattern: ColouredPattern::new(n, entries), system, jac, algebraic: None, algebraic_jac: Vec::new() })
     }
 
     /// Residual evaluations per Jacobian.
@@ -152,7 +156,9 @@ impl Workspace {
     }
 
     /// Factorises the Newton matrix of the algebraic rows alone, `diag(mass) + J_aa`
-    /// (identity on differential rows), for consistent initialisation; `f0 = f(y)`.
+    /// (identity on differential rows), for consistent initialisation; `f0 = f(y)`. Only the
+    /// algebraic columns are perturbed, so a Jacobian costs the colours of the algebraic block
+    /// (the DFN's potentials) instead of those of the whole pattern.
     pub fn factorise_algebraic(
         &mut self,
         f: &mut dyn FnMut(&[f64], &mut [f64]),
@@ -161,11 +167,17 @@ impl Workspace {
         scale: &[f64],
         mass: &[f64],
     ) -> Result<(), Error> {
-        self.pattern.evaluate(f, y, f0, scale, &mut self.jac);
-        for (v, &(r, c)) in self.jac.iter_mut().zip(&self.pattern.entries) {
-            if mass[r] != 0.0 || mass[c] != 0.0 {
-                *v = 0.0;
-            }
+        let full = &self.pattern.entries;
+        let (block, place) = self.algebraic.get_or_insert_with(|| {
+            let (place, entries): (Vec<usize>, Vec<(usize, usize)>) =
+                full.iter().enumerate().filter(|&(_, &(r, c))| mass[r] == 0.0 && mass[c] == 0.0).unzip();
+            (ColouredPattern::new(y.len(), entries), place)
+        });
+        self.algebraic_jac.resize(place.len(), 0.0);
+        block.evaluate(f, y, f0, scale, &mut self.algebraic_jac);
+        self.jac.iter_mut().for_each(|v| *v = 0.0);
+        for (&k, &v) in place.iter().zip(&self.algebraic_jac) {
+            self.jac[k] = v;
         }
         self.system.factorise(mass, -1.0, &self.jac)
     }

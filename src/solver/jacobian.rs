@@ -26,7 +26,9 @@ impl ColouredPattern {
         let mut colour = vec![usize::MAX; n];
         let mut groups: Vec<Vec<usize>> = Vec::new();
         let mut forbidden: Vec<usize> = Vec::new(); // forbidden[g] == c marks g used near column c
-        for c in 0..n {
+        // A column without entries is never perturbed: it would only disturb the rows the
+        // pattern leaves out (e.g. differential rows when colouring an algebraic block).
+        for c in (0..n).filter(|&c| !rows_of_col[c].is_empty()) {
             for &r in &rows_of_col[c] {
                 for &other in &cols_of_row[r] {
                     let g = colour[other];
@@ -89,6 +91,23 @@ impl ColouredPattern {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A block pattern (here the entry (0, 0) of f = (y0 + 5 y1, y1)) must not perturb the
+    /// columns it leaves out, or their couplings leak into the block's entries.
+    #[test]
+    fn columns_outside_the_pattern_are_not_perturbed() {
+        let pattern = ColouredPattern::new(2, vec![(0, 0)]);
+        let mut f = |y: &[f64], out: &mut [f64]| {
+            out[0] = y[0] + 5.0 * y[1];
+            out[1] = y[1];
+        };
+        let y = [0.3, 0.7];
+        let mut f0 = [0.0; 2];
+        f(&y, &mut f0);
+        let mut jac = [0.0];
+        pattern.evaluate(&mut f, &y, &f0, &[1.0, 1.0], &mut jac);
+        assert!((jac[0] - 1.0).abs() < 1e-7, "{}", jac[0]);
+    }
 
     #[test]
     fn tridiagonal_needs_three_colours_and_exact_linear_jacobian() {
