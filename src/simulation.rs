@@ -263,14 +263,25 @@ impl Recorder<'_> {
     /// output states unless every state is kept). A step is
     /// halved until the two halves agree with the whole to 1e-7 of the charge and energy
     /// scales, so long solver steps on a curved voltage do not bias the energy.
-    fn integrate_to(&self, dense: &DenseOutput, drive: &Driven, a: f64, b: f64, buf: &mut [f64]) -> IntervalEnd {
+    /// `at_b`, when known, is the current and voltage at `b` (the cut-off event evaluated them).
+    fn integrate_to(
+        &self,
+        dense: &DenseOutput,
+        drive: &Driven,
+        (a, b): (f64, f64),
+        at_b: Option<(f64, f64)>,
+        buf: &mut [f64],
+    ) -> IntervalEnd {
         let mut sample = |t: f64, buf: &mut [f64]| {
             dense.eval_ranges(t, &self.outputs, buf);
             let i = drive.current(t, buf);
             (i, i * self.model.voltage(buf, i))
         };
         let mid = sample(0.5 * (a + b), buf);
-        let end = sample(b, buf);
+        let end = match at_b {
+            Some((i, v)) => (i, i * v),
+            None => sample(b, buf),
+        };
         let voltage = if end.0 != 0.0 { end.1 / end.0 } else { self.model.voltage(buf, 0.0) };
         let (dq, de) = adaptive_simpson(&mut sample, buf, a, b, (self.i, self.p), mid, end, 12);
         // `buf` was overwritten by interior samples: restore y(b).
@@ -378,8 +389,12 @@ pub fn simulate(
                 }
             }
         }
+        // The event's last (t, I, V): at a step end the recorder needs the same values.
+        let last_event = std::cell::Cell::new((f64::NAN, 0.0, 0.0));
         let event_fn = |t: f64, yy: &[f64]| {
-            let v = model.voltage(yy, drive.current(t, yy));
+            let i = drive.current(t, yy);
+            let v = model.voltage(yy, i);
+            last_event.set((t, i, v));
             (v - lower).min(upper - v)
         };
         let event: Option<&dyn Fn(f64, &[f64]) -> f64> = if step.has_cutoffs() { Some(&event_fn) } else { None };
@@ -388,13 +403,15 @@ pub fn simulate(
             if let Some(te) = t_eval {
                 while next_eval < te.len() && te[next_eval] <= t_new {
                     let t = te[next_eval];
-                    let end = rec.integrate_to(dense, &drive, t_old, t, &mut buf);
+                    let end = rec.integrate_to(dense, &drive, (t_old, t), None, &mut buf);
                     let (q, e) = (rec.q + end.dq, rec.e + end.de);
                     rec.record(t, &buf, end.current, end.voltage, q, e);
                     next_eval += 1;
                 }
             }
-            let end = rec.integrate_to(dense, &drive, t_old, t_new, &mut buf);
+            let (t_event, i, v) = last_event.get();
+            let at_end = (t_event == t_new).then_some((i, v));
+            let end = rec.integrate_to(dense, &drive, (t_old, t_new), at_end, &mut buf);
             rec.q += end.dq;
             rec.e += end.de;
             rec.i = end.current;
