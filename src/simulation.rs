@@ -225,6 +225,8 @@ struct Recorder<'a> {
     /// consecutive indices.
     outputs: Vec<std::ops::Range<usize>>,
     keep_states: bool,
+    /// Relative tolerance of the energy quadrature: the solver's.
+    rtol: f64,
     sol: Solution,
     /// Discharged charge (A h) and delivered energy (W h) at the end of the last step.
     q: f64,
@@ -261,7 +263,8 @@ impl Recorder<'_> {
     /// Charge and energy over `[a, b]` by adaptive Simpson quadrature on the interpolant, from
     /// the current and power (`self.i`, `self.p`) at `a`; leaves `y(b)` in `buf` (only the
     /// output states unless every state is kept). A step is
-    /// halved until the two halves agree with the whole to 1e-7 of the charge and energy
+    /// halved until the two halves agree with the whole to `rtol` (the solver's: the integral
+    /// need not be more accurate than the trajectory it integrates) of the charge and energy
     /// scales, so long solver steps on a curved voltage do not bias the energy.
     /// `at_b`, when known, is the current and voltage at `b` (the cut-off event evaluated them).
     fn integrate_to(
@@ -283,7 +286,7 @@ impl Recorder<'_> {
             None => sample(b, buf),
         };
         let voltage = if end.0 != 0.0 { end.1 / end.0 } else { self.model.voltage(buf, 0.0) };
-        let (dq, de) = adaptive_simpson(&mut sample, buf, a, b, (self.i, self.p), mid, end, 12);
+        let (dq, de) = adaptive_simpson(&mut sample, buf, (a, b), [(self.i, self.p), mid, end], self.rtol, 12);
         // `buf` was overwritten by interior samples: restore y(b).
         if self.keep_states {
             dense.eval(b, buf);
@@ -295,16 +298,13 @@ impl Recorder<'_> {
 }
 
 /// Adaptive Simpson quadrature of (current, power) over `[a, b]` given the samples at `a`,
-/// the midpoint and `b`; returns (A s, J).
-#[allow(clippy::too_many_arguments)]
+/// the midpoint and `b`, to relative tolerance `tol`; returns (A s, J).
 fn adaptive_simpson(
     sample: &mut dyn FnMut(f64, &mut [f64]) -> (f64, f64),
     buf: &mut [f64],
-    a: f64,
-    b: f64,
-    fa: (f64, f64),
-    fm: (f64, f64),
-    fb: (f64, f64),
+    (a, b): (f64, f64),
+    [fa, fm, fb]: [(f64, f64); 3],
+    tol: f64,
     depth: usize,
 ) -> (f64, f64) {
     let h = b - a;
@@ -318,13 +318,13 @@ fn adaptive_simpson(
     // Tolerances relative to the size of the integrand over the interval.
     let scale_q = h * (fa.0.abs() + fb.0.abs() + 1e-12);
     let scale_e = h * (fa.1.abs() + fb.1.abs() + 1e-12);
-    let converged = (halves.0 - whole.0).abs() <= 1e-7 * scale_q && (halves.1 - whole.1).abs() <= 1e-7 * scale_e;
+    let converged = (halves.0 - whole.0).abs() <= tol * scale_q && (halves.1 - whole.1).abs() <= tol * scale_e;
     if converged || depth == 0 {
         // Richardson extrapolation of the two Simpson estimates.
         return (halves.0 + (halves.0 - whole.0) / 15.0, halves.1 + (halves.1 - whole.1) / 15.0);
     }
-    let l = adaptive_simpson(sample, buf, a, m, fa, fl, fm, depth - 1);
-    let r = adaptive_simpson(sample, buf, m, b, fm, fr, fb, depth - 1);
+    let l = adaptive_simpson(sample, buf, (a, m), [fa, fl, fm], tol, depth - 1);
+    let r = adaptive_simpson(sample, buf, (m, b), [fm, fr, fb], tol, depth - 1);
     (l.0 + r.0, l.1 + r.1)
 }
 
@@ -346,7 +346,8 @@ pub fn simulate(
             return Err(Error::invalid("t_eval", w[1], "output times must increase strictly"));
         }
     }
-    let mut rec = Recorder { model, outputs: index_runs(model.output_states()), keep_states: opts.keep_states, sol: Solution::default(), q: 0.0, e: 0.0, i: 0.0, p: 0.0 };
+    let mut rec = Recorder { model, outputs: index_runs(model.output_states()), keep_states: opts.keep_states,
+        rtol: opts.solver.rtol, sol: Solution::default(), q: 0.0, e: 0.0, i: 0.0, p: 0.0 };
     let mut next_eval = 0usize;
     let mut buf = vec![0.0; n];
     let mut t0 = 0.0;
