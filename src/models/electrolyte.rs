@@ -26,13 +26,15 @@ pub struct ElectrolyteOp {
     pub vols: Vec<Volume>,
     /// Centre-to-centre distances between neighbouring volumes (m), `n_x - 1` of them.
     pub gaps: Vec<f64>,
+    /// Width fraction `dx_i / (dx_i + dx_{i+1})` (-) of the left volume at each interior face.
+    weights: Vec<f64>,
 }
 
 impl ElectrolyteOp {
     pub fn new(ec: &Electrochem) -> Self {
         let centres = ec.disc.x_centres();
         let gaps = centres.windows(2).map(|w| w[1] - w[0]).collect();
-        let mut op = Self { vols: Vec::new(), gaps };
+        let mut op = Self { vols: Vec::new(), gaps, weights: Vec::new() };
         op.refresh(ec);
         op
     }
@@ -64,6 +66,7 @@ impl ElectrolyteOp {
                 Volume { side, eps, tortuosity: eps.powf(b), a, dx }
             })
             .collect();
+        self.weights = self.vols.windows(2).map(|w| w[0].dx / (w[0].dx + w[1].dx)).collect();
     }
 
     pub fn len(&self) -> usize {
@@ -74,21 +77,19 @@ impl ElectrolyteOp {
     /// and `i + 1`: the series resistance of the two half-volumes. PyBaMM uses it for a
     /// coefficient multiplying a gradient (fluxes).
     pub fn harmonic(&self, i: usize, a: f64, b: f64) -> f64 {
-        let (wl, wr) = (self.vols[i].dx, self.vols[i + 1].dx);
-        let beta = wl / (wl + wr);
+        let beta = self.weights[i];
         1.0 / (beta / a + (1.0 - beta) / b)
     }
 
     /// Width-weighted arithmetic mean of node values at the face between volumes `i` and
     /// `i + 1` (linear interpolation to the face).
     pub fn arithmetic(&self, i: usize, a: f64, b: f64) -> f64 {
-        let (wl, wr) = (self.vols[i].dx, self.vols[i + 1].dx);
-        let w = wl / (wl + wr);
+        let w = self.weights[i];
         (1.0 - w) * a + w * b
     }
 
-    /// `dc_e/dt` (mol/(m^3 s)) for concentrations `ce` and volumetric reaction currents `aj`
-    /// (A/m^3) at temperature `temp` (K).
+    /// `dc_e/dt` (mol/(m^3 s)) for concentrations `ce` and volumetric reaction currents
+    /// `aj(i)` (A/m^3) at temperature `temp` (K).
     ///
     /// With `ionic_current = (shape, i_app)` — the ionic current at the `n_x - 1` interior
     /// faces is `shape * i_app` (A/m^2) — the migration flux
@@ -99,7 +100,7 @@ impl ElectrolyteOp {
         &self,
         ec: &Electrochem,
         ce: &[f64],
-        aj: &[f64],
+        aj: impl Fn(usize) -> f64,
         ionic_current: Option<(&[f64], f64)>,
         temp: f64,
         out: &mut [f64],
@@ -107,42 +108,60 @@ impl ElectrolyteOp {
         let p = &ec.params.electrolyte;
         let arr = arrhenius(p.activation_energy, ec.t_ref(), temp);
         let nx = self.len();
+        let (ce, out) = (&ce[..nx], &mut out[..nx]);
         let t_plus = p.transference_number;
         let source_share = if ionic_current.is_some() { 1.0 } else { 1.0 - t_plus };
-        let mut prev_node = self.vols[0].tortuosity * p.diffusivity.eval(ce[0]) * arr;
+        let node = |i: usize| self.vols[i].tortuosity * p.diffusivity.eval(ce[i]) * arr;
+        let mut prev_node = node(0);
         let mut flux_left = 0.0;
         for i in 0..nx {
             let flux_right = if i + 1 < nx {
-                let node = self.vols[i + 1].tortuosity * p.diffusivity.eval(ce[i + 1]) * arr;
-                let mut f = -self.harmonic(i, prev_node, node) * (ce[i + 1] - ce[i]) / self.gaps[i];
+                let next = node(i + 1);
+                let mut f = -self.harmonic(i, prev_node, next) * (ce[i + 1] - ce[i]) / self.gaps[i];
                 if let Some((shape, i_app)) = ionic_current {
                     f += t_plus * shape[i] * i_app / FARADAY;
                 }
-                prev_node = node;
+                prev_node = next;
                 f
             } else {
                 0.0
             };
             let v = &self.vols[i];
-            out[i] = ((flux_left - flux_right) / v.dx + source_share * aj[i] / FARADAY) / v.eps;
+            out[i] = ((flux_left - flux_right) / v.dx + source_share * aj(i) / FARADAY) / v.eps;
             flux_left = flux_right;
         }
     }
 
-    /// Effective conductivity `eps^b kappa(c_e)` (S/m) at each volume, and the diffusion-
-    /// potential coefficient `2 (1 - t+) chi R T / (F c_e)` (V m^3/mol), so that
-    /// `i_e = kappa_eff (coef dc_e/dx - dphi_e/dx)`.
-    pub fn conductivities(&self, ec: &Electrochem, ce: &[f64], temp: f64) -> (Vec<f64>, Vec<f64>) {
+    /// Subtracts the divergence of the ionic current `d i_e/dx` (A/m^3) from `out`, for
+    /// concentrations `ce` (mol/m^3) and potentials `phie` (V) at temperature `temp` (K),
+    /// with no current through the current collectors.
+    ///
+    /// `i_e = kappa_eff (coef dc_e/dx - dphi_e/dx)` at each interior face, as PyBaMM
+    /// discretises it: the effective conductivity `eps^b kappa(c_e)` (S/m) interpolated
+    /// arithmetically, the diffusion-potential coefficient `2 (1 - t+) chi R T / (F c_e)`
+    /// (V m^3/mol) harmonically, i.e. the factor over the width-weighted mean of `c_e`.
+    pub fn subtract_current_divergence(&self, ec: &Electrochem, ce: &[f64], phie: &[f64], temp: f64, out: &mut [f64]) {
         let p = &ec.params.electrolyte;
         let arr = arrhenius(p.activation_energy, ec.t_ref(), temp);
         let factor = 2.0 * (1.0 - p.transference_number) * p.thermodynamic_factor * GAS_CONSTANT * temp / FARADAY;
-        let kappa: Vec<f64> = self
-            .vols
-            .iter()
-            .zip(ce)
-            .map(|(v, &c)| v.tortuosity * p.conductivity.eval(c) * arr)
-            .collect();
-        let coef = ce.iter().map(|&c| factor / c.max(1e-6)).collect();
-        (kappa, coef)
+        let nx = self.len();
+        let (ce, phie, out) = (&ce[..nx], &phie[..nx], &mut out[..nx]);
+        let kappa = |i: usize| self.vols[i].tortuosity * p.conductivity.eval(ce[i]) * arr;
+        let mut kappa_left = kappa(0);
+        let mut i_left = 0.0;
+        for i in 0..nx {
+            let i_right = if i + 1 < nx {
+                let kappa_right = kappa(i + 1);
+                let w = self.weights[i];
+                let coef = factor / (w * ce[i].max(1e-6) + (1.0 - w) * ce[i + 1].max(1e-6));
+                let face = (1.0 - w) * kappa_left + w * kappa_right;
+                kappa_left = kappa_right;
+                face * (coef * (ce[i + 1] - ce[i]) - (phie[i + 1] - phie[i])) / self.gaps[i]
+            } else {
+                0.0
+            };
+            out[i] -= (i_right - i_left) / self.vols[i].dx;
+            i_left = i_right;
+        }
     }
 }

@@ -123,16 +123,18 @@ impl Spme {
         if self.ec.submodels.thermal { y[y.len() - 1] } else { self.ec.params.thermal.ambient_temperature }
     }
 
-    /// Volumetric reaction current `a j` (A/m^3) in each x volume: uniform in each electrode.
-    fn reaction(&self, current: f64) -> Vec<f64> {
-        self.electrolyte
-            .vols
-            .iter()
-            .map(|v| match v.side {
-                Some(side) => v.a * self.ec.mean_interfacial_current(side, current),
+    /// Volumetric reaction current `a j` (A/m^3) in each x volume, uniform in each electrode,
+    /// as a function of the volume's index.
+    fn reaction(&self, current: f64) -> impl Fn(usize) -> f64 + '_ {
+        let j = [Side::Negative, Side::Positive].map(|side| self.ec.mean_interfacial_current(side, current));
+        move |i| {
+            let v = &self.electrolyte.vols[i];
+            match v.side {
+                Some(Side::Negative) => v.a * j[0],
+                Some(Side::Positive) => v.a * j[1],
                 None => 0.0,
-            })
-            .collect()
+            }
+        }
     }
 
     /// Electrolyte overpotential (V): PyBaMM's composite form, i.e. the concentration
@@ -223,9 +225,8 @@ impl Model for Spme {
             let flux = Electrochem::molar_flux(ec.mean_interfacial_current(side, current));
             ec.sphere(side).diffusion(c, ec.diffusivity(side, temp), flux, &mut out[range]);
         }
-        let aj = self.reaction(current);
         let ionic = (self.ionic_current_shape.as_slice(), current / ec.area());
-        self.electrolyte.concentration_rhs(ec, ce, &aj, Some(ionic), temp, &mut out[nn + np..nn + np + nx]);
+        self.electrolyte.concentration_rhs(ec, ce, self.reaction(current), Some(ionic), temp, &mut out[nn + np..nn + np + nx]);
         if ec.submodels.thermal {
             let (sn, sp) = self.surfaces(y);
             let ocv = ec.ocp(Side::Positive, sp) - ec.ocp(Side::Negative, sn);
