@@ -77,8 +77,7 @@ impl ElectrolyteOp {
     /// and `i + 1`: the series resistance of the two half-volumes. PyBaMM uses it for a
     /// coefficient multiplying a gradient (fluxes).
     pub fn harmonic(&self, i: usize, a: f64, b: f64) -> f64 {
-        let beta = self.weights[i];
-        1.0 / (beta / a + (1.0 - beta) / b)
+        harmonic_mean(self.weights[i], a, b)
     }
 
     /// Width-weighted arithmetic mean of node values at the face between volumes `i` and
@@ -107,29 +106,29 @@ impl ElectrolyteOp {
     ) {
         let p = &ec.params.electrolyte;
         let arr = arrhenius(p.activation_energy, ec.t_ref(), temp);
-        let nx = self.len();
-        let (ce, out) = (&ce[..nx], &mut out[..nx]);
+        let n = self.len();
+        let (ce, out, vols) = (&ce[..n], &mut out[..n], &self.vols[..n]);
+        let (weights, gaps) = (&self.weights[..n - 1], &self.gaps[..n - 1]);
         let t_plus = p.transference_number;
-        let source_share = if ionic_current.is_some() { 1.0 } else { 1.0 - t_plus };
-        let node = |i: usize| self.vols[i].tortuosity * p.diffusivity.eval(ce[i]) * arr;
-        let mut prev_node = node(0);
-        let mut flux_left = 0.0;
-        for i in 0..nx {
-            let flux_right = if i + 1 < nx {
-                let next = node(i + 1);
-                let mut f = -self.harmonic(i, prev_node, next) * (ce[i + 1] - ce[i]) / self.gaps[i];
-                if let Some((shape, i_app)) = ionic_current {
-                    f += t_plus * shape[i] * i_app / FARADAY;
-                }
-                prev_node = next;
-                f
-            } else {
-                0.0
-            };
-            let v = &self.vols[i];
-            out[i] = ((flux_left - flux_right) / v.dx + source_share * aj(i) / FARADAY) / v.eps;
-            flux_left = flux_right;
+        let (source_share, migration) = match ionic_current {
+            Some((shape, i_app)) => (1.0, Some((&shape[..n - 1], i_app))),
+            None => (1.0 - t_plus, None),
+        };
+        let node = |i: usize| vols[i].tortuosity * p.diffusivity.eval(ce[i]) * arr;
+        let rate = |i: usize, flux_left: f64, flux_right: f64| {
+            ((flux_left - flux_right) / vols[i].dx + source_share * aj(i) / FARADAY) / vols[i].eps
+        };
+        let (mut d_left, mut flux_left) = (node(0), 0.0);
+        for i in 0..n - 1 {
+            let d_right = node(i + 1);
+            let mut flux = -harmonic_mean(weights[i], d_left, d_right) * (ce[i + 1] - ce[i]) / gaps[i];
+            if let Some((shape, i_app)) = migration {
+                flux += t_plus * shape[i] * i_app / FARADAY;
+            }
+            out[i] = rate(i, flux_left, flux);
+            (d_left, flux_left) = (d_right, flux);
         }
+        out[n - 1] = rate(n - 1, flux_left, 0.0);
     }
 
     /// Subtracts the divergence of the ionic current `d i_e/dx` (A/m^3) from `out`, for
@@ -144,24 +143,24 @@ impl ElectrolyteOp {
         let p = &ec.params.electrolyte;
         let arr = arrhenius(p.activation_energy, ec.t_ref(), temp);
         let factor = 2.0 * (1.0 - p.transference_number) * p.thermodynamic_factor * GAS_CONSTANT * temp / FARADAY;
-        let nx = self.len();
-        let (ce, phie, out) = (&ce[..nx], &phie[..nx], &mut out[..nx]);
-        let kappa = |i: usize| self.vols[i].tortuosity * p.conductivity.eval(ce[i]) * arr;
-        let mut kappa_left = kappa(0);
-        let mut i_left = 0.0;
-        for i in 0..nx {
-            let i_right = if i + 1 < nx {
-                let kappa_right = kappa(i + 1);
-                let w = self.weights[i];
-                let coef = factor / (w * ce[i].max(1e-6) + (1.0 - w) * ce[i + 1].max(1e-6));
-                let face = (1.0 - w) * kappa_left + w * kappa_right;
-                kappa_left = kappa_right;
-                face * (coef * (ce[i + 1] - ce[i]) - (phie[i + 1] - phie[i])) / self.gaps[i]
-            } else {
-                0.0
-            };
-            out[i] -= (i_right - i_left) / self.vols[i].dx;
-            i_left = i_right;
+        let n = self.len();
+        let (ce, phie, out, vols) = (&ce[..n], &phie[..n], &mut out[..n], &self.vols[..n]);
+        let (weights, gaps) = (&self.weights[..n - 1], &self.gaps[..n - 1]);
+        let kappa = |i: usize| vols[i].tortuosity * p.conductivity.eval(ce[i]) * arr;
+        let (mut kappa_left, mut c_left, mut i_left) = (kappa(0), ce[0].max(1e-6), 0.0);
+        for i in 0..n - 1 {
+            let (kappa_right, c_right, w) = (kappa(i + 1), ce[i + 1].max(1e-6), weights[i]);
+            let coef = factor / (w * c_left + (1.0 - w) * c_right);
+            let face = (1.0 - w) * kappa_left + w * kappa_right;
+            let i_right = face * (coef * (ce[i + 1] - ce[i]) - (phie[i + 1] - phie[i])) / gaps[i];
+            out[i] -= (i_right - i_left) / vols[i].dx;
+            (kappa_left, c_left, i_left) = (kappa_right, c_right, i_right);
         }
+        out[n - 1] -= (0.0 - i_left) / vols[n - 1].dx;
     }
+}
+
+/// `1 / (w / a + (1 - w) / b)`: the harmonic mean of `a` and `b` with weight `w` on `a`.
+fn harmonic_mean(w: f64, a: f64, b: f64) -> f64 {
+    1.0 / (w / a + (1.0 - w) / b)
 }
