@@ -152,9 +152,9 @@ impl Spme {
         let kappa = e.conductivity.eval(c_av) * arr;
         let chi = 2.0 * (1.0 - e.transference_number) * e.thermodynamic_factor;
         let rt_f = GAS_CONSTANT * temp / FARADAY;
-        // mean over an electrode's (equal-width) volumes of ln(c_e / c_av)
-        let macinnes = |side: Side| log_mean(ce[k.electrode(side)].iter().map(|&c| c.max(1e-6))) - c_av.ln();
-        let concentration = chi * rt_f * (macinnes(Side::Positive) - macinnes(Side::Negative));
+        // mean over an electrode's (equal-width) volumes of ln c_e; the ln c_av cancels
+        let mean_ln = |side: Side| log_mean(ce[k.electrode(side)].iter().map(|&c| c.max(1e-6)));
+        let concentration = chi * rt_f * (mean_ln(Side::Positive) - mean_ln(Side::Negative));
         concentration - current / self.ec.area() * k.ohmic_length / kappa
     }
 
