@@ -219,8 +219,8 @@ impl Model for Dfn {
         // Interfacial current a*j per x volume (A/m^3), held in the phi_e rows until the
         // divergence of the ionic current is subtracted at the end, and particles.
         out_phie[l.nxn..l.nxn + l.nxs].fill(0.0);
-        // x-averaged surface OCP of each electrode (V), for the heat source
-        let mut mean_ocp = [0.0; 2];
+        // sum over each electrode's volumes of the surface OCP (V), for the heat source
+        let mut sum_ocp = [0.0; 2];
         for (slot, side, first, n, cs) in [(0, Side::Negative, 0, l.nxn, l.cs_n), (1, Side::Positive, l.nxn + l.nxs, l.nxp, l.cs_p)] {
             let e = ec.electrode(side);
             let sphere = ec.sphere(side);
@@ -231,7 +231,7 @@ impl Model for Dfn {
                 let shells = &y[start..start + nr];
                 let c_s = sphere.surface(shells);
                 let ocp = ec.ocp(side, c_s);
-                mean_ocp[slot] += ocp / n as f64;
+                sum_ocp[slot] += ocp;
                 let j0 = exchange_current(rate, y[l.ce + i], c_s, e.max_concentration);
                 let j = butler_volmer(j0, y[l.phis(side, k)] - y[l.phie + i] - ocp, e.charge_transfer_coefficient, temp);
                 out_phie[i] = vols[i].a * j;
@@ -274,7 +274,8 @@ impl Model for Dfn {
 
         if let Some(t) = l.temp {
             let v = self.voltage(y, current);
-            let heat = bernardi_heat(current, mean_ocp[1] - mean_ocp[0], v, temp, ec.docv_dt());
+            let ocv = sum_ocp[1] / l.nxp as f64 - sum_ocp[0] / l.nxn as f64;
+            let heat = bernardi_heat(current, ocv, v, temp, ec.docv_dt());
             out_phis[t - l.phis_n] = ec.thermal.rate(heat, temp);
         }
     }

@@ -28,13 +28,19 @@ pub struct ElectrolyteOp {
     pub gaps: Vec<f64>,
     /// Width fraction `dx_i / (dx_i + dx_{i+1})` (-) of the left volume at each interior face.
     weights: Vec<f64>,
+    /// `1 / gaps` (1/m).
+    inv_gaps: Vec<f64>,
+    /// `1 / dx` (1/m) and `1 / eps` (-) of each volume: the loops multiply instead of divide.
+    inv_dx: Vec<f64>,
+    inv_eps: Vec<f64>,
 }
 
 impl ElectrolyteOp {
     pub fn new(ec: &Electrochem) -> Self {
         let centres = ec.disc.x_centres();
-        let gaps = centres.windows(2).map(|w| w[1] - w[0]).collect();
-        let mut op = Self { vols: Vec::new(), gaps, weights: Vec::new() };
+        let gaps: Vec<f64> = centres.windows(2).map(|w| w[1] - w[0]).collect();
+        let inv_gaps = gaps.iter().map(|g| 1.0 / g).collect();
+        let mut op = Self { vols: Vec::new(), gaps, weights: Vec::new(), inv_gaps, inv_dx: Vec::new(), inv_eps: Vec::new() };
         op.refresh(ec);
         op
     }
@@ -67,6 +73,8 @@ impl ElectrolyteOp {
             })
             .collect();
         self.weights = self.vols.windows(2).map(|w| w[0].dx / (w[0].dx + w[1].dx)).collect();
+        self.inv_dx = self.vols.iter().map(|v| 1.0 / v.dx).collect();
+        self.inv_eps = self.vols.iter().map(|v| 1.0 / v.eps).collect();
     }
 
     pub fn len(&self) -> usize {
@@ -108,25 +116,26 @@ impl ElectrolyteOp {
         let arr = arrhenius(p.activation_energy, ec.t_ref(), temp);
         let n = self.len();
         let (ce, out, vols) = (&ce[..n], &mut out[..n], &self.vols[..n]);
-        let (weights, gaps) = (&self.weights[..n - 1], &self.gaps[..n - 1]);
+        let (inv_dx, inv_eps) = (&self.inv_dx[..n], &self.inv_eps[..n]);
+        let (weights, inv_gaps) = (&self.weights[..n - 1], &self.inv_gaps[..n - 1]);
         let t_plus = p.transference_number;
-        let (source_share, migration) = match ionic_current {
-            Some((shape, i_app)) => (1.0, Some((&shape[..n - 1], i_app))),
-            None => (1.0 - t_plus, None),
+        // molar source per unit a*j, and migration flux per unit `shape`
+        let (source, migration) = match ionic_current {
+            Some((shape, i_app)) => (1.0 / FARADAY, Some((&shape[..n - 1], t_plus * i_app / FARADAY))),
+            None => ((1.0 - t_plus) / FARADAY, None),
         };
-        let node = |i: usize| vols[i].tortuosity * p.diffusivity.eval(ce[i]) * arr;
-        let rate = |i: usize, flux_left: f64, flux_right: f64| {
-            ((flux_left - flux_right) / vols[i].dx + source_share * aj(i) / FARADAY) / vols[i].eps
-        };
-        let (mut d_left, mut flux_left) = (node(0), 0.0);
+        // 1 / (eps^b D(c_e)) (s/m^2) at each node: the face's harmonic mean is one division.
+        let resistivity = |i: usize| 1.0 / (vols[i].tortuosity * p.diffusivity.eval(ce[i]) * arr);
+        let rate = |i: usize, flux_left: f64, flux_right: f64| ((flux_left - flux_right) * inv_dx[i] + source * aj(i)) * inv_eps[i];
+        let (mut r_left, mut flux_left) = (resistivity(0), 0.0);
         for i in 0..n - 1 {
-            let d_right = node(i + 1);
-            let mut flux = -harmonic_mean(weights[i], d_left, d_right) * (ce[i + 1] - ce[i]) / gaps[i];
-            if let Some((shape, i_app)) = migration {
-                flux += t_plus * shape[i] * i_app / FARADAY;
+            let (r_right, w) = (resistivity(i + 1), weights[i]);
+            let mut flux = -(ce[i + 1] - ce[i]) * inv_gaps[i] / (w * r_left + (1.0 - w) * r_right);
+            if let Some((shape, m)) = migration {
+                flux += m * shape[i];
             }
             out[i] = rate(i, flux_left, flux);
-            (d_left, flux_left) = (d_right, flux);
+            (r_left, flux_left) = (r_right, flux);
         }
         out[n - 1] = rate(n - 1, flux_left, 0.0);
     }
@@ -144,19 +153,19 @@ impl ElectrolyteOp {
         let arr = arrhenius(p.activation_energy, ec.t_ref(), temp);
         let factor = 2.0 * (1.0 - p.transference_number) * p.thermodynamic_factor * GAS_CONSTANT * temp / FARADAY;
         let n = self.len();
-        let (ce, phie, out, vols) = (&ce[..n], &phie[..n], &mut out[..n], &self.vols[..n]);
-        let (weights, gaps) = (&self.weights[..n - 1], &self.gaps[..n - 1]);
+        let (ce, phie, out, vols, inv_dx) = (&ce[..n], &phie[..n], &mut out[..n], &self.vols[..n], &self.inv_dx[..n]);
+        let (weights, inv_gaps) = (&self.weights[..n - 1], &self.inv_gaps[..n - 1]);
         let kappa = |i: usize| vols[i].tortuosity * p.conductivity.eval(ce[i]) * arr;
         let (mut kappa_left, mut c_left, mut i_left) = (kappa(0), ce[0].max(1e-6), 0.0);
         for i in 0..n - 1 {
             let (kappa_right, c_right, w) = (kappa(i + 1), ce[i + 1].max(1e-6), weights[i]);
             let coef = factor / (w * c_left + (1.0 - w) * c_right);
             let face = (1.0 - w) * kappa_left + w * kappa_right;
-            let i_right = face * (coef * (ce[i + 1] - ce[i]) - (phie[i + 1] - phie[i])) / gaps[i];
-            out[i] -= (i_right - i_left) / vols[i].dx;
+            let i_right = face * (coef * (ce[i + 1] - ce[i]) - (phie[i + 1] - phie[i])) * inv_gaps[i];
+            out[i] -= (i_right - i_left) * inv_dx[i];
             (kappa_left, c_left, i_left) = (kappa_right, c_right, i_right);
         }
-        out[n - 1] -= (0.0 - i_left) / vols[n - 1].dx;
+        out[n - 1] -= (0.0 - i_left) * inv_dx[n - 1];
     }
 }
 

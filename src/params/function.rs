@@ -42,11 +42,11 @@ impl Function1D {
                     + 17.5842 * tanh(15.9308 * (x - 0.3120))
             }
             Function1D::Nyman2008Diffusivity => {
-                let c = x / 1000.0;
+                let c = x * 1e-3;
                 8.794e-11 * c * c - 3.972e-10 * c + 4.862e-10
             }
             Function1D::Nyman2008Conductivity => {
-                let c = x / 1000.0;
+                let c = x * 1e-3;
                 0.1297 * c * c * c - 2.51 * (c * c.sqrt()) + 3.329 * c
             }
         }
