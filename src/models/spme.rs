@@ -245,8 +245,10 @@ impl Model for Spme {
         let eta = |side: Side, c_s: f64| {
             let alpha = ec.electrode(side).charge_transfer_coefficient;
             let j = ec.mean_interfacial_current(side, current);
+            // j0 is proportional to sqrt(c_e): evaluate it once at c_e = 1 mol/m^3.
             let (k, c_max) = (ec.rate_constant(side, temp), ec.electrode(side).max_concentration);
-            let j0 = ce[self.consts.electrode(side)].iter().map(|&c| exchange_current(k, c, c_s, c_max));
+            let j0_unit = exchange_current(k, 1.0, c_s, c_max);
+            let j0 = ce[self.consts.electrode(side)].iter().map(|&c| j0_unit * c.max(0.0).sqrt());
             mean_overpotential(j, j0, alpha, temp)
         };
         ec.ocp(Side::Positive, sp) + eta(Side::Positive, sp) - ec.ocp(Side::Negative, sn) - eta(Side::Negative, sn)
