@@ -28,6 +28,8 @@ pub struct Dfn {
     /// Index ranges of the state blocks.
     pub layout: Layout,
     electrolyte: ElectrolyteOp,
+    /// Effective solid conductivities of the negative and positive electrodes (S/m).
+    sigma: [f64; 2],
     mass: Vec<f64>,
     scale: Vec<f64>,
 }
@@ -115,7 +117,8 @@ impl Dfn {
             scale[t] = p.thermal.ambient_temperature;
         }
         let electrolyte = ElectrolyteOp::new(&ec);
-        Self { ec, layout, electrolyte, mass, scale }
+        let sigma = Self::solid_conductivities(&ec);
+        Self { ec, layout, electrolyte, sigma, mass, scale }
     }
 
     fn temp(&self, y: &[f64]) -> f64 {
@@ -123,6 +126,12 @@ impl Dfn {
             Some(t) => y[t],
             None => self.ec.params.thermal.ambient_temperature,
         }
+    }
+}
+
+impl Dfn {
+    fn solid_conductivities(ec: &Electrochem) -> [f64; 2] {
+        [Side::Negative, Side::Positive].map(|side| ec.effective_conductivity(side))
     }
 }
 
@@ -244,28 +253,22 @@ impl Model for Dfn {
         let ce = &y[l.ce..l.phie];
         self.electrolyte.concentration_rhs(ec, ce, |i| aj[i], None, temp, out_ce);
 
-        // Solid potentials.
-        for (side, n, first) in [(Side::Negative, l.nxn, 0), (Side::Positive, l.nxp, l.nxn + l.nxs)] {
-            let sigma = self.ec.effective_conductivity(side);
+        // Solid potentials: d i_s/dx = -a j with phi_s = 0 at x = 0 and i_s = I/A at x = L.
+        for (slot, side, n, first) in [(0, Side::Negative, l.nxn, 0), (1, Side::Positive, l.nxp, l.nxn + l.nxs)] {
             let phis = &y[l.phis(side, 0)..l.phis(side, 0) + n];
-            let dx = vols[first].dx;
+            let out = &mut out_phis[l.phis(side, 0) - l.phis_n..][..n];
+            let inv_dx = 1.0 / vols[first].dx;
+            let g = self.sigma[slot] * inv_dx;
+            // current density i_s (A/m^2) at the left face of volume k, 0 <= k <= n
+            let face = |k: usize| match (k, side) {
+                (0, Side::Negative) => -2.0 * g * phis[0],
+                (0, Side::Positive) => 0.0,
+                (k, Side::Negative) if k == n => 0.0,
+                (k, Side::Positive) if k == n => i_app,
+                (k, _) => -g * (phis[k] - phis[k - 1]),
+            };
             for k in 0..n {
-                // current density i_s at the left and right faces of volume k
-                let left = if k > 0 {
-                    -sigma * (phis[k] - phis[k - 1]) / dx
-                } else if side == Side::Negative {
-                    -sigma * (phis[0] - 0.0) / (0.5 * dx)
-                } else {
-                    0.0
-                };
-                let right = if k + 1 < n {
-                    -sigma * (phis[k + 1] - phis[k]) / dx
-                } else if side == Side::Positive {
-                    i_app
-                } else {
-                    0.0
-                };
-                out_phis[l.phis(side, k) - l.phis_n] = -(right - left) / dx - aj[first + k];
+                out[k] = -(face(k + 1) - face(k)) * inv_dx - aj[first + k];
             }
         }
 
@@ -285,7 +288,7 @@ impl Model for Dfn {
         let dx = self.electrolyte.vols[l.nx() - 1].dx;
         let last = y[l.phis_p + l.nxp - 1];
         // phi_s at x = L from the last volume and the known boundary current I / A.
-        let phi_l = last - current / self.ec.area() / self.ec.effective_conductivity(Side::Positive) * 0.5 * dx;
+        let phi_l = last - current / self.ec.area() / self.sigma[1] * 0.5 * dx;
         phi_l - current * self.ec.contact_resistance()
     }
 
@@ -326,5 +329,6 @@ impl PhysicsModel for Dfn {
     fn set_params(&mut self, params: ParameterSet) {
         self.ec.set_params(params);
         self.electrolyte.refresh(&self.ec);
+        self.sigma = Self::solid_conductivities(&self.ec);
     }
 }
