@@ -62,11 +62,15 @@ impl SphereMesh {
     pub fn diffusion(&self, c: &[f64], diff: f64, flux: f64, out: &mut [f64]) {
         let n = c.len();
         let g = diff / self.dr;
-        for k in 0..n {
-            let right = if k + 1 < n { g * (c[k + 1] - c[k]) } else { -flux };
-            let left = if k > 0 { g * (c[k] - c[k - 1]) } else { 0.0 };
-            out[k] = self.outer[k] * right - self.inner[k] * left;
+        let (outer, inner, out) = (&self.outer[..n], &self.inner[..n], &mut out[..n]);
+        // `D dc/dr` at the inner face of the current shell (zero at the centre).
+        let mut left = 0.0;
+        for k in 0..n - 1 {
+            let right = g * (c[k + 1] - c[k]);
+            out[k] = outer[k] * right - inner[k] * left;
+            left = right;
         }
+        out[n - 1] = outer[n - 1] * -flux - inner[n - 1] * left;
     }
 
     /// Surface concentration by linear extrapolation of the two outermost shell values

@@ -17,7 +17,7 @@
 
 use super::electrochem::{Electrochem, Side};
 use super::electrolyte::ElectrolyteOp;
-use super::kinetics::butler_volmer;
+use super::kinetics::{butler_volmer, exchange_current};
 use super::submodels::thermal::bernardi_heat;
 use super::{Model, PhysicsModel, push_tridiagonal};
 use crate::params::ParameterSet;
@@ -28,6 +28,8 @@ pub struct Dfn {
     /// Index ranges of the state blocks.
     pub layout: Layout,
     electrolyte: ElectrolyteOp,
+    /// Effective solid conductivities of the negative and positive electrodes (S/m).
+    sigma: [f64; 2],
     mass: Vec<f64>,
     scale: Vec<f64>,
 }
@@ -115,7 +117,8 @@ impl Dfn {
             scale[t] = p.thermal.ambient_temperature;
         }
         let electrolyte = ElectrolyteOp::new(&ec);
-        Self { ec, layout, electrolyte, mass, scale }
+        let sigma = Self::solid_conductivities(&ec);
+        Self { ec, layout, electrolyte, sigma, mass, scale }
     }
 
     fn temp(&self, y: &[f64]) -> f64 {
@@ -124,20 +127,11 @@ impl Dfn {
             None => self.ec.params.thermal.ambient_temperature,
         }
     }
+}
 
-    /// Surface concentration of the particle at electrode volume starting at `start`.
-    fn surface(&self, side: Side, y: &[f64], start: usize) -> f64 {
-        self.ec.sphere(side).surface(&y[start..start + self.layout.nr(side)])
-    }
-
-    /// Interfacial current density (A/m^2) at x volume `i` of electrode `side`.
-    fn interfacial_current(&self, y: &[f64], i: usize, side: Side, k: usize, start: usize, temp: f64) -> f64 {
-        let l = &self.layout;
-        let c_s = self.surface(side, y, start);
-        let c_e = y[l.ce + i];
-        let eta = y[l.phis(side, k)] - y[l.phie + i] - self.ec.ocp(side, c_s);
-        let alpha = self.ec.electrode(side).charge_transfer_coefficient;
-        butler_volmer(self.ec.j0(side, c_e, c_s, temp), eta, alpha, temp)
+impl Dfn {
+    fn solid_conductivities(ec: &Electrochem) -> [f64; 2] {
+        [Side::Negative, Side::Positive].map(|side| ec.effective_conductivity(side))
     }
 }
 
@@ -227,73 +221,65 @@ impl Model for Dfn {
         let temp = self.temp(y);
         let i_app = current / ec.area();
         let vols = &self.electrolyte.vols;
+        let (out_cs, rest) = out.split_at_mut(l.ce);
+        let (out_ce, rest) = rest.split_at_mut(nx);
+        let (out_phie, out_phis) = rest.split_at_mut(nx);
 
-        // Interfacial current a*j per x volume (A/m^3), and particles.
-        let mut aj = vec![0.0; nx];
-        for i in 0..nx {
-            if let Some((side, k, start)) = l.electrode_of(i) {
-                let j = self.interfacial_current(y, i, side, k, start, temp);
-                aj[i] = vols[i].a * j;
-                let nr = l.nr(side);
-                ec.sphere(side).diffusion(
-                    &y[start..start + nr],
-                    ec.diffusivity(side, temp),
-                    Electrochem::molar_flux(j),
-                    &mut out[start..start + nr],
-                );
-            }
-        }
-
-        // Electrolyte: concentration, then charge conservation with face-averaged coefficients.
-        let ce = &y[l.ce..l.phie];
-        let phie = &y[l.phie..l.phis_n];
-        self.electrolyte.concentration_rhs(ec, ce, &aj, None, temp, &mut out[l.ce..l.phie]);
-        let (kappa, coef) = self.electrolyte.conductivities(ec, ce, temp);
-        let op = &self.electrolyte;
-        let mut i_left = 0.0;
-        for i in 0..nx {
-            // Face coefficients as PyBaMM discretises kappa_eff (coef grad c_e - grad phi_e).
-            let i_right = if i + 1 < nx {
-                let g = op.gaps[i];
-                op.arithmetic(i, kappa[i], kappa[i + 1])
-                    * (op.harmonic(i, coef[i], coef[i + 1]) * (ce[i + 1] - ce[i]) / g
-                        - (phie[i + 1] - phie[i]) / g)
-            } else {
-                0.0
-            };
-            out[l.phie + i] = aj[i] - (i_right - i_left) / vols[i].dx;
-            i_left = i_right;
-        }
-
-        // Solid potentials.
-        for (side, n, first) in [(Side::Negative, l.nxn, 0), (Side::Positive, l.nxp, l.nxn + l.nxs)] {
-            let sigma = self.ec.effective_conductivity(side);
-            let phis = &y[l.phis(side, 0)..l.phis(side, 0) + n];
-            let dx = vols[first].dx;
+        // Interfacial current a*j per x volume (A/m^3), held in the phi_e rows until the
+        // divergence of the ionic current is subtracted at the end, and particles.
+        out_phie[l.nxn..l.nxn + l.nxs].fill(0.0);
+        // sum over each electrode's volumes of the surface OCP (V), for the heat source
+        let mut sum_ocp = [0.0; 2];
+        for (slot, side, first, n, cs) in [(0, Side::Negative, 0, l.nxn, l.cs_n), (1, Side::Positive, l.nxn + l.nxs, l.nxp, l.cs_p)] {
+            let e = ec.electrode(side);
+            let sphere = ec.sphere(side);
+            let nr = l.nr(side);
+            let (rate, diff) = (ec.rate_constant(side, temp), ec.diffusivity(side, temp));
             for k in 0..n {
-                // current density i_s at the left and right faces of volume k
-                let left = if k > 0 {
-                    -sigma * (phis[k] - phis[k - 1]) / dx
-                } else if side == Side::Negative {
-                    -sigma * (phis[0] - 0.0) / (0.5 * dx)
-                } else {
-                    0.0
-                };
-                let right = if k + 1 < n {
-                    -sigma * (phis[k + 1] - phis[k]) / dx
-                } else if side == Side::Positive {
-                    i_app
-                } else {
-                    0.0
-                };
-                out[l.phis(side, k)] = -(right - left) / dx - aj[first + k];
+                let (i, start) = (first + k, cs + k * nr);
+                let shells = &y[start..start + nr];
+                let c_s = sphere.surface(shells);
+                let ocp = ec.ocp(side, c_s);
+                sum_ocp[slot] += ocp;
+                let j0 = exchange_current(rate, y[l.ce + i], c_s, e.max_concentration);
+                let j = butler_volmer(j0, y[l.phis(side, k)] - y[l.phie + i] - ocp, e.charge_transfer_coefficient, temp);
+                out_phie[i] = vols[i].a * j;
+                sphere.diffusion(shells, diff, Electrochem::molar_flux(j), &mut out_cs[start..start + nr]);
             }
         }
+        let aj: &[f64] = out_phie;
+
+        // Electrolyte concentration.
+        let ce = &y[l.ce..l.phie];
+        self.electrolyte.concentration_rhs(ec, ce, |i| aj[i], None, temp, out_ce);
+
+        // Solid potentials: d i_s/dx = -a j with phi_s = 0 at x = 0 and i_s = I/A at x = L.
+        for (slot, side, n, first) in [(0, Side::Negative, l.nxn, 0), (1, Side::Positive, l.nxp, l.nxn + l.nxs)] {
+            let phis = &y[l.phis(side, 0)..l.phis(side, 0) + n];
+            let out = &mut out_phis[l.phis(side, 0) - l.phis_n..][..n];
+            let inv_dx = 1.0 / vols[first].dx;
+            let g = self.sigma[slot] * inv_dx;
+            // current density i_s (A/m^2) at the left face of volume k, 0 <= k <= n
+            let face = |k: usize| match (k, side) {
+                (0, Side::Negative) => -2.0 * g * phis[0],
+                (0, Side::Positive) => 0.0,
+                (k, Side::Negative) if k == n => 0.0,
+                (k, Side::Positive) if k == n => i_app,
+                (k, _) => -g * (phis[k] - phis[k - 1]),
+            };
+            for k in 0..n {
+                out[k] = -(face(k + 1) - face(k)) * inv_dx - aj[first + k];
+            }
+        }
+
+        // Electrolyte charge conservation: d i_e/dx = a j.
+        self.electrolyte.subtract_current_divergence(ec, ce, &y[l.phie..l.phis_n], temp, out_phie);
 
         if let Some(t) = l.temp {
             let v = self.voltage(y, current);
-            let heat = bernardi_heat(current, self.mean_surface_ocv(y), v, temp, ec.docv_dt());
-            out[t] = ec.thermal.rate(heat, temp);
+            let ocv = sum_ocp[1] / l.nxp as f64 - sum_ocp[0] / l.nxn as f64;
+            let heat = bernardi_heat(current, ocv, v, temp, ec.docv_dt());
+            out_phis[t - l.phis_n] = ec.thermal.rate(heat, temp);
         }
     }
 
@@ -302,7 +288,7 @@ impl Model for Dfn {
         let dx = self.electrolyte.vols[l.nx() - 1].dx;
         let last = y[l.phis_p + l.nxp - 1];
         // phi_s at x = L from the last volume and the known boundary current I / A.
-        let phi_l = last - current / self.ec.area() / self.ec.effective_conductivity(Side::Positive) * 0.5 * dx;
+        let phi_l = last - current / self.ec.area() / self.sigma[1] * 0.5 * dx;
         phi_l - current * self.ec.contact_resistance()
     }
 
@@ -341,21 +327,6 @@ impl Model for Dfn {
     }
 }
 
-impl Dfn {
-    /// OCV from the x-averaged surface OCPs (V), used by the heat source.
-    fn mean_surface_ocv(&self, y: &[f64]) -> f64 {
-        let l = &self.layout;
-        let mut u = [0.0; 2];
-        for i in 0..l.nx() {
-            if let Some((side, _, start)) = l.electrode_of(i) {
-                let (slot, n) = if side == Side::Negative { (0, l.nxn) } else { (1, l.nxp) };
-                u[slot] += self.ec.ocp(side, self.surface(side, y, start)) / n as f64;
-            }
-        }
-        u[1] - u[0]
-    }
-}
-
 impl PhysicsModel for Dfn {
     fn electrochem(&self) -> &Electrochem {
         &self.ec
@@ -363,5 +334,6 @@ impl PhysicsModel for Dfn {
     fn set_params(&mut self, params: ParameterSet) {
         self.ec.set_params(params);
         self.electrolyte.refresh(&self.ec);
+        self.sigma = Self::solid_conductivities(&self.ec);
     }
 }

@@ -123,16 +123,18 @@ impl Spme {
         if self.ec.submodels.thermal { y[y.len() - 1] } else { self.ec.params.thermal.ambient_temperature }
     }
 
-    /// Volumetric reaction current `a j` (A/m^3) in each x volume: uniform in each electrode.
-    fn reaction(&self, current: f64) -> Vec<f64> {
-        self.electrolyte
-            .vols
-            .iter()
-            .map(|v| match v.side {
-                Some(side) => v.a * self.ec.mean_interfacial_current(side, current),
+    /// Volumetric reaction current `a j` (A/m^3) in each x volume, uniform in each electrode,
+    /// as a function of the volume's index.
+    fn reaction(&self, current: f64) -> impl Fn(usize) -> f64 + '_ {
+        let j = [Side::Negative, Side::Positive].map(|side| self.ec.mean_interfacial_current(side, current));
+        move |i| {
+            let v = &self.electrolyte.vols[i];
+            match v.side {
+                Some(Side::Negative) => v.a * j[0],
+                Some(Side::Positive) => v.a * j[1],
                 None => 0.0,
-            })
-            .collect()
+            }
+        }
     }
 
     /// Electrolyte overpotential (V): PyBaMM's composite form, i.e. the concentration
@@ -150,9 +152,9 @@ impl Spme {
         let kappa = e.conductivity.eval(c_av) * arr;
         let chi = 2.0 * (1.0 - e.transference_number) * e.thermodynamic_factor;
         let rt_f = GAS_CONSTANT * temp / FARADAY;
-        // mean over an electrode's (equal-width) volumes of ln(c_e / c_av)
-        let macinnes = |side: Side| log_mean(ce[k.electrode(side)].iter().map(|&c| c.max(1e-6))) - c_av.ln();
-        let concentration = chi * rt_f * (macinnes(Side::Positive) - macinnes(Side::Negative));
+        // mean over an electrode's (equal-width) volumes of ln c_e; the ln c_av cancels
+        let mean_ln = |side: Side| log_mean(ce[k.electrode(side)].iter().map(|&c| c.max(1e-6)));
+        let concentration = chi * rt_f * (mean_ln(Side::Positive) - mean_ln(Side::Negative));
         concentration - current / self.ec.area() * k.ohmic_length / kappa
     }
 
@@ -223,9 +225,8 @@ impl Model for Spme {
             let flux = Electrochem::molar_flux(ec.mean_interfacial_current(side, current));
             ec.sphere(side).diffusion(c, ec.diffusivity(side, temp), flux, &mut out[range]);
         }
-        let aj = self.reaction(current);
         let ionic = (self.ionic_current_shape.as_slice(), current / ec.area());
-        self.electrolyte.concentration_rhs(ec, ce, &aj, Some(ionic), temp, &mut out[nn + np..nn + np + nx]);
+        self.electrolyte.concentration_rhs(ec, ce, self.reaction(current), Some(ionic), temp, &mut out[nn + np..nn + np + nx]);
         if ec.submodels.thermal {
             let (sn, sp) = self.surfaces(y);
             let ocv = ec.ocp(Side::Positive, sp) - ec.ocp(Side::Negative, sn);
@@ -244,8 +245,10 @@ impl Model for Spme {
         let eta = |side: Side, c_s: f64| {
             let alpha = ec.electrode(side).charge_transfer_coefficient;
             let j = ec.mean_interfacial_current(side, current);
+            // j0 is proportional to sqrt(c_e): evaluate it once at c_e = 1 mol/m^3.
             let (k, c_max) = (ec.rate_constant(side, temp), ec.electrode(side).max_concentration);
-            let j0 = ce[self.consts.electrode(side)].iter().map(|&c| exchange_current(k, c, c_s, c_max));
+            let j0_unit = exchange_current(k, 1.0, c_s, c_max);
+            let j0 = ce[self.consts.electrode(side)].iter().map(|&c| j0_unit * c.max(0.0).sqrt());
             mean_overpotential(j, j0, alpha, temp)
         };
         ec.ocp(Side::Positive, sp) + eta(Side::Positive, sp) - ec.ocp(Side::Negative, sn) - eta(Side::Negative, sn)
