@@ -50,7 +50,7 @@ impl StaticLu {
     /// diagonal is added). Returns the factoriser and, for each entry, its position in the
     /// value array that [`StaticLu::factorise`] takes.
     pub fn new(n: usize, entries: &[(usize, usize)]) -> (Self, Vec<usize>) {
-        let elim = minimum_degree(n, entries);
+        let elim = minimum_degree(n, entries).by_level();
         let perm = elim.order;
         let mut iperm = vec![0; n];
         for (i, &p) in perm.iter().enumerate() {
