@@ -23,23 +23,54 @@ pub struct StaticLu {
     vals: Vec<f64>,
     /// `1 / U_ii`.
     inv_diag: Vec<f64>,
-    /// Off-diagonal entries of `L` in row order, and of `D^-1 U` in reverse row order (one
-    /// flat sweep each: no per-row loop in the solve).
-    lower: Vec<Entry>,
-    upper: Vec<Entry>,
+    /// Off-diagonal parts of `L` and of `D^-1 U`, row by row, for the solve.
+    lower: Sweep,
+    upper: Sweep,
     /// Dense work row (zero between uses) and permuted solve vector.
     work: Vec<f64>,
     z: Vec<f64>,
 }
 
-/// A factor entry for the solve's sweeps: `z[row] -= val * z[col]`; `pos` is its place in
-/// the factor values.
-#[derive(Clone, Copy)]
-struct Entry {
-    val: f64,
-    row: u32,
-    col: u32,
-    pos: u32,
+/// Rows of a triangular factor for the solve: row `i` has values `vals[ptr[i]..ptr[i + 1]]`
+/// at columns `cols[..]`, copied after each factorisation from the factor values at `pos[..]`.
+#[derive(Clone)]
+struct Sweep {
+    ptr: Vec<u32>,
+    cols: Vec<u32>,
+    pos: Vec<u32>,
+    vals: Vec<f64>,
+}
+
+impl Sweep {
+    /// The positions `range(i)` of each row `i` of the filled pattern `cols`.
+    fn new(n: usize, cols: &[usize], range: impl Fn(usize) -> std::ops::Range<usize>) -> Self {
+        let mut s = Sweep { ptr: vec![0], cols: Vec::new(), pos: Vec::new(), vals: Vec::new() };
+        for i in 0..n {
+            for p in range(i) {
+                s.cols.push(cols[p] as u32);
+                s.pos.push(p as u32);
+            }
+            s.ptr.push(s.cols.len() as u32);
+        }
+        s.vals = vec![0.0; s.cols.len()];
+        s
+    }
+
+    /// `z[i] -= sum_j row_i[j] z[j]`, for row `i`.
+    ///
+    /// # Safety
+    /// `i < n` and every column is below `z.len()` (as built by `new` from a valid pattern).
+    #[inline(always)]
+    unsafe fn eliminate(&self, i: usize, z: &mut [f64]) {
+        unsafe {
+            let (a, b) = (*self.ptr.get_unchecked(i) as usize, *self.ptr.get_unchecked(i + 1) as usize);
+            let mut s = *z.get_unchecked(i);
+            for p in a..b {
+                s -= self.vals.get_unchecked(p) * z.get_unchecked(*self.cols.get_unchecked(p) as usize);
+            }
+            *z.get_unchecked_mut(i) = s;
+        }
+    }
 }
 
 /// Smallest accepted |pivot| relative to the largest |entry| of its original row.
@@ -84,10 +115,8 @@ impl StaticLu {
         };
         let slots = entries.iter().map(|&(r, c)| pos(r, c)).collect();
         let nnz = cols.len();
-        let entry = |i: usize, p: usize| Entry { val: 0.0, row: i as u32, col: cols[p] as u32, pos: p as u32 };
-        let lower = (0..n).flat_map(|i| (row_ptr[i]..diag_pos[i]).map(move |p| (i, p))).map(|(i, p)| entry(i, p)).collect();
-        let upper =
-            (0..n).rev().flat_map(|i| (diag_pos[i] + 1..row_ptr[i + 1]).map(move |p| (i, p))).map(|(i, p)| entry(i, p)).collect();
+        let lower = Sweep::new(n, &cols, |i| row_ptr[i]..diag_pos[i]);
+        let upper = Sweep::new(n, &cols, |i| diag_pos[i] + 1..row_ptr[i + 1]);
         let lu = Self {
             n,
             perm,
@@ -155,11 +184,14 @@ impl StaticLu {
                 *inv_diag.get_unchecked_mut(i) = 1.0 / pivot;
             }
         }
-        for e in &mut self.lower {
-            e.val = self.vals[e.pos as usize];
+        for (v, &p) in self.lower.vals.iter_mut().zip(&self.lower.pos) {
+            *v = self.vals[p as usize];
         }
-        for e in &mut self.upper {
-            e.val = self.vals[e.pos as usize] * self.inv_diag[e.row as usize];
+        let u = &mut self.upper;
+        for (i, &d) in self.inv_diag.iter().enumerate() {
+            for p in u.ptr[i] as usize..u.ptr[i + 1] as usize {
+                u.vals[p] = self.vals[u.pos[p] as usize] * d;
+            }
         }
         true
     }
@@ -168,23 +200,23 @@ impl StaticLu {
     pub fn solve(&mut self, b: &mut [f64]) {
         assert_eq!(b.len(), self.n);
         let z = &mut self.z[..];
-        // SAFETY: `perm` is a permutation of 0..n, `b.len() == n`, and every entry's row and
-        // column are below n (built by `new`). This is the innermost loop of every Newton
+        // SAFETY: `perm` is a permutation of 0..n, `b.len() == n`, and the sweeps were built by
+        // `new` with n rows and columns below n. This is the innermost loop of every Newton
         // iteration, where bounds checks would cost as much as the arithmetic.
         unsafe {
             for (zi, &p) in z.iter_mut().zip(&self.perm) {
                 *zi = *b.get_unchecked(p);
             }
             // L z = P b, row by row: each row's columns are earlier rows, already final.
-            for e in &self.lower {
-                *z.get_unchecked_mut(e.row as usize) -= e.val * z.get_unchecked(e.col as usize);
+            for i in 0..self.n {
+                self.lower.eliminate(i, z);
             }
             // (D^-1 U) x = D^-1 z, from the last row up.
             for (zi, d) in z.iter_mut().zip(&self.inv_diag) {
                 *zi *= d;
             }
-            for e in &self.upper {
-                *z.get_unchecked_mut(e.row as usize) -= e.val * z.get_unchecked(e.col as usize);
+            for i in (0..self.n).rev() {
+                self.upper.eliminate(i, z);
             }
             for (zi, &p) in z.iter().zip(&self.perm) {
                 *b.get_unchecked_mut(p) = *zi;
