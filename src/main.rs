@@ -334,6 +334,11 @@ fn run(cli: Cli) -> Result<(), Error> {
             sol.write_csv(&csv)?;
             let label = format!("{model} {}", p.name);
             line_plot(&svg, "Terminal voltage", "Time (s)", "Voltage (V)", &[Series { label, x: &sol.time, y: &sol.voltage }])?;
+            // Concentration and potential profiles, from one more run that keeps the states
+            // (the timed runs do not pay for the copies).
+            let kept = SimOptions { keep_states: true, ..opts.clone() };
+            let with_states = simulate(built.model.as_ref(), &mut built.workspace, &protocol, &kept, None)?;
+            let fields = cellstudio::report::fields::write_fields(built.model.as_ref(), &with_states, &out, &stem)?;
             if json {
                 let summary = serde_json::json!({
                     "model": model.to_string(),
@@ -346,6 +351,7 @@ fn run(cli: Cli) -> Result<(), Error> {
                     "repeats": times.len(),
                     "steps": sol.stats.steps,
                     "csv": csv.display().to_string(),
+                    "fields": fields.iter().map(|f| f.display().to_string()).collect::<Vec<_>>(),
                 });
                 println!("{summary}");
             } else {
@@ -357,6 +363,9 @@ fn run(cli: Cli) -> Result<(), Error> {
                 println!("solve time       {:.3} ms (median of {})", median * 1e3, times.len());
                 println!("solver steps     {} ({} Jacobians, {} rhs evaluations)", sol.stats.steps, sol.stats.jacobian_evals, sol.stats.rhs_evals);
                 println!("wrote            {} and {}", csv.display(), svg.display());
+                if let Some(f) = fields.first() {
+                    println!("fields           {} (+ {} profile plots)", f.display(), fields.len() - 1);
+                }
             }
             Ok(())
         }

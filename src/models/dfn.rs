@@ -308,6 +308,28 @@ impl Model for Dfn {
         total
     }
 
+    fn fields(&self, y: &[f64]) -> Vec<super::Field> {
+        use super::Field;
+        let l = &self.layout;
+        let x = self.ec.x_centres();
+        let surfaces = |side: Side| -> Vec<f64> {
+            (0..l.nx())
+                .filter_map(|i| l.electrode_of(i))
+                .filter(|&(s, _, _)| s == side)
+                .map(|(_, _, start)| self.ec.sphere(side).surface(&y[start..start + l.nr(side)]))
+                .collect()
+        };
+        let (xn, xp) = (self.ec.electrode_x_centres(Side::Negative), self.ec.electrode_x_centres(Side::Positive));
+        vec![
+            Field::concentration_x("electrolyte concentration", x.clone(), y[l.ce..l.phie].to_vec()),
+            Field::potential_x("electrolyte potential", x, y[l.phie..l.phis_n].to_vec()),
+            Field::potential_x("negative solid potential", xn.clone(), y[l.phis_n..l.phis_n + l.nxn].to_vec()),
+            Field::potential_x("positive solid potential", xp.clone(), y[l.phis_p..l.phis_p + l.nxp].to_vec()),
+            Field::concentration_x("negative particle surface concentration", xn, surfaces(Side::Negative)),
+            Field::concentration_x("positive particle surface concentration", xp, surfaces(Side::Positive)),
+        ]
+    }
+
     fn output_states(&self) -> Vec<usize> {
         let l = &self.layout;
         std::iter::once(l.phis_p + l.nxp - 1).chain(l.temp).collect()

@@ -6,6 +6,7 @@ pub mod ecm;
 
 pub mod electrochem;
 pub mod electrolyte;
+pub mod fields;
 pub mod kinetics;
 pub mod spm;
 pub mod spme;
@@ -14,6 +15,7 @@ pub mod submodels;
 use serde::{Deserialize, Serialize};
 
 pub use electrochem::Electrochem;
+pub use fields::Field;
 
 use crate::params::ParameterSet;
 
@@ -107,6 +109,11 @@ pub trait Model: Send + Sync {
     /// energy quadrature interpolates only these (all states unless a model says fewer).
     fn output_states(&self) -> Vec<usize> {
         (0..self.len()).collect()
+    }
+    /// Named spatial fields of the state `y` (concentrations and potentials against
+    /// position); none for a model without spatial structure.
+    fn fields(&self, _y: &[f64]) -> Vec<Field> {
+        Vec::new()
     }
 }
 

@@ -136,6 +136,11 @@ impl Model for Spm {
         self.ec.single_particle_lithium(cn, cp)
     }
 
+    fn fields(&self, y: &[f64]) -> Vec<super::Field> {
+        let (cn, cp) = self.split(y);
+        self.ec.single_particle_fields(cn, cp)
+    }
+
     fn output_states(&self) -> Vec<usize> {
         let mut out = self.ec.single_particle_surface_states();
         out.extend(self.ec.submodels.thermal.then(|| self.len() - 1));

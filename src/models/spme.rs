@@ -266,6 +266,13 @@ impl Model for Spme {
         self.ec.single_particle_lithium(cn, cp)
     }
 
+    fn fields(&self, y: &[f64]) -> Vec<super::Field> {
+        let (cn, cp, ce) = self.blocks(y);
+        let mut fields = self.ec.single_particle_fields(cn, cp);
+        fields.push(super::Field::concentration_x("electrolyte concentration", self.ec.x_centres(), ce.to_vec()));
+        fields
+    }
+
     fn output_states(&self) -> Vec<usize> {
         let (nn, np) = (self.ec.disc.sphere_n.len(), self.ec.disc.sphere_p.len());
         let mut out = self.ec.single_particle_surface_states();

@@ -144,6 +144,10 @@ impl Model for Augmented {
         self.base.open_circuit_voltage(&y[..self.n_base])
     }
 
+    fn fields(&self, y: &[f64]) -> Vec<crate::models::Field> {
+        self.base.fields(&y[..self.n_base])
+    }
+
     fn output_states(&self) -> Vec<usize> {
         let mut out = self.base.output_states();
         out.extend(self.n_base..self.len());
