@@ -346,8 +346,17 @@ pub fn simulate(
             return Err(Error::invalid("t_eval", w[1], "output times must increase strictly"));
         }
     }
-    let mut rec = Recorder { model, outputs: index_runs(model.output_states()), keep_states: opts.keep_states,
-        rtol: opts.solver.rtol, sol: Solution::default(), q: 0.0, e: 0.0, i: 0.0, p: 0.0 };
+    let mut rec = Recorder {
+        model,
+        outputs: index_runs(model.output_states()),
+        keep_states: opts.keep_states,
+        rtol: opts.solver.rtol,
+        sol: Solution::default(),
+        q: 0.0,
+        e: 0.0,
+        i: 0.0,
+        p: 0.0,
+    };
     let mut next_eval = 0usize;
     let mut buf = vec![0.0; n];
     let mut t0 = 0.0;
