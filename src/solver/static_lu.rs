@@ -1,7 +1,9 @@
 //! Sparse LU with a fixed (fill-reducing, minimum-degree) symmetric ordering and no
 //! pivoting: the symbolic structure, including every fill entry, is computed once, so a
 //! numeric factorisation is a scatter, row-wise Gaussian elimination and a gather into
-//! preallocated storage, and a solve is two sparse triangular sweeps.
+//! preallocated storage, and a solve is two sparse triangular sweeps. The elimination order
+//! is sorted by level in the elimination tree (same fill), so neighbouring rows of a sweep
+//! are independent and the processor overlaps them.
 //!
 //! Without pivoting a factorisation can meet a pivot that is tiny relative to its row; it
 //! then reports failure and the caller falls back to a pivoting LU.
