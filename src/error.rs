@@ -36,6 +36,16 @@ impl Error {
     pub fn invalid(field: impl Into<String>, value: f64, reason: impl Into<String>) -> Self {
         Error::InvalidParameter { field: field.into(), value, reason: reason.into() }
     }
+
+    /// For `map_err`: an I/O error on `path`, named.
+    pub fn io(path: &std::path::Path) -> impl FnOnce(std::io::Error) -> Error + '_ {
+        move |source| Error::Io { path: path.display().to_string(), source }
+    }
+}
+
+/// Writes `contents` to `path`; a failure names the path.
+pub fn write_file(path: &std::path::Path, contents: impl AsRef<[u8]>) -> Result<()> {
+    std::fs::write(path, contents).map_err(Error::io(path))
 }
 
 pub type Result<T> = std::result::Result<T, Error>;

@@ -171,7 +171,7 @@ fn main() -> ExitCode {
 }
 
 fn read_toml<T: serde::de::DeserializeOwned>(path: &PathBuf) -> Result<T, Error> {
-    let text = std::fs::read_to_string(path).map_err(|source| Error::Io { path: path.display().to_string(), source })?;
+    let text = std::fs::read_to_string(path).map_err(Error::io(&path))?;
     toml::from_str(&text).map_err(|e| Error::Parse { path: path.display().to_string(), message: e.to_string() })
 }
 
@@ -327,7 +327,7 @@ fn run(cli: Cli) -> Result<(), Error> {
             let sol = sol.expect("at least one run");
             times.sort_by(f64::total_cmp);
             let median = times[times.len() / 2];
-            std::fs::create_dir_all(&out).map_err(|source| Error::Io { path: out.display().to_string(), source })?;
+            std::fs::create_dir_all(&out).map_err(Error::io(&out))?;
             let stem = format!("{}_simulation", model.to_string().to_lowercase());
             let csv = out.join(format!("{stem}.csv"));
             let svg = out.join(format!("{stem}_voltage.svg"));

@@ -92,7 +92,7 @@ impl Solution {
                 self.temperature[i]
             );
         }
-        std::fs::write(path, s).map_err(|source| Error::Io { path: path.display().to_string(), source })
+        crate::error::write_file(path, s)
     }
 }
 

@@ -104,7 +104,7 @@ impl Recording {
                 None => s.push('\n'),
             }
         }
-        std::fs::write(path, s).map_err(|source| Error::Io { path: path.display().to_string(), source })
+        crate::error::write_file(path, s)
     }
 
     /// Whether point `k` shares its time with a neighbour (either side of a current step as

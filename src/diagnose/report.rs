@@ -316,10 +316,7 @@ fn residual_section(s: &mut String, a: &ResidualAnalysis) {
 /// Writes `diagnosis.md`, `diagnosis.json` and the plots of every round into `dir`; returns
 /// the files.
 pub fn write(rounds: &[Diagnosis], dir: &Path) -> Result<Vec<PathBuf>, Error> {
-    fn io(path: &Path) -> impl FnOnce(std::io::Error) -> Error + '_ {
-        move |source| Error::Io { path: path.display().to_string(), source }
-    }
-    std::fs::create_dir_all(dir).map_err(io(dir))?;
+    std::fs::create_dir_all(dir).map_err(Error::io(dir))?;
     let mut md = String::new();
     let mut files = Vec::new();
     for (k, d) in rounds.iter().enumerate() {
@@ -336,10 +333,10 @@ pub fn write(rounds: &[Diagnosis], dir: &Path) -> Result<Vec<PathBuf>, Error> {
         files.extend(plots.into_iter().map(|(_, p)| p));
     }
     let md_path = dir.join("diagnosis.md");
-    std::fs::write(&md_path, md).map_err(io(&md_path))?;
+    crate::error::write_file(&md_path, md)?;
     let json = dir.join("diagnosis.json");
     let text = serde_json::to_string_pretty(rounds).map_err(|e| Error::Parse { path: json.display().to_string(), message: e.to_string() })?;
-    std::fs::write(&json, text).map_err(io(&json))?;
+    crate::error::write_file(&json, text)?;
     files.splice(0..0, [md_path, json]);
     Ok(files)
 }

@@ -104,7 +104,7 @@ impl Spectrum {
         for i in 0..self.len() {
             let _ = writeln!(s, "{},{},{}", self.frequency[i], self.z_re[i], self.z_im[i]);
         }
-        std::fs::write(path, s).map_err(|source| Error::Io { path: path.display().to_string(), source })
+        crate::error::write_file(path, s)
     }
 
     /// Reads a CSV file with a header row naming the columns `frequency_Hz`, `z_re_ohm` and

@@ -100,7 +100,7 @@ impl EcmParameters {
     /// Reads ECM parameters from a TOML file and validates them.
     pub fn from_toml_file(path: &std::path::Path) -> Result<Self, Error> {
         let text =
-            std::fs::read_to_string(path).map_err(|source| Error::Io { path: path.display().to_string(), source })?;
+            std::fs::read_to_string(path).map_err(Error::io(&path))?;
         let p: EcmParameters = toml::from_str(&text)
             .map_err(|e| Error::Parse { path: path.display().to_string(), message: e.to_string() })?;
         p.validate()?;

@@ -310,7 +310,7 @@ impl ParameterSet {
     /// Reads a parameter set from a TOML file and validates it.
     pub fn from_toml_file(path: &std::path::Path) -> Result<Self, Error> {
         let text = std::fs::read_to_string(path)
-            .map_err(|source| Error::Io { path: path.display().to_string(), source })?;
+            .map_err(Error::io(&path))?;
         let set: ParameterSet = toml::from_str(&text)
             .map_err(|e| Error::Parse { path: path.display().to_string(), message: e.to_string() })?;
         set.validate()?;

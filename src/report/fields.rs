@@ -43,7 +43,7 @@ pub fn write_fields(model: &dyn Model, sol: &Solution, dir: &Path, stem: &str) -
         }
     }
     let csv_path = dir.join(format!("{stem}_fields.csv"));
-    std::fs::write(&csv_path, csv).map_err(|source| Error::Io { path: csv_path.display().to_string(), source })?;
+    crate::error::write_file(&csv_path, csv)?;
     let mut written = vec![csv_path];
     for (j, field) in first.iter().enumerate() {
         let microns: Vec<Vec<f64>> =

@@ -1,6 +1,7 @@
 //! Running a study's single-objective design search: projected, bounded optimisation of one
 //! density metric, with a report (Markdown + JSON) and initial vs optimised voltage plots.
 
+use super::write_output;
 use std::fmt::Write as _;
 use std::path::PathBuf;
 use std::time::Instant;
@@ -118,13 +119,7 @@ pub fn run_design(study: &Study) -> Result<DesignOutcome, Error> {
 
 fn write_outputs(study: &Study, problem: &DesignProblem, out: &mut DesignOutcome, method: &str) -> Result<(), Error> {
     let dir = &study.output.dir;
-    std::fs::create_dir_all(dir).map_err(|source| Error::Io { path: dir.display().to_string(), source })?;
-    let write = |name: &str, text: String, files: &mut Vec<PathBuf>| -> Result<(), Error> {
-        let path = dir.join(name);
-        std::fs::write(&path, text).map_err(|source| Error::Io { path: path.display().to_string(), source })?;
-        files.push(path);
-        Ok(())
-    };
+    std::fs::create_dir_all(dir).map_err(Error::io(&dir))?;
     let names: Vec<&str> = study.variables.iter().map(|v| v.path.as_str()).collect();
     let json = serde_json::json!({
         "study": study.name, "variables": names, "method": method,
@@ -132,7 +127,7 @@ fn write_outputs(study: &Study, problem: &DesignProblem, out: &mut DesignOutcome
         "optimised": { "x": out.result.x, "metrics": out.optimised },
         "result": out.result, "rebuilds": out.rebuilds, "seconds": out.seconds,
     });
-    write("design.json", serde_json::to_string_pretty(&json).unwrap_or_default(), &mut out.files)?;
+    write_output(dir, "design.json", serde_json::to_string_pretty(&json).unwrap_or_default(), &mut out.files)?;
 
     // Voltage profiles of the initial and optimised designs.
     let mut curves = Vec::new();
@@ -161,6 +156,6 @@ fn write_outputs(study: &Study, problem: &DesignProblem, out: &mut DesignOutcome
             m.gravimetric_power_density, m.volumetric_power_density);
     }
     let _ = writeln!(md, "\nImprovement: {:+.2} %.\n\n![voltage](design_voltage.svg)", out.improvement());
-    write("report.md", md, &mut out.files)?;
+    write_output(dir, "report.md", md, &mut out.files)?;
     Ok(())
 }

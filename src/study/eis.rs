@@ -37,7 +37,7 @@ pub struct EisOutcome {
 pub fn run_eis(run: &EisRun) -> Result<EisOutcome, Error> {
     let mut base = run.params.clone();
     set_initial_soc(&mut base, run.soc)?;
-    std::fs::create_dir_all(&run.out).map_err(|source| Error::Io { path: run.out.display().to_string(), source })?;
+    std::fs::create_dir_all(&run.out).map_err(Error::io(&run.out))?;
     let (f0, f1, n) = run.frequencies;
     let dense = log_frequencies(f0, f1, n)?;
     let spectrum_of = |variables: &[String], x: &[f64]| -> Result<Spectrum, Error> {

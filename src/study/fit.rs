@@ -2,6 +2,7 @@
 //! identify, cost, optimiser, optional sampler and cost landscape; and the fit run with its
 //! report (Markdown + JSON), fit/residual plots and the cost landscape with the optimiser trace.
 
+use super::write_output;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
@@ -76,7 +77,7 @@ pub struct Landscape {
 impl FitStudy {
     /// Reads and checks a study file.
     pub fn from_file(path: &Path) -> Result<Self, Error> {
-        let text = std::fs::read_to_string(path).map_err(|source| Error::Io { path: path.display().to_string(), source })?;
+        let text = std::fs::read_to_string(path).map_err(Error::io(&path))?;
         let study: FitStudy =
             toml::from_str(&text).map_err(|e| Error::Parse { path: path.display().to_string(), message: e.to_string() })?;
         study.cost.validate()?;
@@ -142,14 +143,8 @@ pub fn run_fit(study: &FitStudy, data: Option<&Path>) -> Result<FitOutcome, Erro
     let initial_rmse = rms(&problem.residuals(&initial_voltage), &problem.weights);
     let result = fit(&problem, study.cost, &method, options)?;
     let dir = &study.output.dir;
-    std::fs::create_dir_all(dir).map_err(|source| Error::Io { path: dir.display().to_string(), source })?;
+    std::fs::create_dir_all(dir).map_err(Error::io(&dir))?;
     let mut files = Vec::new();
-    let write = |name: &str, text: String, files: &mut Vec<PathBuf>| -> Result<(), Error> {
-        let path = dir.join(name);
-        std::fs::write(&path, text).map_err(|source| Error::Io { path: path.display().to_string(), source })?;
-        files.push(path);
-        Ok(())
-    };
     let t = &problem.data.time;
     let path = dir.join("fit_voltage.svg");
     line_plot(
@@ -180,8 +175,8 @@ pub fn run_fit(study: &FitStudy, data: Option<&Path>) -> Result<FitOutcome, Erro
         landscape(&problem, study.cost, &result, l.points, &path)?;
         files.push(path);
     }
-    write("fit.json", serde_json::to_string_pretty(&result).expect("serialisable"), &mut files)?;
-    write("report.md", report(study, &problem, &result, initial_rmse), &mut files)?;
+    write_output(dir, "fit.json", serde_json::to_string_pretty(&result).expect("serialisable"), &mut files)?;
+    write_output(dir, "report.md", report(study, &problem, &result, initial_rmse), &mut files)?;
     Ok(FitOutcome { result, initial_rmse, files })
 }
 

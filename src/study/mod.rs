@@ -189,7 +189,7 @@ impl Default for Output {
 impl Study {
     /// Reads and checks a study file.
     pub fn from_file(path: &Path) -> Result<Self, Error> {
-        let text = std::fs::read_to_string(path).map_err(|source| Error::Io { path: path.display().to_string(), source })?;
+        let text = std::fs::read_to_string(path).map_err(Error::io(&path))?;
         Self::from_toml(&text, &path.display().to_string())
     }
 
@@ -324,4 +324,12 @@ impl Study {
             None => Ok(problem),
         }
     }
+}
+
+/// Writes `text` to `dir/name` and appends the path to `files`.
+pub(crate) fn write_output(dir: &Path, name: &str, text: String, files: &mut Vec<PathBuf>) -> Result<(), Error> {
+    let path = dir.join(name);
+    crate::error::write_file(&path, text)?;
+    files.push(path);
+    Ok(())
 }

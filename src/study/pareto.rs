@@ -1,6 +1,7 @@
 //! Running a study's multi-objective search: NSGA-II over the decision variables, the
 //! non-dominated front as CSV/JSON and a plot with the baseline marked.
 
+use super::write_output;
 use std::fmt::Write as _;
 use std::path::PathBuf;
 use std::time::Instant;
@@ -55,7 +56,7 @@ pub fn run_pareto(study: &Study) -> Result<ParetoOutcome, Error> {
     let seconds = start.elapsed().as_secs_f64();
 
     let dir = &study.output.dir;
-    std::fs::create_dir_all(dir).map_err(|source| Error::Io { path: dir.display().to_string(), source })?;
+    std::fs::create_dir_all(dir).map_err(Error::io(&dir))?;
     let names: Vec<String> = study.variables.iter().map(|v| v.path.clone()).collect();
     let objectives: Vec<String> = metrics.iter().map(|m| serde_json::to_value(m).unwrap_or_default().as_str().unwrap_or("").to_string()).collect();
     let mut csv = format!("{},{}\n", names.join(","), objectives.join(","));
@@ -66,16 +67,10 @@ pub fn run_pareto(study: &Study) -> Result<ParetoOutcome, Error> {
         let _ = writeln!(csv, "{}", cols.join(","));
     }
     let mut files = Vec::new();
-    let write = |name: &str, text: String, files: &mut Vec<PathBuf>| -> Result<(), Error> {
-        let path = dir.join(name);
-        std::fs::write(&path, text).map_err(|source| Error::Io { path: path.display().to_string(), source })?;
-        files.push(path);
-        Ok(())
-    };
-    write("pareto_front.csv", csv, &mut files)?;
+    write_output(dir, "pareto_front.csv", csv, &mut files)?;
     let json = serde_json::json!({ "study": study.name, "variables": names, "objectives": objectives,
         "baseline": baseline, "front": sorted, "evaluated": archive.len(), "seconds": seconds });
-    write("pareto_front.json", serde_json::to_string_pretty(&json).unwrap_or_default(), &mut files)?;
+    write_output(dir, "pareto_front.json", serde_json::to_string_pretty(&json).unwrap_or_default(), &mut files)?;
     let plot = dir.join("pareto_front.svg");
     let pts = |set: &[Individual]| set.iter().map(|i| (i.f[0], i.f[1])).collect::<Vec<_>>();
     scatter_plot(

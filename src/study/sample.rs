@@ -2,6 +2,7 @@
 //! over-dispersed starts around the optimum, and report the posterior (summary table with
 //! R-hat and ESS, credible intervals, samples, trace and marginal plots).
 
+use super::write_output;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
@@ -102,19 +103,13 @@ pub fn run_sample(study: &FitStudy, data: Option<&Path>) -> Result<SampleOutcome
     let summary = in_model.summary(&names);
     let dir = &study.output.dir;
     let mut files = fitted.files;
-    let write = |name: &str, text: String, files: &mut Vec<PathBuf>| -> Result<(), Error> {
-        let path = dir.join(name);
-        std::fs::write(&path, text).map_err(|source| Error::Io { path: path.display().to_string(), source })?;
-        files.push(path);
-        Ok(())
-    };
     let mut csv = format!("chain,{}\n", names.join(","));
     for (k, chain) in in_model.chains.iter().enumerate() {
         for d in &chain.draws {
             let _ = writeln!(csv, "{k},{}", d.iter().map(|v| format!("{v:e}")).collect::<Vec<_>>().join(","));
         }
     }
-    write("samples.csv", csv, &mut files)?;
+    write_output(dir, "samples.csv", csv, &mut files)?;
     for (name, path) in [("trace", dir.join("trace.svg")), ("marginals", dir.join("marginals.svg"))] {
         let title = format!("{}: {name}", study.name);
         if name == "trace" {
@@ -124,7 +119,7 @@ pub fn run_sample(study: &FitStudy, data: Option<&Path>) -> Result<SampleOutcome
         }
         files.push(path);
     }
-    write("posterior.json", serde_json::to_string_pretty(&summary).expect("serialisable"), &mut files)?;
+    write_output(dir, "posterior.json", serde_json::to_string_pretty(&summary).expect("serialisable"), &mut files)?;
     let mut md = format!("# {}: posterior\n\n", study.name);
     let _ = writeln!(
         md,
@@ -137,6 +132,6 @@ pub fn run_sample(study: &FitStudy, data: Option<&Path>) -> Result<SampleOutcome
         result.acceptance_rates().iter().map(|a| (a * 1000.0).round() / 1000.0).collect::<Vec<_>>()
     );
     let _ = writeln!(md, "```\n{}\n```", summary.table());
-    write("posterior.md", md, &mut files)?;
+    write_output(dir, "posterior.md", md, &mut files)?;
     Ok(SampleOutcome { names, result: in_model, summary, seconds, files })
 }

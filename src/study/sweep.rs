@@ -20,9 +20,6 @@ pub struct SweepOutcome {
     pub files: Vec<PathBuf>,
 }
 
-fn io(path: &std::path::Path) -> impl FnOnce(std::io::Error) -> Error + '_ {
-    move |source| Error::Io { path: path.display().to_string(), source }
-}
 
 /// Evaluates the study's grid in parallel and writes `sweep.csv`, `sweep.json` and plots of
 /// gravimetric and volumetric energy density into the output folder.
@@ -50,7 +47,7 @@ pub fn run_sweep(study: &Study) -> Result<SweepOutcome, Error> {
     let points = evaluate_all(&problem, &candidates);
     let seconds = start.elapsed().as_secs_f64();
     let dir = &study.output.dir;
-    std::fs::create_dir_all(dir).map_err(io(dir))?;
+    std::fs::create_dir_all(dir).map_err(Error::io(dir))?;
     let mut files = Vec::new();
 
     let names: Vec<&str> = study.variables.iter().map(|v| v.path.as_str()).collect();
@@ -76,11 +73,11 @@ pub fn run_sweep(study: &Study) -> Result<SweepOutcome, Error> {
         );
     }
     let csv_path = dir.join("sweep.csv");
-    std::fs::write(&csv_path, csv).map_err(io(&csv_path))?;
+    crate::error::write_file(&csv_path, csv)?;
     files.push(csv_path);
     let json_path = dir.join("sweep.json");
     let json = serde_json::json!({ "study": study.name, "variables": names, "baseline": baseline, "points": points });
-    std::fs::write(&json_path, serde_json::to_string_pretty(&json).unwrap_or_default()).map_err(io(&json_path))?;
+    crate::error::write_file(&json_path, serde_json::to_string_pretty(&json).unwrap_or_default())?;
     files.push(json_path);
 
     let value = |p: &SweepPoint, grav: bool| {
