@@ -165,7 +165,13 @@ impl Driven<'_> {
     }
 }
 
-impl Dae for Driven<'_> {
+/// A model as a DAE for the integrator, under the applied current `current(t, y)` (A).
+pub(crate) struct UnderCurrent<'a, F> {
+    pub model: &'a dyn Model,
+    pub current: F,
+}
+
+impl<F: Fn(f64, &[f64]) -> f64> Dae for UnderCurrent<'_, F> {
     fn len(&self) -> usize {
         self.model.len()
     }
@@ -176,7 +182,7 @@ impl Dae for Driven<'_> {
         self.model.scale()
     }
     fn rhs(&self, t: f64, y: &[f64], out: &mut [f64]) {
-        self.model.rhs(y, self.current(t, y), out)
+        self.model.rhs(y, (self.current)(t, y), out)
     }
 }
 
@@ -433,7 +439,8 @@ pub fn simulate(
         };
         let t_end = t0 + step.duration();
         let mut stats = SolverStats::default();
-        let reason = integrate(&drive, ws, &opts.solver, t0, &mut y, t_end, event, &mut observer, &mut stats);
+        let dae = UnderCurrent { model, current: |t: f64, y: &[f64]| drive.current(t, y) };
+        let reason = integrate(&dae, ws, &opts.solver, t0, &mut y, t_end, event, &mut observer, &mut stats);
         rec.sol.stats.add(&stats);
         match reason? {
             crate::solver::StopReason::Event(t) => {

@@ -6,7 +6,8 @@ use serde::{Deserialize, Serialize};
 
 use crate::error::Error;
 use crate::models::Model;
-use crate::solver::{Dae, DenseOutput, SolverOptions, SolverStats, Workspace, integrate};
+use crate::simulation::UnderCurrent;
+use crate::solver::{DenseOutput, SolverOptions, SolverStats, Workspace, integrate};
 
 /// Settings of a sinusoidal-current experiment.
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -54,34 +55,6 @@ pub struct SineResponse {
     pub stats: SolverStats,
 }
 
-/// The model driven by `I(t) = amplitude sin(omega t)`.
-struct Sine<'a> {
-    model: &'a dyn Model,
-    amplitude: f64,
-    omega: f64,
-}
-
-impl Sine<'_> {
-    fn current(&self, t: f64) -> f64 {
-        self.amplitude * (self.omega * t).sin()
-    }
-}
-
-impl Dae for Sine<'_> {
-    fn len(&self) -> usize {
-        self.model.len()
-    }
-    fn mass(&self) -> &[f64] {
-        self.model.mass()
-    }
-    fn scale(&self) -> &[f64] {
-        self.model.scale()
-    }
-    fn rhs(&self, t: f64, y: &[f64], out: &mut [f64]) {
-        self.model.rhs(y, self.current(t), out)
-    }
-}
-
 /// Drives `model` from the rest state `y_rest` (consistent at zero current) with a sinusoidal
 /// current of `frequency` (Hz) and fits `V(t) = p(t) + a sin(wt) + b cos(wt)` over the fit
 /// window by least squares, where the quadratic `p` absorbs the slow drift of the state of
@@ -111,7 +84,7 @@ pub fn sine_response(
     let t_end = settle + opts.fit_periods as f64 * period;
     let n_samples = opts.fit_periods * opts.samples_per_period;
     let times: Vec<f64> = (0..n_samples).map(|k| settle + (k as f64 + 0.5) * period / opts.samples_per_period as f64).collect();
-    let drive = Sine { model, amplitude: opts.amplitude, omega };
+    let current = |t: f64| opts.amplitude * (omega * t).sin();
     let mut y = y_rest.to_vec();
     let mut voltage = Vec::with_capacity(n_samples);
     let mut buf = vec![0.0; y.len()];
@@ -119,12 +92,13 @@ pub fn sine_response(
         while voltage.len() < n_samples && times[voltage.len()] <= dense.t_end() {
             let t = times[voltage.len()];
             dense.eval(t, &mut buf);
-            voltage.push(model.voltage(&buf, drive.current(t)));
+            voltage.push(model.voltage(&buf, current(t)));
         }
     };
     let solver = SolverOptions { max_step: opts.solver.max_step.min(period / 40.0), ..opts.solver.clone() };
     let mut stats = SolverStats::default();
-    integrate(&drive, ws, &solver, 0.0, &mut y, t_end, None, &mut observer, &mut stats)?;
+    let dae = UnderCurrent { model, current: |t: f64, _: &[f64]| current(t) };
+    integrate(&dae, ws, &solver, 0.0, &mut y, t_end, None, &mut observer, &mut stats)?;
     if voltage.len() < n_samples {
         return Err(Error::Solver { t: t_end, reason: "the integration ended before the fit window".into() });
     }
