@@ -140,9 +140,9 @@ enum Command {
         /// Parameters fitted in the model and in every candidate (comma-separated paths).
         #[arg(long, value_delimiter = ',')]
         fit: Vec<String>,
-        /// Number of candidates refitted (best screening scores first).
-        #[arg(long, default_value_t = 5)]
-        refits: usize,
+        /// Refit at most this many candidates of the library (default: every identifiable one).
+        #[arg(long)]
+        refits: Option<usize>,
         /// Start the models from the rest state at the first recorded voltage.
         #[arg(long)]
         start_at_rest: bool,
@@ -184,7 +184,9 @@ fn run(cli: Cli) -> Result<(), Error> {
             let submodels = Submodels { contact_resistance, thermal, ..Default::default() };
             let mut options = DiagnoseOptions::new(cellstudio::problem::fitting::ModelSpec::new(model, submodels));
             options.fitted = fit.iter().map(|path| default_fit_parameter(path, &p)).collect::<Result<_, _>>()?;
-            options.max_refits = refits;
+            if let Some(n) = refits {
+                options.max_refits = n;
+            }
             options.fit.start_at_rest = start_at_rest;
             let rounds = diagnose_rounds(&rec, &p, &options, max_rounds)?;
             for (k, d) in rounds.iter().enumerate() {

@@ -3,7 +3,9 @@
 
 mod format;
 mod recording;
+mod sanity;
 mod segments;
 
 pub use format::CsvFormat;
 pub use recording::{Recording, VoltageError};
+pub use sanity::{Finding, RecordingStats};

@@ -1,187 +1,244 @@
-//! The library of candidate missing physics: each with the residual signature it leaves,
-//! the regressors that screen for that signature, and how to add it to a model.
+//! The library of candidate explanations of a mismatch: each with the residual signature it
+//! leaves, when a recording can identify it, how to add it to a model, and the range of
+//! fitted values that is physically plausible.
+//!
+//! Two classes: **missing physics** (a submodel or a richer model the user's model lacks)
+//! and **parameter mismatch** (a parameter the user's model already has, refitted).
 
 use serde::Serialize;
 
 use super::features::Features;
-use super::stats::least_squares;
 use crate::data::Recording;
 use crate::models::ModelKind;
 use crate::params::ParameterSet;
-use crate::problem::fitting::{FitParameter, ModelSpec};
+use crate::problem::fitting::{FitParameter, INITIAL_SOC, ModelSpec};
 
-/// A candidate missing effect.
+/// A candidate explanation.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Candidate {
     SeriesResistance,
     Electrolyte,
-    Thermal,
+    ElectrolyteTransport,
+    Kinetics,
     SolidDiffusion,
-    Stoichiometry,
+    LithiumInventory,
+    ActiveMaterial,
+    Thermal,
     RcDynamics,
     Hysteresis,
 }
 
-/// A candidate added to a model: the model to build, its base parameters and the extra
-/// parameters to fit.
+/// Missing physics or a parameter the model has but with the wrong value.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Class {
+    MissingPhysics,
+    ParameterMismatch,
+}
+
+/// A candidate added to a model: the model to build, its base parameters, the parameters to
+/// fit in addition to (or instead of) the user's, and the honest parameter count.
 #[derive(Clone, Debug)]
 pub struct Augmentation {
     pub spec: ModelSpec,
     pub base: ParameterSet,
     pub extra: Vec<FitParameter>,
+    /// Fitted paths of the user's model this candidate frees differently (and drops).
+    pub replaces: Vec<String>,
+    /// Fixed parameters a structural change brings in (e.g. the electrolyte's transport
+    /// properties when an SPM becomes an SPMe): counted in the information criteria.
+    pub structural_parameters: usize,
     /// What changed, in words (e.g. "SPM -> SPMe").
     pub change: String,
 }
 
+/// Multiplicative range (-) over which a parameter that the model already has is refitted.
+const MISMATCH_RANGE: f64 = 30.0;
+
 impl Candidate {
-    pub const ALL: [Candidate; 7] = [
+    pub const ALL: [Candidate; 10] = [
         Candidate::SeriesResistance,
         Candidate::Electrolyte,
-        Candidate::Thermal,
+        Candidate::ElectrolyteTransport,
+        Candidate::Kinetics,
         Candidate::SolidDiffusion,
-        Candidate::Stoichiometry,
+        Candidate::LithiumInventory,
+        Candidate::ActiveMaterial,
+        Candidate::Thermal,
         Candidate::RcDynamics,
         Candidate::Hysteresis,
     ];
 
-    /// Short name.
+    /// Short name, as the verdict uses it.
     pub fn name(self) -> &'static str {
         match self {
             Candidate::SeriesResistance => "series/contact resistance",
             Candidate::Electrolyte => "electrolyte transport",
-            Candidate::Thermal => "thermal (self-heating)",
-            Candidate::SolidDiffusion => "solid-diffusion limitation",
-            Candidate::Stoichiometry => "capacity/stoichiometry offset",
+            Candidate::ElectrolyteTransport => "electrolyte transport properties (diffusivity, conductivity)",
+            Candidate::Kinetics => "charge-transfer kinetics (exchange-current density)",
+            Candidate::SolidDiffusion => "solid (particle) diffusivity",
+            Candidate::LithiumInventory => "loss of lithium inventory (stoichiometry offset)",
+            Candidate::ActiveMaterial => "loss of active material (electrode capacity)",
+            Candidate::Thermal => "thermal (self-heating, temperature dependence)",
             Candidate::RcDynamics => "RC / double-layer dynamics",
             Candidate::Hysteresis => "OCV hysteresis",
         }
     }
 
-    /// The residual signature this effect leaves when it is missing from the model.
+    pub fn class(self) -> Class {
+        match self {
+            Candidate::SeriesResistance | Candidate::Electrolyte | Candidate::Thermal | Candidate::RcDynamics | Candidate::Hysteresis => {
+                Class::MissingPhysics
+            }
+            _ => Class::ParameterMismatch,
+        }
+    }
+
+    /// The residual signature this effect leaves when it is missing or mis-set.
     pub fn signature(self) -> &'static str {
         match self {
-            Candidate::SeriesResistance => {
-                "an instantaneous voltage step at every current step, proportional to the current change, constant while the current is"
-            }
-            Candidate::Electrolyte => {
-                "polarisation that grows with rate and relaxes over tens of seconds to minutes in rests (an SPM used where SPMe/DFN is needed)"
-            }
-            Candidate::Thermal => {
-                "a residual that drifts as the cell self-heats at high rate: correlated with the temperature rise (or the accumulated I²), faster kinetics and diffusion late in a discharge"
-            }
-            Candidate::SolidDiffusion => {
-                "an extra drop towards the end of a high-rate discharge and slow (hours) relaxation: refit particle diffusivities"
-            }
-            Candidate::Stoichiometry => {
-                "a residual that grows with discharged capacity and persists at rest (loss of lithium inventory or active material): refit initial concentrations"
-            }
-            Candidate::RcDynamics => {
-                "sub-second-to-seconds transients after current steps that settle to a constant offset under load and decay in rests: a series RC element"
-            }
-            Candidate::Hysteresis => {
-                "an offset at rest whose sign follows the direction of the last current (charge vs discharge), not its size: one-state OCV hysteresis"
-            }
+            Candidate::SeriesResistance => "an instantaneous voltage step at every current step, proportional to the current change and the same at every state of charge",
+            Candidate::Electrolyte => "polarisation that grows with rate and relaxes over tens of seconds to minutes in rests (an SPM or SPMe used where the DFN's electrolyte is needed)",
+            Candidate::ElectrolyteTransport => "rate-dependent polarisation that builds over the first minutes of a load and relaxes in rests, with the electrolyte model already present",
+            Candidate::Kinetics => "an instantaneous overpotential at current steps that is not proportional to the current (asinh) and grows towards the ends of the stoichiometry range",
+            Candidate::SolidDiffusion => "an extra drop late in a high-rate discharge and slow (many minutes) relaxation in rests",
+            Candidate::LithiumInventory => "the end of discharge (the knee) arrives earlier or later and the OCV is shifted along the capacity axis; persists at rest",
+            Candidate::ActiveMaterial => "one electrode's OCV features are compressed along the capacity axis (less capacity), with a shifted knee; persists at rest",
+            Candidate::Thermal => "losses that fall as the cell warms under load (correlated with the recorded temperature rise or with the accumulated I²)",
+            Candidate::RcDynamics => "transients of seconds after current steps that settle to an offset under load and decay in rests",
+            Candidate::Hysteresis => "an offset at rest whose sign follows the direction of the last current (charge vs discharge), not its size",
         }
     }
 
-    /// Regressors whose fit to the residual screens for this signature.
-    pub fn regressors(self, rec: &Recording, f: &Features, q_nominal: f64) -> Vec<Vec<f64>> {
-        let i = &rec.current;
-        let lp = |tau: f64| Features::low_pass(rec, i, tau);
+    /// The physically plausible range of the fitted values, in words (stated in the report).
+    pub fn plausible_range(self) -> &'static str {
         match self {
-            Candidate::SeriesResistance => vec![i.clone()],
-            Candidate::Electrolyte => vec![i.clone(), lp(60.0)],
-            Candidate::RcDynamics => vec![lp(2.0), lp(10.0)],
-            Candidate::Thermal => {
-                let rise = match &f.temperature_rise {
-                    Some(t) => t.clone(),
-                    None => Features::low_pass(rec, &i.iter().map(|v| v * v).collect::<Vec<_>>(), 1000.0),
-                };
-                let with_current = rise.iter().zip(i).map(|(t, i)| t * i).collect();
-                vec![rise, with_current]
-            }
-            Candidate::SolidDiffusion => vec![lp(1000.0), i.iter().zip(&f.capacity).map(|(i, q)| i * q).collect()],
-            Candidate::Stoichiometry => vec![f.capacity.clone(), f.capacity.iter().map(|q| q * q).collect()],
-            Candidate::Hysteresis => vec![Features::hysteresis_state(rec, 10.0, q_nominal)],
+            Candidate::SeriesResistance => "0.1 to 100 mOhm",
+            Candidate::Electrolyte => "no fitted parameters",
+            Candidate::ElectrolyteTransport | Candidate::Kinetics | Candidate::SolidDiffusion => "0.05 to 20 times the set's value, not on a search bound",
+            Candidate::LithiumInventory => "up to 40 % of the cyclable lithium lost (or gained)",
+            Candidate::ActiveMaterial => "up to 50 % of an electrode's active material lost",
+            Candidate::Thermal => "heat-transfer coefficient 1 to 500 W/(m^2 K)",
+            Candidate::RcDynamics => "time constant R C of 1 ms to 30 s (longer is transport, not an interface)",
+            Candidate::Hysteresis => "half-width up to 50 mV",
         }
     }
 
-    /// Screening score: `R²` of the residual on this candidate's regressors (with an
-    /// intercept) over the points in `use_point`.
-    pub fn screen(self, rec: &Recording, f: &Features, residual: &[f64], use_point: &[bool], q_nominal: f64) -> f64 {
-        let idx: Vec<usize> = (0..residual.len()).filter(|&k| use_point[k]).collect();
-        let mut cols = vec![vec![1.0; idx.len()]];
-        cols.extend(self.regressors(rec, f, q_nominal).iter().map(|c| idx.iter().map(|&k| c[k]).collect::<Vec<f64>>()));
-        let y: Vec<f64> = idx.iter().map(|&k| residual[k]).collect();
-        // Drop regressors that are constant or collinear (e.g. no rests) one by one.
-        while cols.len() > 1 {
-            if let Some((_, r2)) = least_squares(&cols, &y) {
-                return r2.max(0.0);
+    /// The experiment that separates this candidate from `other` when both fit equally.
+    pub fn separating_experiment(self, other: Candidate) -> &'static str {
+        use Candidate::*;
+        match (self, other) {
+            (SeriesResistance, Kinetics) | (Kinetics, SeriesResistance) => {
+                "current pulses at two or more rates (kinetics is non-linear in current, a resistance is not) across the state of charge"
             }
-            cols.pop();
+            (SeriesResistance, RcDynamics) | (RcDynamics, SeriesResistance) => "sampling faster than 0.1 s around current steps, or an impedance spectrum",
+            (LithiumInventory, ActiveMaterial) | (ActiveMaterial, LithiumInventory) => {
+                "a slow (C/20) charge and discharge over the full window, read by differential voltage analysis"
+            }
+            (Thermal, _) | (_, Thermal) => "the same protocol at a second ambient temperature, with the cell temperature recorded",
+            _ => "the same cell at a second C-rate with a rest after charge and after discharge",
         }
-        0.0
     }
 
-    /// The model with this effect added, or `None` when the model already has it or it
+    /// Why the recording cannot identify this candidate, or `None` when it can.
+    pub fn not_identifiable(self, rec: &Recording, f: &Features) -> Option<String> {
+        match self {
+            Candidate::Hysteresis if !(f.rests_after_charge > 0 && f.rests_after_discharge > 0) => {
+                Some(format!("needs rests after both charge and discharge (this recording has {} and {})", f.rests_after_charge, f.rests_after_discharge))
+            }
+            Candidate::Thermal if rec.temperature.is_none() && f.distinct_rates < 2 => {
+                Some("needs a recorded temperature or loads at two or more rates".into())
+            }
+            Candidate::SeriesResistance | Candidate::Kinetics | Candidate::RcDynamics if f.steps.is_empty() => {
+                Some("needs current steps".into())
+            }
+            _ => None,
+        }
+    }
+
+    /// The model with this candidate added, or `None` when the model already has it or it
     /// cannot be added (e.g. electrolyte transport to a DFN). `fitted` lists the paths the
-    /// baseline already fits; a candidate whose parameters are all among them is skipped.
-    pub fn augment(self, spec: &ModelSpec, base: &ParameterSet, rec: &Recording, fitted: &[String]) -> Option<Augmentation> {
+    /// user's model already fits; they stay fitted beside the candidate's.
+    pub fn augment(self, spec: &ModelSpec, base: &ParameterSet, fitted: &[String]) -> Option<Augmentation> {
         let mut spec = *spec;
-        let mut p = base.clone();
-        // Whether the model itself changes (a submodel or the model kind), not only values.
-        let structural = match self {
-            Candidate::SeriesResistance => !spec.submodels.contact_resistance,
-            Candidate::SolidDiffusion | Candidate::Stoichiometry => false,
-            _ => true,
+        let p = base.clone();
+        let around = |path: &str| {
+            let v = p.get(path).ok().filter(|v| *v > 0.0)?;
+            Some(FitParameter::log(path, v, v / MISMATCH_RANGE, v * MISMATCH_RANGE))
         };
-        let (extra, change) = match self {
+        let mut replaces = Vec::new();
+        let mut structural_parameters = 0;
+        let (extra, change): (Vec<FitParameter>, String) = match self {
             Candidate::SeriesResistance => {
                 let on = spec.submodels.contact_resistance;
                 spec.submodels.contact_resistance = true;
-                let r0 = if on { p.cell.contact_resistance.max(1e-4) } else { 1e-3 };
-                (vec![FitParameter::linear("cell.contact_resistance", r0, 0.0, 0.2)], "contact-resistance submodel on".to_string())
+                let r0 = if on { p.cell.contact_resistance.max(1e-4) } else { 2e-3 };
+                (vec![FitParameter::linear("cell.contact_resistance", r0, 0.0, 0.2)], "contact-resistance submodel on".into())
             }
             Candidate::Electrolyte => {
+                // The full electrolyte model: the SPMe is an approximation of the DFN that
+                // loses accuracy exactly where electrolyte transport matters (high rates).
                 let next = match spec.kind {
-                    ModelKind::Spm => ModelKind::Spme,
-                    ModelKind::Spme => ModelKind::Dfn,
+                    ModelKind::Spm | ModelKind::Spme => ModelKind::Dfn,
                     ModelKind::Dfn => return None,
                 };
+                // From the SPM it brings the electrolyte's diffusivity, conductivity,
+                // transference number, thermodynamic factor, initial concentration, porosities
+                // and tortuosity (7); from either, the two solid conductivities (2).
+                structural_parameters = if spec.kind == ModelKind::Spm { 9 } else { 2 };
                 let change = format!("{} -> {next}", spec.kind);
                 spec.kind = next;
                 (Vec::new(), change)
+            }
+            Candidate::ElectrolyteTransport => {
+                if spec.kind == ModelKind::Spm {
+                    return None;
+                }
+                (
+                    vec![around("electrolyte.diffusivity_factor")?, around("electrolyte.conductivity_factor")?],
+                    "electrolyte diffusivity and conductivity factors refitted".into(),
+                )
+            }
+            Candidate::Kinetics => (
+                vec![around("negative.rate_constant")?, around("positive.rate_constant")?],
+                "reaction rate constants of both electrodes refitted".into(),
+            ),
+            Candidate::SolidDiffusion => {
+                (vec![around("negative.diffusivity")?, around("positive.diffusivity")?], "particle diffusivities refitted".into())
+            }
+            Candidate::LithiumInventory => {
+                let c = |path: &str, c0: f64, cmax: f64| FitParameter::linear(path, c0, 0.01 * cmax, 0.99 * cmax);
+                replaces.push(INITIAL_SOC.to_string());
+                (
+                    vec![
+                        c("negative.initial_concentration", p.negative.initial_concentration, p.negative.max_concentration),
+                        c("positive.initial_concentration", p.positive.initial_concentration, p.positive.max_concentration),
+                    ],
+                    "initial electrode concentrations refitted independently (cyclable lithium free)".into(),
+                )
+            }
+            Candidate::ActiveMaterial => {
+                let a = |path: &str, eps: f64, porosity: f64| {
+                    let hi = eps.min(1.0 - porosity - 1e-9);
+                    FitParameter::log(path, 0.97 * hi, 0.4 * eps, hi)
+                };
+                (
+                    vec![
+                        a("negative.active_fraction", p.negative.active_fraction, p.negative.porosity),
+                        a("positive.active_fraction", p.positive.active_fraction, p.positive.porosity),
+                    ],
+                    "active-material volume fractions of both electrodes refitted".into(),
+                )
             }
             Candidate::Thermal => {
                 if spec.submodels.thermal {
                     return None;
                 }
                 spec.submodels.thermal = true;
-                if let Some(t) = rec.temperature.as_ref() {
-                    p.thermal.initial_temperature = t[0];
-                }
-                let h = p.thermal.heat_transfer_coefficient.clamp(0.1, 1000.0);
-                (vec![FitParameter::log("thermal.heat_transfer_coefficient", h, 0.1, 1000.0)], "lumped thermal submodel on".to_string())
-            }
-            Candidate::SolidDiffusion => {
-                let d = |path: &str, v: f64| FitParameter::log(path, v, v / 100.0, v * 100.0);
-                (
-                    vec![d("negative.diffusivity", p.negative.diffusivity), d("positive.diffusivity", p.positive.diffusivity)],
-                    "particle diffusivities refitted".to_string(),
-                )
-            }
-            Candidate::Stoichiometry => {
-                let c = |path: &str, c0: f64, cmax: f64| {
-                    FitParameter::linear(path, c0, (0.8 * c0).max(0.02 * cmax), (1.2 * c0).min(0.98 * cmax))
-                };
-                (
-                    vec![
-                        c("negative.initial_concentration", p.negative.initial_concentration, p.negative.max_concentration),
-                        c("positive.initial_concentration", p.positive.initial_concentration, p.positive.max_concentration),
-                    ],
-                    "initial electrode concentrations refitted".to_string(),
-                )
+                // Heat capacity, cooling area and the activation energies enter as fixed values.
+                structural_parameters = 3;
+                (vec![FitParameter::log("thermal.heat_transfer_coefficient", 10.0, 0.1, 1000.0)], "lumped thermal submodel on".into())
             }
             Candidate::RcDynamics => {
                 if spec.submodels.rc {
@@ -189,11 +246,8 @@ impl Candidate {
                 }
                 spec.submodels.rc = true;
                 (
-                    vec![
-                        FitParameter::linear("cell.rc_resistance", 2e-3, 0.0, 0.1),
-                        FitParameter::log("cell.rc_capacitance", 1000.0, 1.0, 1e6),
-                    ],
-                    "series RC submodel on".to_string(),
+                    vec![FitParameter::linear("cell.rc_resistance", 5e-3, 0.0, 0.1), FitParameter::log("cell.rc_capacitance", 100.0, 0.01, 1e6)],
+                    "series RC submodel on".into(),
                 )
             }
             Candidate::Hysteresis => {
@@ -207,14 +261,72 @@ impl Candidate {
                         FitParameter::log("cell.hysteresis_rate", 10.0, 0.5, 500.0),
                         FitParameter::linear("cell.hysteresis_initial", 0.0, -1.0, 1.0),
                     ],
-                    "OCV hysteresis submodel on".to_string(),
+                    "OCV hysteresis submodel on".into(),
                 )
             }
         };
         let extra: Vec<FitParameter> = extra.into_iter().filter(|e| !fitted.contains(&e.path)).collect();
-        if extra.is_empty() && !structural {
+        if extra.is_empty() && structural_parameters == 0 && self != Candidate::SeriesResistance {
             return None;
         }
-        Some(Augmentation { spec, base: p, extra, change })
+        if extra.is_empty() && self == Candidate::SeriesResistance && fitted.contains(&"cell.contact_resistance".to_string()) {
+            return None;
+        }
+        Some(Augmentation { spec, base: p, extra, replaces, structural_parameters, change })
+    }
+
+    /// Why fitted `values` of `names` (parameter units) are implausible for this candidate,
+    /// relative to the user's set `base`; `None` when they are plausible.
+    pub fn implausible(self, names: &[String], values: &[f64], base: &ParameterSet) -> Option<String> {
+        let get = |path: &str| names.iter().position(|n| n == path).map(|k| values[k]);
+        match self {
+            Candidate::SeriesResistance => {
+                let r = get("cell.contact_resistance")?;
+                (!(1e-4..=0.1).contains(&r)).then(|| format!("contact resistance {:.3} mOhm is outside 0.1 to 100 mOhm", r * 1e3))
+            }
+            Candidate::ElectrolyteTransport | Candidate::Kinetics | Candidate::SolidDiffusion => names.iter().zip(values).find_map(|(n, v)| {
+                let v0 = base.get(n).ok()?;
+                let ratio = v / v0;
+                (!(0.05..=20.0).contains(&ratio)).then(|| format!("{n} at {ratio:.3} times the set's value is outside 0.05 to 20"))
+            }),
+            Candidate::LithiumInventory => {
+                let (cn, cp) = (get("negative.initial_concentration")?, get("positive.initial_concentration")?);
+                let lithium = |a: f64, b: f64| base.negative.active_fraction * base.negative.thickness * a + base.positive.active_fraction * base.positive.thickness * b;
+                let change = lithium(cn, cp) / lithium(base.negative.initial_concentration, base.positive.initial_concentration) - 1.0;
+                (change.abs() > 0.4).then(|| format!("a change of {:.0} % of the cyclable lithium exceeds 40 %", 100.0 * change))
+            }
+            Candidate::ActiveMaterial => names.iter().zip(values).find_map(|(n, v)| {
+                let loss = 1.0 - v / base.get(n).ok()?;
+                (loss > 0.5).then(|| format!("{n} lost {:.0} %, more than 50 %", 100.0 * loss))
+            }),
+            Candidate::Thermal => {
+                let h = get("thermal.heat_transfer_coefficient")?;
+                (!(1.0..=500.0).contains(&h)).then(|| format!("heat-transfer coefficient {h:.3} W/(m^2 K) is outside 1 to 500"))
+            }
+            Candidate::RcDynamics => {
+                let tau = get("cell.rc_resistance")? * get("cell.rc_capacitance")?;
+                (!(1e-3..=30.0).contains(&tau)).then(|| format!("time constant {tau:.3} s is outside 1 ms to 30 s"))
+            }
+            Candidate::Hysteresis => {
+                let h = get("cell.hysteresis_voltage")?;
+                (h > 0.05).then(|| format!("hysteresis half-width {:.1} mV exceeds 50 mV", h * 1e3))
+            }
+            Candidate::Electrolyte => None,
+        }
+    }
+
+    /// A more specific name from the fitted values where the candidate has one (which
+    /// electrode lost active material, whether lithium was lost or gained).
+    pub fn named_by_values(self, names: &[String], values: &[f64], base: &ParameterSet) -> String {
+        let get = |path: &str| names.iter().position(|n| n == path).map(|k| values[k]);
+        match self {
+            Candidate::ActiveMaterial => {
+                let loss = |path: &str| get(path).and_then(|v| base.get(path).ok().map(|v0| 1.0 - v / v0)).unwrap_or(0.0);
+                let (n, p) = (loss("negative.active_fraction"), loss("positive.active_fraction"));
+                let (which, l) = if p >= n { ("positive", p) } else { ("negative", n) };
+                format!("loss of active material, {which} electrode ({:.0} % of its capacity)", 100.0 * l)
+            }
+            _ => self.name().to_string(),
+        }
     }
 }

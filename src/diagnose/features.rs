@@ -30,6 +30,49 @@ pub struct Features {
     pub since_step: Vec<f64>,
     /// Temperature rise over the first recorded temperature (K), when recorded.
     pub temperature_rise: Option<Vec<f64>>,
+    /// Rests of at least 60 s that follow a charge and that follow a discharge.
+    pub rests_after_charge: usize,
+    pub rests_after_discharge: usize,
+    /// Distinct load levels: |current| clusters more than 30 % apart, each held for 60 s.
+    pub distinct_rates: usize,
+}
+
+/// Rests of at least `min_rest` seconds after charge and after discharge, and the number of
+/// distinct |current| levels (more than 30 % apart) held for at least `min_rest` seconds.
+fn rests_and_rates(rec: &Recording, min_rest: f64) -> (usize, usize, usize) {
+    let (t, i) = (&rec.time, &rec.current);
+    let largest = i.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    let floor = 0.01 * largest.max(1e-12);
+    let (mut after_charge, mut after_discharge) = (0, 0);
+    let mut last_sign = 0.0;
+    let mut k = 0;
+    // Time held at each |current| level (A, s).
+    let mut levels: Vec<(f64, f64)> = Vec::new();
+    while k < t.len() {
+        let start = k;
+        let resting = i[k].abs() <= floor;
+        while k + 1 < t.len() && (i[k + 1].abs() <= floor) == resting && (resting || i[k + 1].signum() == i[start].signum()) {
+            k += 1;
+        }
+        let span = t[k] - t[start];
+        if resting {
+            if span >= min_rest {
+                if last_sign > 0.0 { after_discharge += 1 } else if last_sign < 0.0 { after_charge += 1 }
+            }
+        } else {
+            last_sign = i[start].signum();
+            for j in start..k {
+                let a = i[j].abs();
+                let dt = t[j + 1] - t[j];
+                match levels.iter_mut().find(|(l, _)| (a - *l).abs() <= 0.3 * l.max(a)) {
+                    Some(level) => level.1 += dt,
+                    None => levels.push((a, dt)),
+                }
+            }
+        }
+        k += 1;
+    }
+    (after_charge, after_discharge, levels.iter().filter(|(_, held)| *held >= min_rest).count())
 }
 
 impl Features {
@@ -64,7 +107,8 @@ impl Features {
             }
         }
         let temperature_rise = rec.temperature.as_ref().map(|temp| temp.iter().map(|v| v - temp[0]).collect());
-        Self { valid, capacity, steps, since_step, temperature_rise }
+        let (rests_after_charge, rests_after_discharge, distinct_rates) = rests_and_rates(rec, 60.0);
+        Self { valid, capacity, steps, since_step, temperature_rise, rests_after_charge, rests_after_discharge, distinct_rates }
     }
 
     /// First-order low-pass filter of `signal` with time constant `tau` (s), exact for a

@@ -1,23 +1,22 @@
-//! Model-discrepancy diagnosis: locate a mismatch, name the missing physics, refit.
+//! Model-discrepancy diagnosis: locate a mismatch, name what the model left out (missing
+//! physics) or got wrong (a parameter mismatch), add it, refit, and show the fit improve.
 //!
-//! 1. Locate: the user's model (optionally with some parameters fitted) is run through the
-//!    recorded current; the residual `r = V_data - V_model` is analysed ([`locate`]): where
-//!    in time, after which current steps, in which band of state of charge, at rest or under
-//!    load, how it scales with current, and whether noise can explain it (Ljung-Box, runs
-//!    test, a noise level from first differences).
-//! 2. Name: each effect of the [`candidates`] library has a residual signature; its
-//!    regressors are fitted to the residual to screen the library.
-//! 3. Model: the best-screened candidates are added to the model (a model-kind change, a
-//!    submodel, or refitted parameters) and fitted on a training part of the recording; they
-//!    are ranked by ΔBIC on the training points and judged by the RMSE on held-out blocks of
-//!    the recording (the model always runs through the whole recording).
-//! 4. Report: plain words, numbers and plots ([`report`], `crate::report::diagnosis_plot`).
+//! 1. Check: the recording against the cell (charge moved vs capacity, voltage swing vs
+//!    charge, peak C-rate): likely unit errors stop the diagnosis with the reason.
+//! 2. Baseline: the user's model replays the recorded current without cut-offs; its initial
+//!    state of charge is a nuisance fitted with it (a recording may start part-way through a
+//!    discharge or under load). If the model fails part-way, the recording is diagnosed up
+//!    to that point and the report says where it broke down.
+//! 3. Locate: the residual `r = V_data - V_model` is analysed ([`locate`]): where in time,
+//!    after which current steps, at rest or under load, and whether noise explains it.
+//! 4. Candidates: every identifiable candidate of the [`candidates`] library is added to the
+//!    model and fitted by Levenberg-Marquardt on a training part of the recording, in
+//!    parallel; the model always runs through the whole recording.
+//! 5. Select ([`select`]): ΔBIC with effective point counts and honest parameter counts, a
+//!    Laplace Bayes factor, the hold-out RMSE cut, the RMS removed against the noise, and
+//!    plausible fitted values decide the verdict: found, a tie (with the experiment that
+//!    separates the two), unexplained structure, or nothing beyond noise.
 //!
-//! "Missing physics found" needs the first-ranked candidate to beat the user's model by
-//! `min_delta_bic` on the training points, and on the held-out points to cut the RMSE by at
-//! least `min_holdout_gain` with a Gaussian log-likelihood ratio
-//! `n_h ln(MSE_user / MSE_candidate)` above `min_holdout_llr` (the second guards a small
-//! relative cut on a long recording, the first a large ratio near the noise floor).
 //! [`diagnose_rounds`] repeats the diagnosis on the augmented model to find a second effect.
 
 pub mod candidates;
@@ -25,21 +24,23 @@ pub mod features;
 pub mod locate;
 pub mod refit;
 pub mod report;
+pub mod select;
 pub mod stats;
 pub mod synthetic;
 
 use rayon::prelude::*;
 use serde::Serialize;
 
-pub use candidates::Candidate;
+pub use candidates::{Candidate, Class};
 use features::Features;
 pub use locate::ResidualAnalysis;
 pub use refit::{FitOutcome, FitSettings, Split};
+pub use select::{Comparison, Margins, Verdict};
 
 use crate::data::Recording;
 use crate::error::Error;
-use crate::params::ParameterSet;
-use crate::problem::fitting::{FitParameter, ModelSpec};
+use crate::params::{ParameterSet, set_initial_soc, stoichiometry_window};
+use crate::problem::fitting::{FitParameter, INITIAL_SOC, ModelSpec};
 
 /// A fit parameter for `path` around its value in `base`: log-scaled between a tenth and ten
 /// times a positive value, linear within ±1 around a zero or negative one.
@@ -53,83 +54,76 @@ pub fn default_fit_parameter(path: &str, base: &ParameterSet) -> Result<FitParam
 pub struct DiagnoseOptions {
     /// The user's model.
     pub spec: ModelSpec,
-    /// Parameters fitted in the user's model and in every candidate (may be empty: the
-    /// user's model is then taken as it is).
+    /// Parameters fitted in the user's model and in every candidate (may be empty).
     pub fitted: Vec<FitParameter>,
+    /// Fit the initial state of charge as a nuisance (unless the user fits the initial
+    /// concentrations or starts at rest).
+    pub estimate_initial_soc: bool,
     /// The recording is cut into this many equal time blocks ...
     pub blocks: usize,
     /// ... of which every `holdout_every`-th is held out for validation.
     pub holdout_every: usize,
-    /// Candidates refitted, best screening scores first.
+    /// Candidates refitted at most (all identifiable ones by default).
     pub max_refits: usize,
-    /// Least BIC improvement over the user's model for "missing physics found".
-    pub min_delta_bic: f64,
-    /// Least relative cut of the hold-out RMSE for "missing physics found" (-).
-    pub min_holdout_gain: f64,
-    /// Least hold-out log-likelihood ratio `n_h ln(MSE_user / MSE_candidate)` (-).
-    pub min_holdout_llr: f64,
+    pub margins: Margins,
     pub fit: FitSettings,
-    /// The user's model already fitted on this recording with these settings (e.g. by the
-    /// previous round): used as it is instead of fitting it again.
+    /// The user's model already fitted on this recording (e.g. by the previous round).
     pub fitted_baseline: Option<FitOutcome>,
 }
 
 impl DiagnoseOptions {
-    /// Defaults: 8 blocks with every 4th held out (25 %), 5 refits, ΔBIC > 10, a hold-out
-    /// RMSE cut by at least 10 % with a hold-out log-likelihood ratio above 10, L-BFGS-B with
-    /// sensitivity gradients.
+    /// Defaults: 8 blocks with every 4th held out (25 %), every candidate refitted, the
+    /// margins of [`Margins::default`], the initial state of charge estimated.
     pub fn new(spec: ModelSpec) -> Self {
         Self {
             spec,
             fitted: Vec::new(),
+            estimate_initial_soc: true,
             blocks: 8,
             holdout_every: 4,
-            max_refits: 5,
-            min_delta_bic: 10.0,
-            min_holdout_gain: 0.1,
-            min_holdout_llr: 10.0,
-            fit: FitSettings { optimiser: "lbfgsb".into(), max_evaluations: 300, seed: 0, start_at_rest: false },
+            max_refits: Candidate::ALL.len(),
+            margins: Margins::default(),
+            fit: FitSettings::default(),
             fitted_baseline: None,
         }
     }
 
     fn validate(&self) -> Result<(), Error> {
         if self.blocks < 2 {
-            return Err(Error::InvalidSetting { field: "blocks".into(), reason: format!("must be at least 2, got {}", self.blocks) });
+            return Err(Error::invalid("blocks", self.blocks as f64, "must be at least 2"));
         }
-        if !(self.min_holdout_gain >= 0.0 && self.min_holdout_gain < 1.0) {
-            return Err(Error::invalid("min_holdout_gain", self.min_holdout_gain, "must lie in [0, 1)"));
+        let m = &self.margins;
+        if !(m.min_holdout_gain >= 0.0 && m.min_holdout_gain < 1.0) {
+            return Err(Error::invalid("min_holdout_gain", m.min_holdout_gain, "must lie in [0, 1)"));
         }
-        if !self.min_delta_bic.is_finite() {
-            return Err(Error::invalid("min_delta_bic", self.min_delta_bic, "must be finite"));
+        if !m.min_delta_bic.is_finite() {
+            return Err(Error::invalid("min_delta_bic", m.min_delta_bic, "must be finite"));
         }
         Ok(())
     }
 }
 
-/// One candidate: its screening score and, when refitted, its fit and verdict.
+/// One candidate: its fit, comparison and standing.
 #[derive(Clone, Debug, Serialize)]
 pub struct CandidateOutcome {
     pub candidate: Candidate,
     pub name: String,
+    pub class: Class,
     pub signature: String,
-    /// `R²` of the user's residual on the candidate's signature regressors (-).
-    pub screen_score: f64,
+    pub plausible_range: String,
     /// How the model was changed.
     pub change: String,
     /// The fit, when the candidate was refitted and the fit ran.
     pub fit: Option<FitOutcome>,
-    /// Why it was not refitted or why the fit failed.
+    /// Why it was not refitted, why the fit failed, or why it is not named.
     pub note: Option<String>,
-    /// `BIC_user - BIC_candidate` and the same for AIC (positive: the candidate is better).
-    pub delta_bic: f64,
-    pub delta_aic: f64,
-    /// `1 - RMSE_holdout(candidate) / RMSE_holdout(user)` (-).
-    pub holdout_gain: f64,
-    /// `n_h ln(MSE_holdout(user) / MSE_holdout(candidate))` (-).
-    pub holdout_llr: f64,
-    /// Whether it clears the margins.
+    pub comparison: Comparison,
+    /// Whether it clears the margins (ΔBIC, hold-out cut, size against noise).
     pub clears_margins: bool,
+    /// Why its fitted values are not physically plausible.
+    pub implausible: Option<String>,
+    /// Clears the margins with plausible values.
+    pub named: bool,
     /// The augmented model with its fitted values as starting values, for a next round.
     #[serde(skip)]
     pub next: Option<NextModel>,
@@ -166,20 +160,21 @@ pub struct Diagnosis {
     /// Time blocks of the recording, and every how many one is held out.
     pub blocks: usize,
     pub holdout_every: usize,
-    pub min_delta_bic: f64,
-    pub min_holdout_gain: f64,
-    pub min_holdout_llr: f64,
-    /// The user's model, fitted as asked.
+    pub margins: Margins,
+    /// Noise level of the recording (V), from first differences of the user's residual.
+    pub noise: f64,
+    /// The user's model, fitted as asked (with the nuisance initial state).
     pub baseline: FitOutcome,
-    /// Its residual.
     pub residual: ResidualAnalysis,
-    /// Refitted candidates ranked (margins cleared first, then by ΔBIC), then the others by
-    /// screening score.
+    /// Named candidates first (by ΔBIC), then the other refitted ones, then the rest.
     pub candidates: Vec<CandidateOutcome>,
-    /// Whether the first-ranked candidate is named as the missing physics.
+    pub verdict: Verdict,
+    /// Whether a candidate is named (found or tied).
     pub found: bool,
     /// The residual with the first-ranked refitted candidate.
     pub residual_after: Option<ResidualAnalysis>,
+    /// Checks and events worth knowing (unit checks, truncation, temperature used).
+    pub notes: Vec<String>,
     /// The verdict in plain words.
     pub summary: String,
     /// Wall time (s).
@@ -197,154 +192,246 @@ impl Diagnosis {
     }
 }
 
+/// The state of charge (-) of `p`'s initial concentrations on its stoichiometry window, and
+/// the one whose open-circuit voltage is `v` (V); both within [0, 1].
+fn soc_starts(p: &ParameterSet, v: f64) -> Vec<f64> {
+    let Ok(w) = stoichiometry_window(p) else { return vec![1.0] };
+    let x = p.negative.initial_concentration / p.negative.max_concentration;
+    let of_set = ((x - w.x0) / (w.x100 - w.x0)).clamp(0.0, 1.0);
+    let line = crate::params::soc::LithiumLine::of(p);
+    let x_v = line.negative_at_ocv(p, v);
+    let of_voltage = ((x_v - w.x0) / (w.x100 - w.x0)).clamp(0.0, 1.0);
+    if (of_set - of_voltage).abs() < 0.02 { vec![of_set] } else { vec![of_set, of_voltage] }
+}
+
+/// The user's model fitted (with the nuisance initial state): on failure part-way, the
+/// recording is cut where the model broke down and the fit repeated once.
+fn fit_baseline(data: &mut Recording, base: &ParameterSet, options: &DiagnoseOptions, notes: &mut Vec<String>) -> Result<(FitOutcome, Split, Vec<FitParameter>), Error> {
+    let mut fitted = options.fitted.clone();
+    let user_sets_state = fitted.iter().any(|p| p.path.ends_with("initial_concentration") || p.path == INITIAL_SOC);
+    let mut starts: Vec<Vec<f64>> = Vec::new();
+    if options.estimate_initial_soc && !user_sets_state && !options.fit.start_at_rest {
+        let socs = soc_starts(base, data.voltage[0]);
+        fitted.push(FitParameter::linear(INITIAL_SOC, socs[0], 0.0, 1.0));
+        let user: Vec<f64> = options.fitted.iter().map(|p| p.initial).collect();
+        starts = socs.iter().map(|s| user.iter().copied().chain([*s]).collect()).collect();
+    }
+    for attempt in 0..2 {
+        let features = Features::of(data);
+        let split = Split::blocks(&data.time, &features.valid, options.blocks, options.holdout_every);
+        if split.train_points() <= fitted.len() + 10 || split.holdout_points() == 0 {
+            return Err(Error::InvalidSetting {
+                field: "data".into(),
+                reason: format!("too few points: {} training, {} held out", split.train_points(), split.holdout_points()),
+            });
+        }
+        let label = format!("{} as given", describe(&options.spec));
+        match refit::fit_and_score(label, options.spec, base.clone(), fitted.clone(), 0, &starts, data, &split, &options.fit) {
+            Ok(b) => return Ok((b, split, fitted)),
+            Err(Error::Solver { t, reason }) if attempt == 0 && t > 0.0 => {
+                let t_cut = data.time[0] + t;
+                let keep = data.time.iter().position(|x| *x >= t_cut - 1e-9).unwrap_or(data.time.len());
+                notes.push(format!(
+                    "The user's model broke down {t:.0} s into the recording ({reason}); the first {keep} of {} points (to {:.0} s) are diagnosed. A model that cannot follow the recording is itself evidence of a mismatch there.",
+                    data.time.len(),
+                    data.time[keep.saturating_sub(1).min(data.time.len() - 1)]
+                ));
+                data.time.truncate(keep);
+                data.current.truncate(keep);
+                data.voltage.truncate(keep);
+                if let Some(temp) = data.temperature.as_mut() {
+                    temp.truncate(keep);
+                }
+            }
+            Err(e) => return Err(e),
+        }
+    }
+    unreachable!("the loop returns")
+}
+
+/// Fits one candidate on top of the baseline; `warm` holds the baseline's fitted parameters
+/// at their fitted values.
+fn refit_candidate(c: Candidate, aug: candidates::Augmentation, warm: &[FitParameter], options: &DiagnoseOptions, data: &Recording, split: &Split) -> (Option<FitOutcome>, Option<String>, Option<NextModel>) {
+    let mut params: Vec<FitParameter> = warm.iter().filter(|p| !aug.replaces.contains(&p.path)).cloned().collect();
+    if c == Candidate::LithiumInventory {
+        // Start the free concentrations at the baseline's fitted initial state.
+        let mut p = aug.base.clone();
+        if let Some(soc) = warm.iter().find(|p| p.path == INITIAL_SOC) {
+            let _ = set_initial_soc(&mut p, soc.initial);
+        }
+        params.extend(aug.extra.iter().cloned().map(|mut e| {
+            e.initial = p.get(&e.path).unwrap_or(e.initial).clamp(e.lower, e.upper);
+            e
+        }));
+    } else {
+        params.extend(aug.extra.iter().cloned());
+    }
+    let start: Vec<f64> = params.iter().map(|p| p.initial).collect();
+    // A second start for the candidate's own parameters: a third of the way from the first
+    // start to the lower bound (in the search coordinates), so no fit starts only at one point.
+    let second: Vec<f64> = params
+        .iter()
+        .map(|p| {
+            if !aug.extra.iter().any(|e| e.path == p.path) {
+                p.initial
+            } else if p.log {
+                (p.initial.ln() + (p.lower.ln() - p.initial.ln()) / 3.0).exp()
+            } else {
+                p.initial + (p.lower - p.initial) / 3.0
+            }
+        })
+        .collect();
+    let starts = if aug.extra.is_empty() || second == start { vec![start] } else { vec![start, second] };
+    match refit::fit_and_score(describe(&aug.spec), aug.spec, aug.base.clone(), params.clone(), aug.structural_parameters, &starts, data, split, &options.fit) {
+        Ok(f) => {
+            let fitted = params
+                .into_iter()
+                .zip(&f.values)
+                .map(|(mut p, v)| {
+                    p.initial = v.clamp(p.lower, p.upper);
+                    p
+                })
+                .collect();
+            let next = NextModel { spec: aug.spec, base: aug.base, fitted };
+            (Some(f), None, Some(next))
+        }
+        Err(e) => (None, Some(format!("fit failed: {e}")), None),
+    }
+}
+
 /// Diagnoses the mismatch between the model of `options` (on parameters `base`) and `data`.
 pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions) -> Result<Diagnosis, Error> {
     let start = std::time::Instant::now();
     options.validate()?;
-    let features = Features::of(data);
-    let split = Split::blocks(&data.time, &features.valid, options.blocks, options.holdout_every);
-    if split.train_points() <= options.fitted.len() + 10 || split.holdout_points() == 0 {
-        return Err(Error::InvalidSetting {
-            field: "data".into(),
-            reason: format!("too few points: {} training, {} held out", split.train_points(), split.holdout_points()),
-        });
+    let mut notes = Vec::new();
+    let window = base.cell.upper_cutoff - base.cell.lower_cutoff;
+    let findings = data.check_against_cell(base.cell.nominal_capacity, window);
+    if let Some(f) = findings.iter().find(|f| f.unit_error) {
+        return Err(Error::InvalidSetting { field: "data".into(), reason: format!("likely unit error: {}", f.message) });
     }
-    let spec = options.spec;
-    let baseline = match &options.fitted_baseline {
-        Some(b) if b.voltage.len() == data.time.len() && b.names.len() == options.fitted.len() => b.clone(),
-        _ => refit::fit_and_score(
-            format!("{} as given", describe(&spec)),
-            spec,
-            base.clone(),
-            options.fitted.clone(),
-            data,
-            &split,
-            &options.fit,
-        )?,
+    notes.extend(findings.into_iter().map(|f| format!("Recording check: {}.", f.message)));
+    let mut data = data.clone();
+    // The cell's temperature is part of the recording: an isothermal model runs at the
+    // first recorded temperature, a thermal one starts there.
+    let mut base = base.clone();
+    if let Some(t0) = data.temperature.as_ref().and_then(|t| t.first().copied()) {
+        base.thermal.ambient_temperature = t0;
+        base.thermal.initial_temperature = t0;
+    }
+    let base = &base;
+    let (baseline, split, warm) = match &options.fitted_baseline {
+        Some(b) if b.voltage.len() == data.time.len() && b.names.len() == options.fitted.len() => {
+            let features = Features::of(&data);
+            (b.clone(), Split::blocks(&data.time, &features.valid, options.blocks, options.holdout_every), options.fitted.clone())
+        }
+        _ => fit_baseline(&mut data, base, options, &mut notes)?,
     };
-    // The baseline's fitted values start every candidate fit.
-    let mut warm = options.fitted.clone();
+    let data = data;
+    let features = Features::of(&data);
+    let mut warm = warm;
     for (p, v) in warm.iter_mut().zip(&baseline.values) {
         p.initial = v.clamp(p.lower, p.upper);
     }
     let residual: Vec<f64> = data.voltage.iter().zip(&baseline.voltage).map(|(d, m)| d - m).collect();
     let q = base.cell.nominal_capacity;
-    let analysis = locate::analyse(data, &features, &residual, q);
-    let train_mask: Vec<bool> = split.train.iter().map(|w| *w > 0.0).collect();
-    let fitted_paths: Vec<String> = options.fitted.iter().map(|p| p.path.clone()).collect();
+    let analysis = locate::analyse(&data, &features, &residual, q);
+    let noise = analysis.noise;
+    let fitted_paths: Vec<String> = warm.iter().map(|p| p.path.clone()).collect();
+    let n_train = split.train_points();
 
-    // Screen, then refit the best-screened candidates in parallel.
-    let mut screened: Vec<(Candidate, f64, Option<candidates::Augmentation>)> = Candidate::ALL
+    let plan: Vec<(Candidate, Result<candidates::Augmentation, String>)> = Candidate::ALL
         .iter()
-        .map(|&c| (c, c.screen(data, &features, &residual, &train_mask, q), c.augment(&spec, base, data, &fitted_paths)))
-        .collect();
-    screened.sort_by(|a, b| b.1.total_cmp(&a.1));
-    let mut refits = 0;
-    let plan: Vec<(Candidate, f64, Option<candidates::Augmentation>, bool)> = screened
-        .into_iter()
-        .map(|(c, s, aug)| {
-            let refit = aug.is_some() && refits < options.max_refits;
-            refits += usize::from(refit);
-            (c, s, aug, refit)
+        .take(options.max_refits)
+        .map(|&c| {
+            let aug = match c.not_identifiable(&data, &features) {
+                Some(why) => Err(format!("not identifiable from this recording: {why}")),
+                None => c.augment(&options.spec, base, &fitted_paths).ok_or_else(|| "not applicable to this model".to_string()),
+            };
+            (c, aug)
         })
         .collect();
+    let progress = indicatif::ProgressBar::new(plan.len() as u64).with_message(format!("refitting candidates on {}", describe(&options.spec)));
+    if let Ok(style) = indicatif::ProgressStyle::with_template("{msg} {bar:30} {pos}/{len} [{elapsed}]") {
+        progress.set_style(style);
+    }
     let mut outcomes: Vec<CandidateOutcome> = plan
         .into_par_iter()
-        .map(|(c, score, aug, refit)| {
+        .map(|(c, aug)| {
             let mut out = CandidateOutcome {
                 candidate: c,
                 name: c.name().into(),
+                class: c.class(),
                 signature: c.signature().into(),
-                screen_score: score,
+                plausible_range: c.plausible_range().into(),
                 change: aug.as_ref().map(|a| a.change.clone()).unwrap_or_default(),
                 fit: None,
                 note: None,
-                delta_bic: f64::NAN,
-                delta_aic: f64::NAN,
-                holdout_gain: f64::NAN,
-                holdout_llr: f64::NAN,
+                comparison: Comparison::default(),
                 clears_margins: false,
+                implausible: None,
+                named: false,
                 next: None,
             };
-            let Some(aug) = aug else {
-                out.note = Some("not applicable to this model".into());
-                return out;
-            };
-            if !refit {
-                out.note = Some("not refitted: weaker signature than the refitted candidates".into());
-                return out;
-            }
-            let label = describe(&aug.spec);
-            // From the user's fitted values and, when they were fitted, also from the user's
-            // starting values (a fit that compensated a missing effect can mislead); the
-            // lower training error wins.
-            let starts: Vec<&Vec<FitParameter>> = if options.fitted.is_empty() { vec![&warm] } else { vec![&warm, &options.fitted] };
-            let fits = starts.into_iter().map(|start| {
-                let mut params = start.clone();
-                params.extend(aug.extra.iter().cloned());
-                refit::fit_and_score(label.clone(), aug.spec, aug.base.clone(), params, data, &split, &options.fit)
-            });
-            let best = fits.reduce(|a, b| match (a, b) {
-                (Ok(a), Ok(b)) => Ok(if b.rmse_train < a.rmse_train { b } else { a }),
-                (Ok(a), Err(_)) | (Err(_), Ok(a)) => Ok(a),
-                (Err(e), Err(_)) => Err(e),
-            });
-            match best.expect("at least one start") {
-                Ok(f) => {
-                    out.delta_bic = baseline.bic - f.bic;
-                    out.delta_aic = baseline.aic - f.aic;
-                    out.holdout_gain = 1.0 - f.rmse_holdout / baseline.rmse_holdout;
-                    out.holdout_llr = 2.0 * split.holdout_points() as f64 * (baseline.rmse_holdout / f.rmse_holdout).ln();
-                    out.clears_margins = out.delta_bic > options.min_delta_bic
-                        && out.holdout_gain >= options.min_holdout_gain
-                        && out.holdout_llr > options.min_holdout_llr;
-                    let fitted = f
-                        .names
-                        .iter()
-                        .zip(&f.values)
-                        .map(|(name, v)| {
-                            let mut p = warm.iter().chain(&aug.extra).find(|p| &p.path == name).expect("fitted parameter").clone();
-                            p.initial = v.clamp(p.lower, p.upper);
-                            p
-                        })
-                        .collect();
-                    out.next = Some(NextModel { spec: aug.spec, base: aug.base.clone(), fitted });
-                    out.fit = Some(f);
+            match aug {
+                Err(why) => out.note = Some(why),
+                Ok(aug) => {
+                    let (fit, note, next) = refit_candidate(c, aug, &warm, options, &data, &split);
+                    out.note = note;
+                    out.next = next;
+                    if let Some(f) = fit {
+                        let m = &options.margins;
+                        out.comparison = select::compare(&baseline, &f, n_train);
+                        let cmp = &out.comparison;
+                        out.clears_margins = cmp.delta_bic > m.min_delta_bic && cmp.holdout_gain >= m.min_holdout_gain && cmp.explained >= m.size_floor(noise);
+                        // Plausibility of the candidate's own values, not the baseline's.
+                        let (names, values): (Vec<String>, Vec<f64>) =
+                            f.names.iter().zip(&f.values).filter(|(n, _)| !baseline.names.contains(n)).map(|(n, v)| (n.clone(), *v)).unzip();
+                        out.implausible = c.implausible(&names, &values, base);
+                        out.named = out.clears_margins && out.implausible.is_none();
+                        out.name = c.named_by_values(&f.names, &f.values, base);
+                        out.fit = Some(f);
+                    }
                 }
-                Err(e) => out.note = Some(format!("fit failed: {e}")),
             }
+            progress.inc(1);
             out
         })
         .collect();
+    progress.finish_and_clear();
     outcomes.sort_by(|a, b| {
-        let key = |c: &CandidateOutcome| (c.fit.is_some(), c.clears_margins);
-        key(b).cmp(&key(a)).then_with(|| {
-            if a.fit.is_some() { b.delta_bic.total_cmp(&a.delta_bic) } else { b.screen_score.total_cmp(&a.screen_score) }
-        })
+        let key = |c: &CandidateOutcome| (c.named, c.fit.is_some());
+        key(b).cmp(&key(a)).then_with(|| b.comparison.delta_bic.total_cmp(&a.comparison.delta_bic))
     });
-    let found = outcomes.first().is_some_and(|c| c.clears_margins);
+    let structured = analysis.structured && baseline.rmse_all > options.margins.size_floor(noise);
+    let standings: Vec<select::Standing> =
+        outcomes.iter().map(|c| select::Standing { candidate: c.candidate, comparison: c.comparison, named: c.named }).collect();
+    let verdict = select::verdict(&standings, structured, options.margins.min_delta_bic);
     let residual_after = outcomes.first().and_then(|c| c.fit.as_ref()).map(|f| {
         let r: Vec<f64> = data.voltage.iter().zip(&f.voltage).map(|(d, m)| d - m).collect();
-        locate::analyse(data, &features, &r, q)
+        locate::analyse(&data, &features, &r, q)
     });
+    if data.temperature.is_some() {
+        notes.push(format!("The model runs at (or starts from) the recording's first temperature, {:.2} K.", base.thermal.ambient_temperature));
+    }
     let mut diagnosis = Diagnosis {
-        model: describe(&spec),
+        model: describe(&options.spec),
         points: features.valid.iter().filter(|v| **v).count(),
-        train_points: split.train_points(),
+        train_points: n_train,
         holdout_points: split.holdout_points(),
         blocks: options.blocks,
         holdout_every: options.holdout_every,
-        min_delta_bic: options.min_delta_bic,
-        min_holdout_gain: options.min_holdout_gain,
-        min_holdout_llr: options.min_holdout_llr,
+        margins: options.margins,
+        noise,
         baseline,
         residual: analysis,
         candidates: outcomes,
-        found,
+        found: verdict.found(),
+        verdict,
         residual_after,
+        notes,
         summary: String::new(),
         seconds: 0.0,
-        data: data.clone(),
+        data,
         split,
     };
     diagnosis.summary = report::plain_words(&diagnosis);
@@ -352,15 +439,16 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
     Ok(diagnosis)
 }
 
-/// Diagnoses repeatedly: after a round names a missing effect, the next round starts from
-/// the model with that effect added (its fitted values as starting values), until a round
-/// finds nothing or `max_rounds` rounds ran. Returns every round.
+/// Diagnoses repeatedly: after a round names an effect, the next round starts from the model
+/// with that effect added (its fitted values as starting values), until a round names
+/// nothing or `max_rounds` rounds ran. Returns every round.
 pub fn diagnose_rounds(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions, max_rounds: usize) -> Result<Vec<Diagnosis>, Error> {
     let mut rounds: Vec<Diagnosis> = Vec::new();
-    let (mut base, mut options) = (base.clone(), options.clone());
+    let (mut base, mut options, mut data) = (base.clone(), options.clone(), data.clone());
     while rounds.len() < max_rounds.max(1) {
-        let d = diagnose(data, &base, &options)?;
+        let d = diagnose(&data, &base, &options)?;
         let next = if d.found { d.best().and_then(|c| c.next.clone().zip(c.fit.clone())) } else { None };
+        data = d.data.clone();
         rounds.push(d);
         let Some((next, fit)) = next else { break };
         base = next.base;

@@ -3,13 +3,13 @@
 
 use serde::Serialize;
 
-use crate::cost::CostKind;
+use rayon::prelude::*;
+
 use crate::data::Recording;
 use crate::error::Error;
-use crate::optim::OptimOptions;
 use crate::params::ParameterSet;
-use crate::problem::fit::fit;
 use crate::problem::fitting::{FitParameter, FittingProblem, ModelSpec};
+use crate::problem::least_squares::{LeastSquaresFit, LmSettings, lag1, levenberg_marquardt};
 
 /// Which points train and which validate.
 #[derive(Clone, Debug)]
@@ -52,33 +52,48 @@ impl Split {
 /// How to fit.
 #[derive(Clone, Debug)]
 pub struct FitSettings {
-    /// Optimiser name for `crate::optim::by_name`.
-    pub optimiser: String,
-    pub max_evaluations: usize,
-    pub seed: u64,
+    /// Levenberg-Marquardt settings (each iteration costs one simulation per parameter).
+    pub lm: LmSettings,
     /// Start every model from the rest state whose OCV is the first recorded voltage
     /// (keeping each parameter set's cyclable lithium); needs a recording that starts at rest.
     pub start_at_rest: bool,
 }
 
+impl Default for FitSettings {
+    fn default() -> Self {
+        Self { lm: LmSettings::default(), start_at_rest: false }
+    }
+}
+
 /// One fitted model, scored.
 #[derive(Clone, Debug, Serialize)]
 pub struct FitOutcome {
-    /// What was fitted, e.g. "SPM as-is" or "SPM + contact-resistance submodel on".
+    /// What was fitted, e.g. "SPM as given" or "SPM + contact resistance".
     pub model: String,
     /// Fitted parameter paths, values and standard errors (parameter units).
     pub names: Vec<String>,
     pub values: Vec<f64>,
     pub std_errors: Vec<f64>,
+    /// Which fitted values ended on a search bound.
+    pub on_bound: Vec<bool>,
+    /// Parameters counted in the information criteria: fitted plus the fixed ones a
+    /// structural change brings in.
+    pub parameters: usize,
     /// RMS residual (V) over training, held-out and all usable points.
     pub rmse_train: f64,
     pub rmse_holdout: f64,
     pub rmse_all: f64,
-    /// Gaussian information criteria on the training points with the noise level estimated
-    /// from the residuals: `n ln(SSE/n) + k ln n` and `n ln(SSE/n) + 2k`.
-    pub bic: f64,
-    pub aic: f64,
-    pub evaluations: usize,
+    /// Lag-1 autocorrelation of the training residual (-).
+    pub lag1: f64,
+    /// Gaussian log-likelihood of the training points (white noise, `σ` at its maximum).
+    pub log_likelihood: f64,
+    /// `ln det` of the Fisher information in the search coordinates and `Σ ln(width)` of
+    /// the uniform priors on them, for a Laplace evidence.
+    pub ln_det_information: f64,
+    pub ln_prior_volume: f64,
+    /// Whether the search converged (false: it stopped on its iteration cap).
+    pub converged: bool,
+    pub simulations: usize,
     /// Wall time (s).
     pub seconds: f64,
     /// Model voltage (V) at every recorded point.
@@ -86,18 +101,32 @@ pub struct FitOutcome {
     pub voltage: Vec<f64>,
 }
 
+impl FitOutcome {
+    /// Points that count as independent: `n (1 - ρ)/(1 + ρ)` for the training residual's
+    /// lag-1 autocorrelation `ρ` (AR(1) noise), at least 10.
+    pub fn effective_points(&self, n: usize) -> f64 {
+        let rho = self.lag1.clamp(0.0, 0.995);
+        (n as f64 * (1.0 - rho) / (1.0 + rho)).max(10.0)
+    }
+}
+
 fn rms_where(r: &[f64], keep: impl Fn(usize) -> bool) -> f64 {
     let (s, n) = r.iter().enumerate().filter(|(k, _)| keep(*k)).fold((0.0, 0usize), |(s, n), (_, v)| (s + v * v, n + 1));
     if n == 0 { f64::NAN } else { (s / n as f64).sqrt() }
 }
 
-/// Fits `parameters` of the model `spec` on the training points of `data` (or, with no
-/// parameters, simulates once) and scores the result.
+/// Fits `parameters` of the model `spec` on the training points of `data` from each of
+/// `starts` (values in parameter order; an empty list starts at the parameters' initial
+/// values) and scores the best. `structural` counts fixed parameters a structural change
+/// brought in.
+#[allow(clippy::too_many_arguments)]
 pub fn fit_and_score(
     label: String,
     spec: ModelSpec,
     base: ParameterSet,
     parameters: Vec<FitParameter>,
+    structural: usize,
+    starts: &[Vec<f64>],
     data: &Recording,
     split: &Split,
     settings: &FitSettings,
@@ -108,30 +137,50 @@ pub fn fit_and_score(
     if settings.start_at_rest {
         problem = problem.starting_at_rest()?;
     }
-    let (names, values, std_errors, voltage, evaluations) = if k == 0 {
-        (Vec::new(), Vec::new(), Vec::new(), problem.simulate(&[])?, 1)
-    } else {
-        let options = OptimOptions::default().with_seed(settings.seed).with_max_evaluations(settings.max_evaluations)?;
-        let r = fit(&problem, CostKind::Sse, &settings.optimiser, options)?;
-        (r.names, r.x, r.std_errors, r.voltage, r.evaluations + r.gradient_evaluations)
+    let initial = vec![problem.initial()];
+    let starts = if starts.is_empty() { &initial[..] } else { starts };
+    let fits: Vec<Result<LeastSquaresFit, Error>> = starts.par_iter().map(|x0| levenberg_marquardt(&problem, x0, settings.lm)).collect();
+    let mut best: Option<LeastSquaresFit> = None;
+    let mut error = None;
+    for f in fits {
+        match f {
+            Ok(f) if best.as_ref().is_none_or(|b| f.sse < b.sse) => best = Some(f),
+            Ok(_) => {}
+            Err(e) => error = Some(e),
+        }
+    }
+    let fit = match (best, error) {
+        (Some(f), _) => f,
+        (None, Some(e)) => return Err(e),
+        (None, None) => unreachable!("at least one start"),
     };
-    let r: Vec<f64> = data.voltage.iter().zip(&voltage).map(|(d, m)| d - m).collect();
+    let r: Vec<f64> = data.voltage.iter().zip(&fit.voltage).map(|(d, m)| d - m).collect();
     let n = split.train_points() as f64;
     let sse: f64 = r.iter().zip(&split.train).map(|(r, w)| w * r * r).sum();
-    let ll = n * (sse / n).max(f64::MIN_POSITIVE).ln();
+    let sigma2 = (sse / n).max(f64::MIN_POSITIVE);
+    let ln_prior_volume = problem
+        .parameters
+        .iter()
+        .map(|p| if p.log { (p.upper / p.lower).ln() } else { 1.0f64.ln() })
+        .sum();
     Ok(FitOutcome {
         model: label,
-        names,
-        values,
-        std_errors,
-        rmse_train: (sse / n).sqrt(),
+        names: problem.parameters.iter().map(|p| p.path.clone()).collect(),
+        values: fit.x.clone(),
+        std_errors: fit.std_errors.clone(),
+        on_bound: fit.on_bound.clone(),
+        parameters: k + structural,
+        rmse_train: sigma2.sqrt(),
         rmse_holdout: rms_where(&r, |i| split.holdout[i]),
         rmse_all: rms_where(&r, |i| split.holdout[i] || split.train[i] > 0.0),
-        bic: ll + k as f64 * n.ln(),
-        aic: ll + 2.0 * k as f64,
-        evaluations,
+        lag1: lag1(&r, &split.train),
+        log_likelihood: -0.5 * n * ((2.0 * std::f64::consts::PI * sigma2).ln() + 1.0),
+        ln_det_information: fit.ln_det_information,
+        ln_prior_volume,
+        converged: fit.converged,
+        simulations: fit.simulations,
         seconds: start.elapsed().as_secs_f64(),
-        voltage,
+        voltage: fit.voltage,
     })
 }
 

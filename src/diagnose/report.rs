@@ -3,7 +3,8 @@
 use std::fmt::Write;
 use std::path::{Path, PathBuf};
 
-use super::{CandidateOutcome, Diagnosis, FitOutcome, ResidualAnalysis};
+use super::{Candidate, CandidateOutcome, Class, Diagnosis, FitOutcome, ResidualAnalysis, Verdict};
+use crate::problem::fitting::INITIAL_SOC;
 use crate::error::Error;
 
 /// A fitted value with its standard error in readable units.
@@ -22,6 +23,10 @@ pub fn format_parameter(path: &str, value: f64, std_error: f64) -> String {
         }
         "initial_concentration" => format!("{path} = {value:.0}{} mol/m^3", se(1.0, 0)),
         "heat_transfer_coefficient" => format!("{path} = {value:.3}{} W/(m^2 K)", se(1.0, 3)),
+        _ if value != 0.0 && !(1e-2..1e4).contains(&value.abs()) => {
+            let e = if std_error.is_finite() { format!(" ± {std_error:.2e}") } else { " (not identifiable)".into() };
+            format!("{path} = {value:.3e}{e}")
+        }
         _ => format!("{path} = {value:.4}{}", se(1.0, 4)),
     }
 }
@@ -138,73 +143,140 @@ fn parameters_in_words(f: &FitOutcome, only: &[String]) -> String {
         .join(", ")
 }
 
-/// The verdict in plain words: where the mismatch is, what is missing, what adding it does.
-pub fn plain_words(d: &Diagnosis) -> String {
-    let mut s = locate_in_words(&d.residual);
-    let b = &d.baseline;
-    let Some(best) = d.best() else {
-        let _ = write!(s, " No candidate could be refitted.");
-        return s;
-    };
-    let f = best.fit.as_ref().expect("best has a fit");
-    let extra: Vec<String> = f.names.iter().filter(|n| !b.names.contains(n)).cloned().collect();
+fn class_words(class: Class) -> &'static str {
+    match class {
+        Class::MissingPhysics => "Missing physics",
+        Class::ParameterMismatch => "Parameter mismatch",
+    }
+}
+
+/// The candidate's own fitted values (not the baseline's), in words.
+fn candidate_values(d: &Diagnosis, c: &CandidateOutcome) -> String {
+    let Some(f) = &c.fit else { return String::new() };
+    let extra: Vec<String> = f.names.iter().filter(|n| !d.baseline.names.contains(n)).cloned().collect();
+    if extra.is_empty() {
+        return String::new();
+    }
     let params = parameters_in_words(f, &extra);
-    let with = if params.is_empty() { String::new() } else { format!(": {params}") };
-    if d.found {
-        let _ = write!(
-            s,
-            " Missing physics: {} ({}){with}. Adding it cuts the RMSE from {} to {} (hold-out {} -> {}), ΔBIC = {:.0}, hold-out log-likelihood ratio {:.0}.",
-            best.name,
-            best.change,
-            mv(b.rmse_all),
-            mv(f.rmse_all),
-            mv(b.rmse_holdout),
-            mv(f.rmse_holdout),
-            best.delta_bic,
-            best.holdout_llr
-        );
-    } else {
-        let _ = write!(
-            s,
-            " No missing physics found with a clear margin: the best candidate, {} ({}), improves BIC by {:.1} and cuts the hold-out RMSE by {:.1} % (log-likelihood ratio {:.1}); needed: ΔBIC > {}, a cut of {:.0} % and a ratio above {}.",
-            best.name,
-            best.change,
-            best.delta_bic,
-            100.0 * best.holdout_gain,
-            best.holdout_llr,
-            d.min_delta_bic,
-            100.0 * d.min_holdout_gain,
-            d.min_holdout_llr
-        );
+    if params.is_empty() { String::new() } else { format!(": {params}") }
+}
+
+fn truncated(f: &FitOutcome) -> &'static str {
+    if f.converged { "" } else { " (its search stopped on the iteration cap, not on convergence)" }
+}
+
+/// The verdict sentence(s), first in the summary.
+fn verdict_in_words(d: &Diagnosis) -> String {
+    let b = &d.baseline;
+    let find = |c: Candidate| d.candidates.iter().find(|o| o.candidate == c);
+    let floor = d.margins.size_floor(d.noise);
+    match &d.verdict {
+        Verdict::Found { candidate, class } => {
+            let c = find(*candidate).expect("named candidate");
+            let f = c.fit.as_ref().expect("named candidate has a fit");
+            format!(
+                "{}: {} ({}){}. Adding it cuts the RMSE from {} to {} (hold-out {} -> {}), removing {} RMS against a noise level of {}; ΔBIC = {:.0} with {:.0} effective points, Laplace ln Bayes factor {:.0}{}.",
+                class_words(*class),
+                c.name,
+                c.change,
+                candidate_values(d, c),
+                mv(b.rmse_all),
+                mv(f.rmse_all),
+                mv(b.rmse_holdout),
+                mv(f.rmse_holdout),
+                mv(c.comparison.explained),
+                mv(d.noise),
+                c.comparison.delta_bic,
+                c.comparison.effective_points,
+                c.comparison.ln_bayes_factor,
+                truncated(f)
+            )
+        }
+        Verdict::Tie { first, second, class, experiment } => {
+            let (a, c2) = (find(*first).expect("tied"), find(*second).expect("tied"));
+            let (fa, fb) = (a.fit.as_ref().expect("tied fit"), c2.fit.as_ref().expect("tied fit"));
+            format!(
+                "{}: {}{} or {}{}: the recording cannot tell them apart (hold-out RMSE {} vs {}, ΔBIC {:.0} vs {:.0}); {} would separate them. Either cuts the RMSE from {} to about {}.",
+                class_words(*class),
+                a.name,
+                candidate_values(d, a),
+                c2.name,
+                candidate_values(d, c2),
+                mv(fa.rmse_holdout),
+                mv(fb.rmse_holdout),
+                a.comparison.delta_bic,
+                c2.comparison.delta_bic,
+                experiment,
+                mv(b.rmse_all),
+                mv(fa.rmse_all)
+            )
+        }
+        Verdict::Unexplained => {
+            let windows: Vec<String> = d.residual.segments.iter().take(3).map(|s| format!("{:.0}-{:.0} s", s.start, s.end)).collect();
+            let best = d.best().map(|c| {
+                let why = c.implausible.clone().unwrap_or_else(|| {
+                    format!("cuts the hold-out RMSE by {:.0} % and removes {} (needed: {:.0} % and {})", 100.0 * c.comparison.holdout_gain, mv(c.comparison.explained), 100.0 * d.margins.min_holdout_gain, mv(floor))
+                });
+                format!(" The closest, {}, {why}.", c.name)
+            });
+            format!(
+                "Unexplained structure in {}: the user's model misses by {} RMS (noise {}), and no plausible candidate removes it on held-out data; see the residual plot.{}",
+                if windows.is_empty() { "the recording".to_string() } else { windows.join(", ") },
+                mv(b.rmse_all),
+                mv(d.noise),
+                best.unwrap_or_default()
+            )
+        }
+        Verdict::NoMissingPhysics => {
+            let why = if d.residual.structured {
+                format!("what remains (RMSE {}) is below the {} a named effect must remove", mv(b.rmse_all), mv(floor))
+            } else {
+                format!("the residual (RMSE {}) is consistent with noise ({})", mv(b.rmse_all), mv(d.noise))
+            };
+            format!("No missing physics: {why}.")
+        }
+    }
+}
+
+/// The verdict in plain words: the verdict first, then where the mismatch is, then notes.
+pub fn plain_words(d: &Diagnosis) -> String {
+    let mut s = verdict_in_words(d);
+    s.push(' ');
+    s.push_str(&locate_in_words(&d.residual));
+    if let Some(soc) = d.baseline.names.iter().position(|n| n == INITIAL_SOC) {
+        let _ = write!(s, " Initial state of charge estimated at {:.1} %.", 100.0 * d.baseline.values[soc]);
+    }
+    for n in &d.notes {
+        s.push(' ');
+        s.push_str(n);
     }
     s
 }
 
 fn candidate_row(c: &CandidateOutcome, rank: usize) -> String {
+    let kind = match c.class {
+        Class::MissingPhysics => "physics",
+        Class::ParameterMismatch => "parameter",
+    };
     match &c.fit {
         Some(f) => format!(
-            "| {rank} | {} | {} | {:.2} | {} | {:.2} | {:.2} | {:.2} | {:.1} | {:.1} | {:.0} % | {:.0} | {} | {:.1} |",
+            "| {rank} | {} | {kind} | {} | {} / {} | {:.2} | {:.2} | {:.2} | {:.1} | {:.1} | {:.0} % | {:.2} | {} | {} | {:.1} |",
             c.name,
             c.change,
-            c.screen_score,
             f.names.len(),
+            f.parameters,
             f.rmse_train * 1e3,
             f.rmse_holdout * 1e3,
             f.rmse_all * 1e3,
-            c.delta_bic,
-            c.delta_aic,
-            100.0 * c.holdout_gain,
-            c.holdout_llr,
-            if c.clears_margins { "yes" } else { "no" },
+            c.comparison.delta_bic,
+            c.comparison.ln_bayes_factor,
+            100.0 * c.comparison.holdout_gain,
+            c.comparison.explained * 1e3,
+            c.implausible.clone().unwrap_or_else(|| "yes".into()),
+            if c.named { "yes" } else if c.clears_margins { "no (implausible)" } else { "no" },
             f.seconds
         ),
-        None => format!(
-            "| - | {} | {} | {:.2} | | | | | | | | | {} | |",
-            c.name,
-            c.change,
-            c.screen_score,
-            c.note.clone().unwrap_or_default()
-        ),
+        None => format!("| - | {} | {kind} | {} | | | | | | | | | | {} | |", c.name, c.change, c.note.clone().unwrap_or_default()),
     }
 }
 
@@ -231,9 +303,19 @@ pub fn markdown(d: &Diagnosis, plots: &[(String, String)]) -> String {
     );
     let _ = writeln!(
         s,
-        "| rank | candidate | change | screen R² | fitted | RMSE train (mV) | RMSE hold-out (mV) | RMSE all (mV) | ΔBIC | ΔAIC | hold-out cut | hold-out LLR | clears margins | time (s) |"
+        "A candidate is named when ΔBIC (with effective points and structural parameters counted) exceeds {}, it cuts the hold-out RMSE by at least {:.0} %, it removes at least {} RMS on held-out points ({}x the noise of {}, at least {}), and its fitted values are plausible.\n",
+        d.margins.min_delta_bic,
+        100.0 * d.margins.min_holdout_gain,
+        mv(d.margins.size_floor(d.noise)),
+        d.margins.noise_multiple,
+        mv(d.noise),
+        mv(d.margins.voltage_floor)
     );
-    let _ = writeln!(s, "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|");
+    let _ = writeln!(
+        s,
+        "| rank | candidate | kind | change | fitted / counted | RMSE train (mV) | RMSE hold-out (mV) | RMSE all (mV) | ΔBIC | ln BF | hold-out cut | removed (mV) | plausible | named | time (s) |"
+    );
+    let _ = writeln!(s, "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|");
     let mut rank = 0;
     for c in &d.candidates {
         rank += usize::from(c.fit.is_some());
@@ -244,9 +326,9 @@ pub fn markdown(d: &Diagnosis, plots: &[(String, String)]) -> String {
         let f = c.fit.as_ref().expect("filtered");
         let _ = writeln!(s, "- {}: {}", c.name, if f.names.is_empty() { "(no parameters)".into() } else { parameters_in_words(f, &[]) });
     }
-    let _ = writeln!(s, "\n## Candidate signatures\n");
+    let _ = writeln!(s, "\n## Candidate signatures and plausible ranges\n");
     for c in &d.candidates {
-        let _ = writeln!(s, "- **{}**: {}", c.name, c.signature);
+        let _ = writeln!(s, "- **{}**: {}. Plausible: {}.", c.name, c.signature, c.plausible_range);
     }
     let _ = writeln!(s, "\n## Residual of the user's model\n");
     residual_section(&mut s, &d.residual);

@@ -125,7 +125,7 @@ impl ElectrolyteOp {
             None => ((1.0 - t_plus) / FARADAY, None),
         };
         // 1 / (eps^b D(c_e)) (s/m^2) at each node: the face's harmonic mean is one division.
-        let resistivity = |i: usize| 1.0 / (vols[i].tortuosity * p.diffusivity.eval(ce[i]) * arr);
+        let resistivity = |i: usize| 1.0 / (vols[i].tortuosity * p.diffusivity.eval(ce[i]) * p.diffusivity_factor * arr);
         let rate = |i: usize, flux_left: f64, flux_right: f64| ((flux_left - flux_right) * inv_dx[i] + source * aj(i)) * inv_eps[i];
         let (mut r_left, mut flux_left) = (resistivity(0), 0.0);
         for i in 0..n - 1 {
@@ -155,7 +155,7 @@ impl ElectrolyteOp {
         let n = self.len();
         let (ce, phie, out, vols, inv_dx) = (&ce[..n], &phie[..n], &mut out[..n], &self.vols[..n], &self.inv_dx[..n]);
         let (weights, inv_gaps) = (&self.weights[..n - 1], &self.inv_gaps[..n - 1]);
-        let kappa = |i: usize| vols[i].tortuosity * p.conductivity.eval(ce[i]) * arr;
+        let kappa = |i: usize| vols[i].tortuosity * p.conductivity.eval(ce[i]) * p.conductivity_factor * arr;
         let (mut kappa_left, mut c_left, mut i_left) = (kappa(0), ce[0].max(1e-6), 0.0);
         for i in 0..n - 1 {
             let (kappa_right, c_right, w) = (kappa(i + 1), ce[i + 1].max(1e-6), weights[i]);

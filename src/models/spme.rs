@@ -149,7 +149,7 @@ impl Spme {
         let avg_eps_c = self.electrolyte.vols.iter().zip(ce).map(|(v, c)| v.dx * v.eps * c).sum::<f64>() / k.length;
         let c_av = avg_eps_c * k.avg_inv_eps;
         let arr = super::kinetics::arrhenius(e.activation_energy, self.ec.t_ref(), temp);
-        let kappa = e.conductivity.eval(c_av) * arr;
+        let kappa = e.conductivity.eval(c_av) * e.conductivity_factor * arr;
         let chi = 2.0 * (1.0 - e.transference_number) * e.thermodynamic_factor;
         let rt_f = GAS_CONSTANT * temp / FARADAY;
         // mean over an electrode's (equal-width) volumes of ln c_e; the ln c_av cancels

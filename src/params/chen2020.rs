@@ -91,6 +91,8 @@ pub fn chen2020() -> ParameterSet {
             diffusivity: Function1D::Nyman2008Diffusivity,
             conductivity: Function1D::Nyman2008Conductivity,
             activation_energy: 0.0,
+            diffusivity_factor: 1.0,
+            conductivity_factor: 1.0,
             density: 1280.0,
         },
         thermal: Thermal {

@@ -147,6 +147,13 @@ pub struct Electrolyte {
     pub conductivity: Function1D,
     /// Activation energy of diffusivity and conductivity (J/mol).
     pub activation_energy: f64,
+    /// Factor on the diffusivity function (-), 1 for the function as given: what a fit of
+    /// the electrolyte's transport adjusts.
+    #[serde(default = "one")]
+    pub diffusivity_factor: f64,
+    /// Factor on the conductivity function (-), 1 for the function as given.
+    #[serde(default = "one")]
+    pub conductivity_factor: f64,
     /// Density (kg/m^3), for the cell mass.
     pub density: f64,
 }
@@ -200,6 +207,10 @@ pub struct Cell {
 pub const DEFAULT_RC_CAPACITANCE: f64 = 1000.0;
 /// Default hysteresis rate (-): the state settles within about a tenth of the capacity.
 pub const DEFAULT_HYSTERESIS_RATE: f64 = 10.0;
+
+fn one() -> f64 {
+    1.0
+}
 
 fn default_rc_capacitance() -> f64 {
     DEFAULT_RC_CAPACITANCE
@@ -269,6 +280,8 @@ impl ParameterSet {
         positive("electrolyte.thermodynamic_factor", e.thermodynamic_factor)?;
         non_negative("electrolyte.activation_energy", e.activation_energy)?;
         positive("electrolyte.density", e.density)?;
+        positive("electrolyte.diffusivity_factor", e.diffusivity_factor)?;
+        positive("electrolyte.conductivity_factor", e.conductivity_factor)?;
         e.diffusivity.validate("electrolyte.diffusivity")?;
         e.conductivity.validate("electrolyte.conductivity")?;
         let c = &self.cell;
@@ -374,6 +387,8 @@ impl ParameterSet {
                 "transference_number" => &mut self.electrolyte.transference_number,
                 "thermodynamic_factor" => &mut self.electrolyte.thermodynamic_factor,
                 "activation_energy" => &mut self.electrolyte.activation_energy,
+                "diffusivity_factor" => &mut self.electrolyte.diffusivity_factor,
+                "conductivity_factor" => &mut self.electrolyte.conductivity_factor,
                 "density" => &mut self.electrolyte.density,
                 _ => return Err(unknown()),
             },

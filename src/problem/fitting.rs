@@ -37,6 +37,24 @@ impl ModelSpec {
     }
 }
 
+/// The path of the initial state of charge (-, 0 at the lower cut-off, 1 at the upper), a
+/// fit parameter that is not a field of the set: it places the initial particle
+/// concentrations on the set's lithium line ([`crate::params::set_initial_soc`]) after the
+/// other fitted values are set.
+pub const INITIAL_SOC: &str = "initial_soc";
+
+/// Sets `values` of `parameters` in `p`, the initial state of charge last.
+fn apply(p: &mut ParameterSet, parameters: &[FitParameter], values: &[f64]) -> Result<(), Error> {
+    let mut soc = None;
+    for (fp, &v) in parameters.iter().zip(values) {
+        if fp.path == INITIAL_SOC { soc = Some(v) } else { p.set(&fp.path, v)? }
+    }
+    if let Some(v) = soc {
+        crate::params::set_initial_soc(p, v)?;
+    }
+    Ok(())
+}
+
 /// One parameter to identify, by dotted path (e.g. `negative.diffusivity`).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -66,7 +84,9 @@ impl FitParameter {
     }
 
     fn validate(&self, base: &ParameterSet) -> Result<(), Error> {
-        base.get(&self.path)?;
+        if self.path != INITIAL_SOC {
+            base.get(&self.path)?;
+        }
         let field = |name: &str| format!("parameters.{}.{name}", self.path);
         for (name, v) in [("initial", self.initial), ("lower", self.lower), ("upper", self.upper)] {
             if !v.is_finite() {
@@ -230,9 +250,7 @@ impl FittingProblem {
         if let Some(v) = self.initial_ocv {
             p.set_initial_ocv(v)?;
         }
-        for (fp, &v) in self.parameters.iter().zip(x) {
-            p.set(&fp.path, v)?;
-        }
+        apply(&mut p, &self.parameters, x)?;
         p.validate()?;
         Ok(p)
     }
@@ -283,8 +301,13 @@ impl FittingProblem {
         let base = first[0].build(p)?;
         let mut perturbed: Vec<&dyn Model> = Vec::with_capacity(rest.len());
         for (k, b) in rest.iter_mut().enumerate() {
-            let mut q = p.clone();
-            q.set(&self.parameters[k].path, x[k] + steps[k])?;
+            let mut q = self.base.clone();
+            if let Some(v) = self.initial_ocv {
+                q.set_initial_ocv(v)?;
+            }
+            let mut xk = x.to_vec();
+            xk[k] += steps[k];
+            apply(&mut q, &self.parameters, &xk)?;
             perturbed.push(b.build(&q)?.model.as_ref());
         }
         let model = Sensitivities::new(base.model.as_ref(), perturbed, scales.clone(), steps);

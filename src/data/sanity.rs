@@ -1,0 +1,118 @@
+//! Checks of a recording against the cell it is said to come from, before any model runs:
+//! the charge it moves against the cell's capacity, its voltage swing against that charge,
+//! its peak current as a C-rate, and its sampling. Likely unit errors are named as such,
+//! with the `[data.format]` setting that fixes them.
+
+use serde::Serialize;
+
+use super::Recording;
+
+/// One finding of the checks.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Finding {
+    /// A likely unit error (the recording cannot be from this cell as read): fatal.
+    pub unit_error: bool,
+    pub message: String,
+}
+
+/// Summary numbers behind the findings.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct RecordingStats {
+    /// Range of the charge moved since the start (A h).
+    pub charge_range: f64,
+    /// Largest |current| (A) and as a C-rate of the nominal capacity (-).
+    pub peak_current: f64,
+    pub peak_c_rate: f64,
+    /// Voltage range (V).
+    pub voltage_span: f64,
+    /// Median and largest time step (s).
+    pub median_step: f64,
+    pub largest_step: f64,
+}
+
+impl Recording {
+    /// Summary numbers of the recording against nominal capacity `capacity` (A h).
+    pub fn stats(&self, capacity: f64) -> RecordingStats {
+        let (t, i, v) = (&self.time, &self.current, &self.voltage);
+        let (mut q, mut q_min, mut q_max) = (0.0f64, 0.0f64, 0.0f64);
+        let mut steps: Vec<f64> = Vec::with_capacity(t.len());
+        for k in 1..t.len() {
+            let dt = t[k] - t[k - 1];
+            q += 0.5 * (i[k] + i[k - 1]) * dt / 3600.0;
+            (q_min, q_max) = (q_min.min(q), q_max.max(q));
+            if dt > 0.0 {
+                steps.push(dt);
+            }
+        }
+        steps.sort_by(f64::total_cmp);
+        let peak = i.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        let (v_min, v_max) = v.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| (a.min(*x), b.max(*x)));
+        RecordingStats {
+            charge_range: q_max - q_min,
+            peak_current: peak,
+            peak_c_rate: peak / capacity,
+            voltage_span: v_max - v_min,
+            median_step: steps.get(steps.len() / 2).copied().unwrap_or(0.0),
+            largest_step: steps.last().copied().unwrap_or(0.0),
+        }
+    }
+
+    /// Checks the recording against a cell of nominal capacity `capacity` (A h) whose
+    /// open-circuit window spans `ocv_window` (V, upper minus lower cut-off).
+    ///
+    /// ```
+    /// use cellstudio::data::Recording;
+    /// // A 1C discharge of a 5 A h cell with time written in minutes: 60 "s" long.
+    /// let time: Vec<f64> = (0..=60).map(f64::from).collect();
+    /// let voltage = time.iter().map(|t| 4.1 - 1.3 * t / 60.0).collect();
+    /// let rec = Recording { current: vec![5.0; 61], time, voltage, temperature: None };
+    /// let f = rec.check_against_cell(5.0, 1.7);
+    /// assert!(f[0].unit_error && f[0].message.contains("time_unit = \"min\""));
+    /// ```
+    pub fn check_against_cell(&self, capacity: f64, ocv_window: f64) -> Vec<Finding> {
+        let s = self.stats(capacity);
+        let mut out = Vec::new();
+        let fatal = |message: String| Finding { unit_error: true, message };
+        if s.charge_range > 1.5 * capacity {
+            out.push(fatal(format!(
+                "the recording moves {:.3} A h, {:.1} times the cell's nominal {:.3} A h: is the current in mA (`[data.format] current_unit = \"mA\"`) or the time in ms?",
+                s.charge_range,
+                s.charge_range / capacity,
+                capacity
+            )));
+        } else if s.peak_c_rate > 50.0 {
+            out.push(fatal(format!(
+                "the peak current {:.4} A is {:.0}C for the cell's nominal {:.3} A h: is the current in mA (`[data.format] current_unit = \"mA\"`)?",
+                s.peak_current, s.peak_c_rate, capacity
+            )));
+        }
+        if s.voltage_span > 0.6 * ocv_window && s.charge_range < 0.1 * capacity && s.peak_c_rate < 20.0 {
+            let factor = 0.6 * capacity / s.charge_range.max(1e-12);
+            let hint = if (30.0..=120.0).contains(&factor) {
+                "is the time in minutes (`[data.format] time_unit = \"min\"`)?"
+            } else if factor > 1000.0 {
+                "is the time in hours (`[data.format] time_unit = \"h\"`) or the current in kA?"
+            } else {
+                "is the time or the current in another unit?"
+            };
+            out.push(fatal(format!(
+                "the voltage swings {:.3} V, {:.0} % of the cell's open-circuit window, while only {:.4} A h ({:.2} % of the nominal {:.3} A h) moves: {hint}",
+                s.voltage_span,
+                100.0 * s.voltage_span / ocv_window,
+                s.charge_range,
+                100.0 * s.charge_range / capacity,
+                capacity
+            )));
+        }
+        if s.peak_c_rate > 20.0 && !out.iter().any(|f| f.unit_error) {
+            out.push(Finding { unit_error: false, message: format!("the peak current is {:.0}C: an unusually high rate", s.peak_c_rate) });
+        }
+        if s.largest_step > 600.0 {
+            out.push(Finding {
+                unit_error: false,
+                message: format!("the sampling has a gap of {:.0} s (median step {:.3} s): the model is driven by a linear current in between", s.largest_step, s.median_step),
+            });
+        }
+        out
+    }
+}

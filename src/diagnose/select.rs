@@ -1,0 +1,128 @@
+//! Model selection: how much better a candidate explains the recording than the user's
+//! model, counted honestly, and the verdict that follows.
+//!
+//! - **Correlated residuals.** A structured residual is far from independent noise, so the
+//!   Gaussian information criteria count `n_eff = n (1 - ρ)/(1 + ρ)` points, `ρ` the lag-1
+//!   autocorrelation of the candidate's training residual (AR(1) noise).
+//! - **Parameter counts** include the fixed parameters a structural change brings in
+//!   ([`super::candidates::Augmentation::structural_parameters`]).
+//! - **Evidence**: beside ΔBIC, a Laplace estimate of the log Bayes factor from the Fisher
+//!   information at the fit and uniform priors over the search boxes.
+//! - **Size against noise**: the RMS the candidate removes on held-out points,
+//!   `sqrt(MSE_user - MSE_candidate)`, must exceed a multiple of the recording's noise level
+//!   (and an absolute floor), so nothing is named at the microvolt level.
+
+use serde::Serialize;
+
+use super::candidates::{Candidate, Class};
+use super::refit::FitOutcome;
+
+/// How a candidate compares with the user's model.
+#[derive(Clone, Copy, Debug, Default, Serialize)]
+pub struct Comparison {
+    /// `BIC_user - BIC_candidate` with effective point counts (positive: candidate better).
+    pub delta_bic: f64,
+    /// Laplace estimate of `ln Z_candidate - ln Z_user`.
+    pub ln_bayes_factor: f64,
+    /// `1 - RMSE_holdout(candidate) / RMSE_holdout(user)` (-).
+    pub holdout_gain: f64,
+    /// RMS removed on the held-out points, `sqrt(MSE_user - MSE_candidate)` (V, 0 if none).
+    pub explained: f64,
+    /// Effective independent training points of the candidate's residual.
+    pub effective_points: f64,
+}
+
+/// Margins a candidate must clear to be named.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct Margins {
+    pub min_delta_bic: f64,
+    pub min_holdout_gain: f64,
+    /// The removed RMS must exceed this many times the noise level ...
+    pub noise_multiple: f64,
+    /// ... and this absolute floor (V).
+    pub voltage_floor: f64,
+}
+
+impl Default for Margins {
+    /// ΔBIC > 10, a hold-out cut of 10 %, and at least 3x the noise and 0.3 mV removed.
+    fn default() -> Self {
+        Self { min_delta_bic: 10.0, min_holdout_gain: 0.1, noise_multiple: 3.0, voltage_floor: 3e-4 }
+    }
+}
+
+impl Margins {
+    /// The least RMS (V) a named effect must remove at noise level `noise` (V).
+    pub fn size_floor(&self, noise: f64) -> f64 {
+        (self.noise_multiple * noise).max(self.voltage_floor)
+    }
+}
+
+/// Laplace log evidence with `n_eff` effective points out of `n`: the log-likelihood scaled
+/// by `n_eff / n`, the Fisher information likewise.
+fn laplace(f: &FitOutcome, n: f64, n_eff: f64) -> f64 {
+    let k = f.names.len() as f64;
+    let scale = n_eff / n;
+    scale * f.log_likelihood + 0.5 * k * (2.0 * std::f64::consts::PI).ln() - 0.5 * (f.ln_det_information + k * scale.ln()) - f.ln_prior_volume
+}
+
+/// Compares `candidate` with `baseline` over `n` training points.
+pub fn compare(baseline: &FitOutcome, candidate: &FitOutcome, n: usize) -> Comparison {
+    let n_eff = candidate.effective_points(n);
+    let dk = candidate.parameters as f64 - baseline.parameters as f64;
+    let ratio = (baseline.rmse_train / candidate.rmse_train).powi(2);
+    let delta_bic = n_eff * ratio.ln() - dk * n_eff.ln();
+    let ln_bayes_factor = laplace(candidate, n as f64, n_eff) - laplace(baseline, n as f64, n_eff);
+    let (b, c) = (baseline.rmse_holdout, candidate.rmse_holdout);
+    Comparison {
+        delta_bic,
+        ln_bayes_factor,
+        holdout_gain: 1.0 - c / b,
+        explained: (b * b - c * c).max(0.0).sqrt(),
+        effective_points: n_eff,
+    }
+}
+
+/// What the diagnosis concludes.
+#[derive(Clone, Debug, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Verdict {
+    /// One candidate explains the mismatch clearly better than the others.
+    Found { candidate: Candidate, class: Class },
+    /// Two candidates explain it equally well: the data cannot tell them apart.
+    Tie { first: Candidate, second: Candidate, class: Class, experiment: String },
+    /// Structure beyond noise that no plausible candidate removes.
+    Unexplained,
+    /// The residual is at the noise level (or what remains is below the size floor).
+    NoMissingPhysics,
+}
+
+impl Verdict {
+    pub fn found(&self) -> bool {
+        matches!(self, Verdict::Found { .. } | Verdict::Tie { .. })
+    }
+}
+
+/// One candidate's standing for the verdict.
+pub struct Standing {
+    pub candidate: Candidate,
+    pub comparison: Comparison,
+    /// Clears every margin and its fitted values are plausible.
+    pub named: bool,
+}
+
+/// The verdict from candidates ranked best first (named ones first, by ΔBIC). `structured`:
+/// whether the user's residual is larger than noise and the size floor.
+pub fn verdict(ranked: &[Standing], structured: bool, min_delta_bic: f64) -> Verdict {
+    let named: Vec<&Standing> = ranked.iter().filter(|s| s.named).collect();
+    match named.as_slice() {
+        [] if structured => Verdict::Unexplained,
+        [] => Verdict::NoMissingPhysics,
+        [best, second, ..] if best.comparison.delta_bic - second.comparison.delta_bic < min_delta_bic => Verdict::Tie {
+            first: best.candidate,
+            second: second.candidate,
+            class: best.candidate.class(),
+            experiment: best.candidate.separating_experiment(second.candidate).to_string(),
+        },
+        [best, ..] => Verdict::Found { candidate: best.candidate, class: best.candidate.class() },
+    }
+}

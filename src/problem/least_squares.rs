@@ -1,0 +1,261 @@
+//! Bounded Levenberg-Marquardt on a fitting problem's weighted sum of squared residuals, with
+//! a forward-difference Jacobian from plain simulations run in parallel.
+//!
+//! Why not the L-BFGS-B of [`super::fit`]: the diagnosis fits a handful of parameters of
+//! many models, on long recordings, where each simulation is the cost. Gauss-Newton steps
+//! use the residual's structure and converge in about ten Jacobians where a quasi-Newton
+//! search on the scalar cost takes tens to hundreds of evaluations; the Jacobian columns are
+//! independent simulations (parallel), and plain simulations are as robust as the model,
+//! where the sensitivity system of a DFN may fail to integrate. (The `levenberg-marquardt`
+//! crate has no bounds and brings nalgebra beside faer.)
+//!
+//! The search runs in scaled coordinates `z`: `ln v` for log-scaled parameters, `v / (upper -
+//! lower)` for linear ones; bounds are kept by projecting each step onto the box.
+
+use rayon::prelude::*;
+use serde::Serialize;
+
+use super::fitting::{FitParameter, FittingProblem};
+use crate::error::Error;
+use crate::optim::linalg::sym_eigen;
+
+/// Settings of a least-squares fit.
+#[derive(Clone, Copy, Debug)]
+pub struct LmSettings {
+    /// Jacobians at most (each costs one simulation per parameter).
+    pub max_iterations: usize,
+    /// Converged when an accepted step lowers the SSE by less than this fraction.
+    pub sse_tolerance: f64,
+}
+
+impl Default for LmSettings {
+    fn default() -> Self {
+        Self { max_iterations: 25, sse_tolerance: 1e-6 }
+    }
+}
+
+/// The result of a least-squares fit.
+#[derive(Clone, Debug, Serialize)]
+pub struct LeastSquaresFit {
+    /// Fitted values (parameter units).
+    pub x: Vec<f64>,
+    /// Standard errors (parameter units) from `σ² (JᵀJ)⁻¹`, `σ²` the residual variance on
+    /// the weighted points, inflated by `(1 + ρ)/(1 - ρ)` for a lag-1 residual
+    /// autocorrelation `ρ > 0`; infinite along directions the data do not determine.
+    pub std_errors: Vec<f64>,
+    /// Weighted sum of squared residuals (V²) and the number of weighted points.
+    pub sse: f64,
+    pub points: usize,
+    /// `ln det(JᵀJ / σ²)` in scaled coordinates, for a Laplace evidence (-inf when singular).
+    pub ln_det_information: f64,
+    /// Which fitted values lie on a bound (within 0.1 % of the scaled range).
+    pub on_bound: Vec<bool>,
+    /// Whether the search stopped on its tolerance (false: on its iteration cap).
+    pub converged: bool,
+    pub iterations: usize,
+    pub simulations: usize,
+    /// Model voltage (V) at every recorded point, at `x`.
+    #[serde(skip)]
+    pub voltage: Vec<f64>,
+}
+
+struct Scale<'a>(&'a [FitParameter]);
+
+impl Scale<'_> {
+    fn width(p: &FitParameter) -> f64 {
+        p.upper - p.lower
+    }
+    fn to_z(&self, x: &[f64]) -> Vec<f64> {
+        self.0.iter().zip(x).map(|(p, v)| if p.log { v.ln() } else { v / Self::width(p) }).collect()
+    }
+    fn to_x(&self, z: &[f64]) -> Vec<f64> {
+        self.0.iter().zip(z).map(|(p, v)| if p.log { v.exp() } else { v * Self::width(p) }).collect()
+    }
+    fn bounds(&self) -> Vec<(f64, f64)> {
+        self.0.iter().map(|p| if p.log { (p.lower.ln(), p.upper.ln()) } else { (p.lower / Self::width(p), p.upper / Self::width(p)) }).collect()
+    }
+    /// `dv/dz` at `x`.
+    fn dx_dz(&self, x: &[f64]) -> Vec<f64> {
+        self.0.iter().zip(x).map(|(p, v)| if p.log { *v } else { Self::width(p) }).collect()
+    }
+}
+
+/// Weighted residuals `sqrt(w) (V_model - V_data)`.
+fn residuals(problem: &FittingProblem, voltage: &[f64]) -> Vec<f64> {
+    problem.residuals(voltage).iter().zip(&problem.weights).map(|(r, w)| r * w.sqrt()).collect()
+}
+
+fn sse(r: &[f64]) -> f64 {
+    r.iter().map(|v| v * v).sum()
+}
+
+/// Fits the problem's parameters from `start` (parameter units) by Levenberg-Marquardt.
+/// Errors when the model fails at `start`; a failed trial step only raises the damping.
+pub fn levenberg_marquardt(problem: &FittingProblem, start: &[f64], settings: LmSettings) -> Result<LeastSquaresFit, Error> {
+    let scale = Scale(&problem.parameters);
+    let bounds = scale.bounds();
+    let k = start.len();
+    let project = |z: &mut [f64]| z.iter_mut().zip(&bounds).for_each(|(v, (lo, hi))| *v = v.clamp(*lo, *hi));
+    let mut z = scale.to_z(start);
+    project(&mut z);
+    let mut voltage = problem.simulate(&scale.to_x(&z))?;
+    let mut r = residuals(problem, &voltage);
+    let mut cost = sse(&r);
+    let mut simulations = 1;
+    let mut lambda = 1e-3;
+    let mut converged = k == 0;
+    let mut iterations = 0;
+    let mut jac: Vec<Vec<f64>> = Vec::new();
+    while !converged && iterations < settings.max_iterations {
+        iterations += 1;
+        jac = jacobian(problem, &scale, &z, &bounds, &r)?;
+        simulations += k;
+        let (jtj, jtr) = normal_equations(&jac, &r);
+        let mut accepted = false;
+        for _ in 0..8 {
+            let mut a = jtj.clone();
+            for i in 0..k {
+                a[i * k + i] += lambda * (jtj[i * k + i] + 1e-12);
+            }
+            let step = solve_symmetric(&a, &jtr, k)?;
+            let mut trial: Vec<f64> = z.iter().zip(&step).map(|(z, s)| z - s).collect();
+            project(&mut trial);
+            let moved = trial.iter().zip(&z).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
+            if moved < 1e-10 {
+                converged = true;
+                break;
+            }
+            simulations += 1;
+            let Ok(v) = problem.simulate(&scale.to_x(&trial)) else {
+                lambda *= 10.0;
+                continue;
+            };
+            let rt = residuals(problem, &v);
+            let ct = sse(&rt);
+            if ct < cost {
+                let gain = (cost - ct) / cost.max(f64::MIN_POSITIVE);
+                (z, voltage, r, cost) = (trial, v, rt, ct);
+                lambda = (lambda / 3.0).max(1e-9);
+                accepted = true;
+                converged = gain < settings.sse_tolerance || moved < 1e-6;
+                break;
+            }
+            lambda *= 4.0;
+        }
+        if !accepted && !converged {
+            // No step lowers the cost even with heavy damping: a (local) minimum.
+            converged = lambda > 1e3;
+            if converged {
+                break;
+            }
+        }
+    }
+    if jac.is_empty() && k > 0 {
+        jac = jacobian(problem, &scale, &z, &bounds, &r)?;
+        simulations += k;
+    }
+    let x = scale.to_x(&z);
+    let points = problem.weights.iter().filter(|w| **w > 0.0).count();
+    let dof = (points.saturating_sub(k)).max(1) as f64;
+    let sigma2 = (cost / dof).max(f64::MIN_POSITIVE);
+    let rho = lag1(&problem.residuals(&voltage), &problem.weights).max(0.0).min(0.99);
+    let inflation = (1.0 + rho) / (1.0 - rho);
+    let (jtj, _) = normal_equations(&jac, &r);
+    let (cov, ln_det) = inverse_and_log_det(&jtj, k)?;
+    let dxdz = scale.dx_dz(&x);
+    let std_errors = (0..k).map(|i| (sigma2 * inflation * cov[i * k + i]).sqrt() * dxdz[i]).collect();
+    let on_bound = z.iter().zip(&bounds).map(|(v, (lo, hi))| (v - lo).abs() <= 1e-3 * (hi - lo) || (hi - v).abs() <= 1e-3 * (hi - lo)).collect();
+    Ok(LeastSquaresFit {
+        x,
+        std_errors,
+        sse: cost,
+        points,
+        ln_det_information: ln_det - k as f64 * sigma2.ln(),
+        on_bound,
+        converged,
+        iterations,
+        simulations,
+        voltage,
+    })
+}
+
+/// Forward-difference Jacobian of the weighted residuals in scaled coordinates, one column
+/// per parameter (stepping inwards at an upper bound).
+fn jacobian(problem: &FittingProblem, scale: &Scale, z: &[f64], bounds: &[(f64, f64)], r: &[f64]) -> Result<Vec<Vec<f64>>, Error> {
+    (0..z.len())
+        .into_par_iter()
+        .map(|i| {
+            let (lo, hi) = bounds[i];
+            let h = if problem.parameters[i].log { 1e-2 } else { 2e-3 };
+            let h = if z[i] + h > hi { -h.min(z[i] - lo).max(h * 1e-3) } else { h };
+            let mut zi = z.to_vec();
+            zi[i] += h;
+            let v = problem.simulate(&scale.to_x(&zi))?;
+            Ok(residuals(problem, &v).iter().zip(r).map(|(a, b)| (a - b) / h).collect())
+        })
+        .collect()
+}
+
+/// `JᵀJ` (row-major `k × k`) and `Jᵀr` from Jacobian columns.
+fn normal_equations(jac: &[Vec<f64>], r: &[f64]) -> (Vec<f64>, Vec<f64>) {
+    let k = jac.len();
+    let mut jtj = vec![0.0; k * k];
+    for i in 0..k {
+        for j in 0..=i {
+            let v: f64 = jac[i].iter().zip(&jac[j]).map(|(a, b)| a * b).sum();
+            jtj[i * k + j] = v;
+            jtj[j * k + i] = v;
+        }
+    }
+    let jtr = jac.iter().map(|c| c.iter().zip(r).map(|(a, b)| a * b).sum()).collect();
+    (jtj, jtr)
+}
+
+/// Solves `a x = b` for symmetric positive semi-definite `a` through its eigen-decomposition
+/// (directions with eigenvalues below `1e-12` of the largest are left out).
+fn solve_symmetric(a: &[f64], b: &[f64], k: usize) -> Result<Vec<f64>, Error> {
+    let (values, vectors) = sym_eigen(a, k)?;
+    let top = values.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    let mut x = vec![0.0; k];
+    for m in 0..k {
+        if values[m] > 1e-12 * top {
+            let c: f64 = (0..k).map(|i| vectors[i * k + m] * b[i]).sum::<f64>() / values[m];
+            for i in 0..k {
+                x[i] += c * vectors[i * k + m];
+            }
+        }
+    }
+    Ok(x)
+}
+
+/// Inverse (infinite diagonal along null directions) and `ln det` of a symmetric `k × k`.
+fn inverse_and_log_det(a: &[f64], k: usize) -> Result<(Vec<f64>, f64), Error> {
+    let (values, vectors) = sym_eigen(a, k)?;
+    let top = values.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    let mut inv = vec![0.0; k * k];
+    let mut ln_det = 0.0;
+    for m in 0..k {
+        let null = !(values[m] > 1e-10 * top);
+        ln_det += if null { f64::NEG_INFINITY } else { values[m].ln() };
+        for i in 0..k {
+            for j in 0..k {
+                inv[i * k + j] += if null { if vectors[i * k + m] != 0.0 && i == j { f64::INFINITY } else { 0.0 } } else { vectors[i * k + m] * vectors[j * k + m] / values[m] };
+            }
+        }
+    }
+    Ok((inv, ln_det))
+}
+
+/// Lag-1 autocorrelation of the residual over consecutive weighted points (-).
+pub fn lag1(r: &[f64], weights: &[f64]) -> f64 {
+    let v: Vec<f64> = r.iter().zip(weights).filter(|(_, w)| **w > 0.0).map(|(r, _)| *r).collect();
+    if v.len() < 3 {
+        return 0.0;
+    }
+    let mean = v.iter().sum::<f64>() / v.len() as f64;
+    let var: f64 = v.iter().map(|x| (x - mean).powi(2)).sum();
+    if var <= 0.0 {
+        return 0.0;
+    }
+    v.windows(2).map(|w| (w[0] - mean) * (w[1] - mean)).sum::<f64>() / var
+}
