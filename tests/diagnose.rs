@@ -75,18 +75,17 @@ fn print_outcome(name: &str, d: &Diagnosis, seconds: f64) {
     for c in &d.candidates {
         match &c.fit {
             Some(f) => println!(
-                "  {:30} screen {:.2} | RMSE {:.2} -> {:.2} mV, hold-out {:.2} -> {:.2} mV | ΔBIC {:8.1} | clears {} | {:.1} s",
+                "  {:30} | RMSE {:.2} -> {:.2} mV, hold-out {:.2} -> {:.2} mV | ΔBIC {:8.1} | clears {} | {:.1} s",
                 c.name,
-                c.screen_score,
                 d.baseline.rmse_all * 1e3,
                 f.rmse_all * 1e3,
                 d.baseline.rmse_holdout * 1e3,
                 f.rmse_holdout * 1e3,
-                c.delta_bic,
+                c.comparison.delta_bic,
                 c.clears_margins,
                 f.seconds
             ),
-            None => println!("  {:30} screen {:.2} | {}", c.name, c.screen_score, c.note.clone().unwrap_or_default()),
+            None => println!("  {:30} | {}", c.name, c.note.clone().unwrap_or_default()),
         }
     }
 }
@@ -165,7 +164,7 @@ fn concealed_lithium_inventory_loss_on_constant_current() {
     let truth = p.negative.initial_concentration;
     let rec = recording("lithium_inventory", ModelKind::Spm, Submodels::default(), p, constant_current(5.0, 45.0), 0.002, 5, false);
     let d = run("lithium_inventory", &rec, ModelKind::Spm);
-    let fitted = assert_found(&d, Candidate::Stoichiometry);
+    let fitted = assert_found(&d, Candidate::LithiumInventory);
     assert!((value(&fitted, "negative.initial_concentration") / truth - 1.0).abs() < 0.01);
 }
 
@@ -216,7 +215,7 @@ fn two_concealed_effects_are_named_in_successive_rounds() {
     assert_found(&rounds[0], Candidate::SeriesResistance);
     // The second effect is smaller (2.2 mV RMSE over 1 mV noise): it must bring the RMSE to
     // the noise level.
-    let fitted = assert_found_cutting(&rounds[1], Candidate::Stoichiometry, 2.0);
+    let fitted = assert_found_cutting(&rounds[1], Candidate::LithiumInventory, 2.0);
     assert!(rounds[1].best().unwrap().fit.as_ref().unwrap().rmse_all < 1.1e-3);
     assert!((value(&fitted, "cell.contact_resistance") / 0.01 - 1.0).abs() < 0.02);
     assert!((value(&fitted, "negative.initial_concentration") / truth - 1.0).abs() < 0.01);

@@ -246,7 +246,7 @@ impl Candidate {
                 }
                 spec.submodels.rc = true;
                 (
-                    vec![FitParameter::linear("cell.rc_resistance", 5e-3, 0.0, 0.1), FitParameter::log("cell.rc_capacitance", 100.0, 0.01, 1e6)],
+                    vec![FitParameter::linear("cell.rc_resistance", 5e-3, 0.0, 0.1), FitParameter::log("cell.rc_capacitance", 1000.0, 1.0, 1e6)],
                     "series RC submodel on".into(),
                 )
             }
@@ -313,6 +313,19 @@ impl Candidate {
             }
             Candidate::Electrolyte => None,
         }
+    }
+
+    /// Why fitted values describe dynamics faster than the recording's sampling can resolve
+    /// (an RC element whose time constant is shorter than the median time step cannot be
+    /// told from a series resistance).
+    pub fn unresolved(self, names: &[String], values: &[f64], rec: &Recording) -> Option<String> {
+        if self != Candidate::RcDynamics {
+            return None;
+        }
+        let get = |path: &str| names.iter().position(|n| n == path).map(|k| values[k]);
+        let tau = get("cell.rc_resistance")? * get("cell.rc_capacitance")?;
+        let step = rec.stats(1.0).median_step;
+        (tau < step).then(|| format!("time constant {tau:.3} s is shorter than the {step:.2} s sampling step: unresolved, it acts as a series resistance"))
     }
 
     /// A more specific name from the fitted values where the candidate has one (which

@@ -192,6 +192,10 @@ impl Diagnosis {
     }
 }
 
+fn mv(v: f64) -> String {
+    format!("{:.2} mV", v * 1e3)
+}
+
 /// The state of charge (-) of `p`'s initial concentrations on its stoichiometry window, and
 /// the one whose open-circuit voltage is `v` (V); both within [0, 1].
 fn soc_starts(p: &ParameterSet, v: f64) -> Vec<f64> {
@@ -339,11 +343,16 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
     let fitted_paths: Vec<String> = warm.iter().map(|p| p.path.clone()).collect();
     let n_train = split.train_points();
 
+    // The most any candidate can remove is what lies above the noise: when that is below
+    // the size floor, nothing can be named and no candidate is refitted.
+    let room = (baseline.rmse_holdout.powi(2) - noise * noise).max(0.0).sqrt();
+    let no_room = room < options.margins.size_floor(noise);
     let plan: Vec<(Candidate, Result<candidates::Augmentation, String>)> = Candidate::ALL
         .iter()
         .take(options.max_refits)
         .map(|&c| {
             let aug = match c.not_identifiable(&data, &features) {
+                _ if no_room => Err(format!("not refitted: the user's model leaves {} RMS above the noise, less than the {} a named effect must remove", mv(room), mv(options.margins.size_floor(noise)))),
                 Some(why) => Err(format!("not identifiable from this recording: {why}")),
                 None => c.augment(&options.spec, base, &fitted_paths).ok_or_else(|| "not applicable to this model".to_string()),
             };
@@ -386,7 +395,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
                         // Plausibility of the candidate's own values, not the baseline's.
                         let (names, values): (Vec<String>, Vec<f64>) =
                             f.names.iter().zip(&f.values).filter(|(n, _)| !baseline.names.contains(n)).map(|(n, v)| (n.clone(), *v)).unzip();
-                        out.implausible = c.implausible(&names, &values, base);
+                        out.implausible = c.implausible(&names, &values, base).or_else(|| c.unresolved(&names, &values, &data));
                         out.named = out.clears_margins && out.implausible.is_none();
                         out.name = c.named_by_values(&f.names, &f.values, base);
                         out.fit = Some(f);

@@ -139,7 +139,15 @@ pub fn fit_and_score(
     }
     let initial = vec![problem.initial()];
     let starts = if starts.is_empty() { &initial[..] } else { starts };
-    let fits: Vec<Result<LeastSquaresFit, Error>> = starts.par_iter().map(|x0| levenberg_marquardt(&problem, x0, settings.lm)).collect();
+    // The first start; the others only when it fails, stops on its cap or ends on a bound.
+    let mut fits: Vec<Result<LeastSquaresFit, Error>> = vec![levenberg_marquardt(&problem, &starts[0], settings.lm)];
+    let doubtful = match &fits[0] {
+        Ok(f) => !f.converged || f.on_bound.iter().any(|b| *b),
+        Err(_) => true,
+    };
+    if doubtful {
+        fits.extend(starts[1..].par_iter().map(|x0| levenberg_marquardt(&problem, x0, settings.lm)).collect::<Vec<_>>());
+    }
     let mut best: Option<LeastSquaresFit> = None;
     let mut error = None;
     for f in fits {

@@ -166,7 +166,7 @@ fn truncated(f: &FitOutcome) -> &'static str {
 }
 
 /// The verdict sentence(s), first in the summary.
-fn verdict_in_words(d: &Diagnosis) -> String {
+pub fn verdict_in_words(d: &Diagnosis) -> String {
     let b = &d.baseline;
     let find = |c: Candidate| d.candidates.iter().find(|o| o.candidate == c);
     let floor = d.margins.size_floor(d.noise);
