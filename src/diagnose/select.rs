@@ -44,9 +44,10 @@ pub struct Margins {
 }
 
 impl Default for Margins {
-    /// ΔBIC > 10, a hold-out cut of 10 %, and at least 3x the noise and 0.3 mV removed.
+    /// ΔBIC > 10, a hold-out cut of 10 %, and at least the noise level (and 0.3 mV) removed:
+    /// an effect smaller in RMS than the recording's own noise is not worth a name.
     fn default() -> Self {
-        Self { min_delta_bic: 10.0, min_holdout_gain: 0.1, noise_multiple: 3.0, voltage_floor: 3e-4 }
+        Self { min_delta_bic: 10.0, min_holdout_gain: 0.1, noise_multiple: 1.0, voltage_floor: 3e-4 }
     }
 }
 
