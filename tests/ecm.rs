@@ -39,6 +39,7 @@ fn run(model: &Ecm, protocol: &Protocol, t_eval: Vec<f64>, keep_states: bool) ->
         keep_states,
         cutoffs: (2.5, 4.3),
         capacity: model.params().capacity,
+        charge_at_outputs: true,
     };
     simulate(model, &mut ws, protocol, &opts, None).unwrap()
 }
