@@ -18,6 +18,8 @@ pub struct SweepOutcome {
     pub rebuilds: usize,
     pub seconds: f64,
     pub files: Vec<PathBuf>,
+    /// Warnings also written into `sweep.json` (designs that failed).
+    pub warnings: Vec<String>,
 }
 
 
@@ -41,13 +43,29 @@ pub fn run_sweep(study: &Study) -> Result<SweepOutcome, Error> {
             latin_hypercube(&lower, &upper, n, sweep.seed)
         }
     };
+    let out = study.output_dir()?;
     let start = Instant::now();
     let baseline_x = study.baseline()?;
     let baseline = problem.evaluate(&baseline_x)?;
     let points = evaluate_all(&problem, &candidates);
     let seconds = start.elapsed().as_secs_f64();
-    let dir = &study.output.dir;
-    std::fs::create_dir_all(dir).map_err(Error::io(dir))?;
+    let failed: Vec<&SweepPoint> = points.iter().filter(|p| p.metrics.is_none()).collect();
+    if let Some(first) = failed.first().filter(|_| failed.len() == points.len()) {
+        return Err(Error::InvalidSetting {
+            field: "sweep".into(),
+            reason: format!(
+                "all {} designs failed (nothing written); the first, at {:?}: {}",
+                points.len(),
+                first.x,
+                first.error.as_deref().unwrap_or("no reason given")
+            ),
+        });
+    }
+    let mut warnings = Vec::new();
+    if !failed.is_empty() {
+        warnings.push(format!("{} of {} designs failed (error column of sweep.csv; blank in the plots)", failed.len(), points.len()));
+    }
+    let dir = out.path();
     let mut files = Vec::new();
 
     let names: Vec<&str> = study.variables.iter().map(|v| v.path.as_str()).collect();
@@ -76,7 +94,7 @@ pub fn run_sweep(study: &Study) -> Result<SweepOutcome, Error> {
     crate::error::write_file(&csv_path, csv)?;
     files.push(csv_path);
     let json_path = dir.join("sweep.json");
-    let json = serde_json::json!({ "study": study.name, "variables": names, "baseline": baseline, "points": points });
+    let json = serde_json::json!({ "study": study.name, "variables": names, "baseline": baseline, "warnings": warnings, "points": points });
     crate::error::write_file(&json_path, serde_json::to_string_pretty(&json).unwrap_or_default())?;
     files.push(json_path);
 
@@ -107,5 +125,6 @@ pub fn run_sweep(study: &Study) -> Result<SweepOutcome, Error> {
         }
         files.push(path);
     }
-    Ok(SweepOutcome { points, baseline, rebuilds: problem.rebuild_count(), seconds, files })
+    let files = out.commit(&files)?;
+    Ok(SweepOutcome { points, baseline, rebuilds: problem.rebuild_count(), seconds, files, warnings })
 }
