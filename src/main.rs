@@ -352,8 +352,8 @@ fn run(cli: Cli) -> Result<(), Error> {
             let study = Study::from_file(&study)?.with_overrides(overrides.set)?;
             let out = run_sweep(&study)?;
             warn(&out.warnings);
-            let ok: Vec<_> = out.points.iter().filter_map(|p| p.metrics.map(|m| (p, m))).collect();
-            let failed = out.points.len() - ok.len();
+            let ok: Vec<_> = out.points.iter().filter_map(|p| p.metrics.map(|m| (p, m))).filter(|(_, m)| !cellstudio::study::degenerate(m, &out.baseline)).collect();
+            let failed = out.points.iter().filter(|p| p.metrics.is_none()).count();
             println!("study            {}", study.name);
             println!("designs          {} evaluated ({failed} failed) in {:.2} s, {:.0} designs/s, {} model builds", out.points.len(), out.seconds, out.points.len() as f64 / out.seconds, out.rebuilds);
             println!("baseline         {:.1} W h/kg, {:.1} W h/L", out.baseline.gravimetric_energy_density, out.baseline.volumetric_energy_density);

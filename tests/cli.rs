@@ -275,7 +275,7 @@ fn messages_name_the_flag_the_user_wrote() {
     let s = Scratch::new("flags");
     fails_with(&run(&s.0, &["simulate", "--c-rate", "0"]), &["--c-rate", "must be positive"]);
     fails_with(&run(&s.0, &["eis", "--soc", "1.5"]), &["--soc", "1.5"]);
-    fails_with(&run(&s.0, &["simulate", "--contact-resistance", "-1"]), &["--contact-resistance"]);
+    fails_with(&run(&s.0, &["simulate", "--contact-resistance=-1"]), &["--contact-resistance"]);
 }
 
 #[test]
@@ -296,4 +296,14 @@ fn set_overrides_one_parameter_and_errors_name_the_key() {
     fails_with(&run(&s.0, &["sweep", &study, "--set", "negative.porosityy=0.3"]), &["--set negative.porosityy"]);
     let study = fit_study(&s, "");
     fails_with(&run(&s.0, &["fit", study.to_str().unwrap(), "--set", "cell.nominal_capacityy=5"]), &["--set cell.nominal_capacityy"]);
+}
+
+#[test]
+fn a_sweep_with_no_valid_design_fails_and_writes_nothing() {
+    let s = Scratch::new("sweep");
+    // Negative electrodes of 1-2 nm store no energy.
+    let text = DESIGN.replace("positive.thickness", "negative.thickness").replace("LOWER", "1e-9").replace("UPPER", "2e-9");
+    let study = s.write("design.toml", &text.replace("OBJECTIVES", r#""gravimetric_energy_density""#));
+    fails_with(&run(&s.0, &["sweep", study.to_str().unwrap()]), &["no valid design", "3 store less than 0.001 of the baseline's energy"]);
+    assert_eq!(s.entries(), vec!["design.toml"]);
 }

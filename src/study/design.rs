@@ -123,10 +123,13 @@ pub fn run_design(study: &Study) -> Result<DesignOutcome, Error> {
     let optimised = problem.evaluate(&result.x)
         .map_err(|e| Error::InvalidSetting { field: "design".into(), reason: format!("no valid design: the optimum at {:?} fails: {e}", result.x) })?;
     let value = optimised.get(metric);
-    if !(value > 0.0 && value.is_finite()) {
+    if !(value > 0.0 && value.is_finite()) || super::degenerate(&optimised, &initial) {
         return Err(Error::InvalidSetting {
             field: "design".into(),
-            reason: format!("no valid design: the optimum at {:?} has {} = {value} (degenerate); check the variables' bounds", result.x, metric.label()),
+            reason: format!(
+                "no valid design: the optimum at {:?} stores {} W h against the baseline's {} W h ({} = {}, degenerate); check the variables' bounds",
+                result.x, crate::error::number(optimised.energy), crate::error::number(initial.energy), metric.label(), crate::error::number(value)
+            ),
         });
     }
     let seconds = start.elapsed().as_secs_f64();

@@ -374,6 +374,16 @@ impl Study {
     }
 }
 
+/// Fraction of the baseline's energy below which a design counts as degenerate (it stores
+/// practically nothing, e.g. a 1 nm electrode).
+pub const DEGENERATE_ENERGY_FRACTION: f64 = 1e-3;
+
+/// Whether design metrics `m` are no result: non-finite, or an energy (W h) below
+/// [`DEGENERATE_ENERGY_FRACTION`] of the baseline's.
+pub fn degenerate(m: &crate::problem::design::DesignMetrics, baseline: &crate::problem::design::DesignMetrics) -> bool {
+    !(m.energy.is_finite() && m.energy > DEGENERATE_ENERGY_FRACTION * baseline.energy)
+}
+
 /// Warnings for values within 1e-6 of the bound range of a bound: `what` names the point
 /// (e.g. "the optimum").
 pub fn at_bound_warnings(what: &str, names: &[String], x: &[f64], lower: &[f64], upper: &[f64]) -> Vec<String> {

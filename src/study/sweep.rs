@@ -49,21 +49,27 @@ pub fn run_sweep(study: &Study) -> Result<SweepOutcome, Error> {
     let baseline = problem.evaluate(&baseline_x)?;
     let points = evaluate_all(&problem, &candidates);
     let seconds = start.elapsed().as_secs_f64();
-    let failed: Vec<&SweepPoint> = points.iter().filter(|p| p.metrics.is_none()).collect();
-    if let Some(first) = failed.first().filter(|_| failed.len() == points.len()) {
+    // A design that failed, or stores no energy, is no result.
+    let valid = |p: &SweepPoint| p.metrics.is_some_and(|m| !super::degenerate(&m, &baseline));
+    let failed = points.iter().filter(|p| p.metrics.is_none()).count();
+    let degenerate = points.iter().filter(|p| p.metrics.is_some() && !valid(p)).count();
+    if !points.iter().any(valid) {
+        let reason = points.iter().find_map(|p| p.error.as_ref().map(|e| format!("; the first failure, at {:?}: {e}", p.x))).unwrap_or_default();
         return Err(Error::InvalidSetting {
             field: "sweep".into(),
             reason: format!(
-                "all {} designs failed (nothing written); the first, at {:?}: {}",
+                "no valid design (nothing written): {failed} of {} designs failed and {degenerate} store less than {} of the baseline's energy{reason}",
                 points.len(),
-                first.x,
-                first.error.as_deref().unwrap_or("no reason given")
+                super::DEGENERATE_ENERGY_FRACTION
             ),
         });
     }
     let mut warnings = Vec::new();
-    if !failed.is_empty() {
-        warnings.push(format!("{} of {} designs failed (error column of sweep.csv; blank in the plots)", failed.len(), points.len()));
+    if failed > 0 {
+        warnings.push(format!("{failed} of {} designs failed (error column of sweep.csv; blank in the plots)", points.len()));
+    }
+    if degenerate > 0 {
+        warnings.push(format!("{degenerate} of {} designs store less than {} of the baseline's energy (degenerate)", points.len(), super::DEGENERATE_ENERGY_FRACTION));
     }
     let dir = out.path();
     let mut files = Vec::new();
