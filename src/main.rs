@@ -37,6 +37,14 @@ struct Overrides {
     set: Vec<Override>,
 }
 
+impl Overrides {
+    /// Whether `path` is overridden (`--set cell.contact_resistance=...` switches the
+    /// contact-resistance submodel on, as `--contact-resistance` does).
+    fn sets(&self, path: &str) -> bool {
+        self.set.iter().any(|o| o.path == path)
+    }
+}
+
 #[derive(Subcommand)]
 enum Command {
     /// Simulate a discharge or a protocol and write CSV + voltage plot.
@@ -312,7 +320,7 @@ fn run(cli: Cli) -> Result<(), Error> {
             set_contact_resistance(&mut p, contact_resistance)?;
             let run = eis::EisRun {
                 kind: model,
-                submodels: Submodels { contact_resistance: contact_resistance.is_some(), ..Default::default() },
+                submodels: Submodels { contact_resistance: contact_resistance.is_some() || overrides.sets("cell.contact_resistance"), ..Default::default() },
                 params: p,
                 soc,
                 frequencies,
@@ -383,7 +391,7 @@ fn run(cli: Cli) -> Result<(), Error> {
             };
             let staged = OutputDir::create(&out, &[params.as_deref(), protocol_file.as_deref()].into_iter().flatten().collect::<Vec<_>>())?;
             let dir = staged.path();
-            let submodels = Submodels { contact_resistance: contact_resistance.is_some(), thermal, ..Default::default() };
+            let submodels = Submodels { contact_resistance: contact_resistance.is_some() || overrides.sets("cell.contact_resistance"), thermal, ..Default::default() };
             let sizes = MeshSizes { x_n: mesh, x_s: mesh, x_p: mesh, r_n: mesh, r_p: mesh };
             let mut builder = ModelBuilder::new(model, submodels, sizes);
             let t_build = Instant::now();

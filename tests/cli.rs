@@ -286,6 +286,14 @@ fn set_overrides_one_parameter_and_errors_name_the_key() {
     let summary: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     let v = summary["final_voltage_V"].as_f64().unwrap();
     assert!((v - 3.4).abs() < 1e-3, "final voltage {v} V, the override was not used");
+    // Overriding the contact resistance switches its submodel on, as --contact-resistance does.
+    let energy = |args: &[&str]| -> f64 {
+        let o = run(&s.0, &[&["simulate", "--model", "spm", "--mesh", "6", "--json"], args].concat());
+        succeeds(&o);
+        serde_json::from_slice::<serde_json::Value>(&o.stdout).unwrap()["energy_Wh"].as_f64().unwrap()
+    };
+    let (plain, flag, set) = (energy(&[]), energy(&["--contact-resistance", "0.05"]), energy(&["--set", "cell.contact_resistance=0.05"]));
+    assert!(flag < 0.95 * plain && (set - flag).abs() < 1e-9 * flag, "{plain} {flag} {set}");
     fails_with(&run(&s.0, &["simulate", "--set", "positive.thicknes=7e-5"]), &["--set positive.thicknes"]);
     fails_with(&run(&s.0, &["simulate", "--set", "positive.thickness=-1"]), &["positive.thickness (from --set)", "-1"]);
     let bad = run(&s.0, &["simulate", "--set", "positive.thickness"]);
