@@ -344,6 +344,7 @@ fn run(cli: Cli) -> Result<(), Error> {
         Command::Pareto { overrides, study } => {
             let study = Study::from_file(&study)?.with_overrides(overrides.set)?;
             let out = run_pareto(&study)?;
+            warn(&out.warnings);
             println!("study            {}", study.name);
             println!("designs          {} evaluated ({} failed) in {:.2} s, {} model builds", out.evaluated, out.failed, out.seconds, out.rebuilds);
             println!("baseline         {:?}", out.baseline);

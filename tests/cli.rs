@@ -236,7 +236,9 @@ fn design_warns_when_the_optimum_sits_on_a_bound() {
     succeeds(&o);
     assert!(stderr(&o).contains("warning: the optimum has positive.thickness"), "{}", stderr(&o));
     let report = std::fs::read_to_string(s.path("out/report.md")).unwrap();
-    assert!(report.contains("bound"), "{report}");
+    assert!(report.contains("positive.thickness = 6.1e-5 at its upper bound"), "{report}");
+    // The Chen 2020 baseline (75.6 um) lies outside these bounds: a warning, not a silent start elsewhere.
+    assert!(stderr(&o).contains("the baseline's positive.thickness = 7.56e-5 lies outside its bounds"), "{}", stderr(&o));
 }
 
 #[test]

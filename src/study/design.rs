@@ -136,7 +136,8 @@ pub fn run_design(study: &Study) -> Result<DesignOutcome, Error> {
     let names: Vec<String> = study.variables.iter().map(|v| v.path.clone()).collect();
     let lower: Vec<f64> = study.variables.iter().map(|v| v.lower).collect();
     let upper: Vec<f64> = study.variables.iter().map(|v| v.upper).collect();
-    let warnings = super::at_bound_warnings("the optimum", &names, &result.x, &lower, &upper);
+    let mut warnings = study.warnings();
+    warnings.extend(super::at_bound_warnings("the optimum", &names, &result.x, &lower, &upper));
     let mut outcome =
         DesignOutcome { metric, initial_x, initial, result, optimised, rebuilds: problem.rebuild_count(), seconds, files: Vec::new(), warnings };
     write_outputs(study, &problem, &mut outcome, &method, dir.path())?;

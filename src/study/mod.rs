@@ -357,6 +357,26 @@ impl Study {
         self.variables.iter().map(|v| base.get(&v.path)).collect()
     }
 
+    /// Warnings about a valid study: baseline values outside their variable's bounds (the
+    /// search starts from the projection; the baseline is still reported as it is).
+    pub fn warnings(&self) -> Vec<String> {
+        let Ok(baseline) = self.baseline() else { return Vec::new() };
+        self.variables
+            .iter()
+            .zip(baseline)
+            .filter(|(v, b)| !(v.lower..=v.upper).contains(b))
+            .map(|(v, b)| {
+                format!(
+                    "the baseline's {} = {} lies outside its bounds [{}, {}]",
+                    v.path,
+                    crate::error::number(b),
+                    crate::error::number(v.lower),
+                    crate::error::number(v.upper)
+                )
+            })
+            .collect()
+    }
+
     /// The design problem the study describes.
     pub fn problem(&self) -> Result<DesignProblem, Error> {
         let problem = DesignProblem::new(

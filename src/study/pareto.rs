@@ -20,6 +20,8 @@ pub struct ParetoOutcome {
     pub rebuilds: usize,
     pub seconds: f64,
     pub files: Vec<PathBuf>,
+    /// Warnings also written into `pareto_front.json` (failed designs, baseline off bounds).
+    pub warnings: Vec<String>,
 }
 
 /// Runs NSGA-II with the study's `[optimiser]` table as [`Nsga2Options`].
@@ -63,8 +65,9 @@ pub fn run_pareto(study: &Study) -> Result<ParetoOutcome, Error> {
             reason: format!("no valid design: {failed} of {} designs failed (nothing written)", archive.len()),
         });
     }
+    let mut warnings = study.warnings();
     if failed > 0 {
-        eprintln!("warning: {failed} of {} designs failed", archive.len());
+        warnings.push(format!("{failed} of {} designs failed", archive.len()));
     }
     let dir = out.path();
     let names: Vec<String> = study.variables.iter().map(|v| v.path.clone()).collect();
@@ -79,7 +82,7 @@ pub fn run_pareto(study: &Study) -> Result<ParetoOutcome, Error> {
     let mut files = Vec::new();
     write_output(dir, "pareto_front.csv", csv, &mut files)?;
     let json = serde_json::json!({ "study": study.name, "variables": names, "objectives": objectives,
-        "baseline": baseline, "front": sorted, "evaluated": archive.len(), "failed": failed, "seconds": seconds });
+        "baseline": baseline, "front": sorted, "evaluated": archive.len(), "failed": failed, "warnings": warnings, "seconds": seconds });
     write_output(dir, "pareto_front.json", serde_json::to_string_pretty(&json).unwrap_or_default(), &mut files)?;
     let plot = dir.join("pareto_front.svg");
     let pts = |set: &[Individual]| set.iter().map(|i| (i.f[0], i.f[1])).collect::<Vec<_>>();
@@ -100,5 +103,6 @@ pub fn run_pareto(study: &Study) -> Result<ParetoOutcome, Error> {
         rebuilds: problem.rebuild_count(),
         seconds,
         files,
+        warnings,
     })
 }

@@ -64,7 +64,7 @@ pub fn run_sweep(study: &Study) -> Result<SweepOutcome, Error> {
             ),
         });
     }
-    let mut warnings = Vec::new();
+    let mut warnings = study.warnings();
     if failed > 0 {
         warnings.push(format!("{failed} of {} designs failed (error column of sweep.csv; blank in the plots)", points.len()));
     }
