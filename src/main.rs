@@ -403,7 +403,11 @@ fn run(cli: Cli) -> Result<(), Error> {
             let mut sol = None;
             for _ in 0..repeat.max(1) {
                 let t = Instant::now();
-                sol = Some(simulate(built.model.as_ref(), &mut built.workspace, &protocol, &opts, None)?);
+                sol = Some(simulate(built.model.as_ref(), &mut built.workspace, &protocol, &opts, None).map_err(|e| match &protocol_file {
+                    // Name what the user wrote: the rate, or the protocol file.
+                    None => Error::InvalidSetting { field: "--c-rate".into(), reason: format!("a {c_rate} C discharge failed: {e}") },
+                    Some(path) => Error::InvalidSetting { field: "--protocol".into(), reason: format!("{} failed: {e}", path.display()) },
+                })?);
                 times.push(t.elapsed().as_secs_f64());
             }
             let sol = sol.expect("at least one run");

@@ -277,6 +277,9 @@ fn messages_name_the_flag_the_user_wrote() {
     let s = Scratch::new("flags");
     fails_with(&run(&s.0, &["simulate", "--c-rate", "0"]), &["--c-rate", "must be positive"]);
     fails_with(&run(&s.0, &["eis", "--soc", "1.5"]), &["--soc", "1.5"]);
+    // 50C takes the SPMe below its cut-off at once: the message leads with the rate.
+    fails_with(&run(&s.0, &["simulate", "--c-rate", "50", "--mesh", "5"]), &["`--c-rate`", "a 50 C discharge failed", "cut-off"]);
+    assert!(!s.path("out").exists(), "a failed simulation left an output folder");
     fails_with(&run(&s.0, &["simulate", "--contact-resistance=-1"]), &["--contact-resistance"]);
 }
 
