@@ -291,6 +291,14 @@ fn set_overrides_one_parameter_and_errors_name_the_key() {
     let summary: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     let v = summary["final_voltage_V"].as_f64().unwrap();
     assert!((v - 3.4).abs() < 1e-3, "final voltage {v} V, the override was not used");
+    // A parameter file may name a base set and override a few values.
+    s.write("mine.toml", "base = \"chen2020\"\n[cell]\nlower_cutoff = 3.3\n");
+    let o = run(&s.0, &["simulate", "--model", "spm", "--mesh", "6", "--params", "mine.toml", "--json"]);
+    succeeds(&o);
+    let v = serde_json::from_slice::<serde_json::Value>(&o.stdout).unwrap()["final_voltage_V"].as_f64().unwrap();
+    assert!((v - 3.3).abs() < 1e-3, "final voltage {v} V, the file's override was not used");
+    s.write("typo.toml", "base = \"chen2020\"\n[cell]\nlower_cutof = 3.3\n");
+    fails_with(&run(&s.0, &["simulate", "--params", "typo.toml"]), &["typo.toml cell.lower_cutof"]);
     // Overriding the contact resistance switches its submodel on, as --contact-resistance does.
     let energy = |args: &[&str]| -> f64 {
         let o = run(&s.0, &[&["simulate", "--model", "spm", "--mesh", "6", "--json"], args].concat());

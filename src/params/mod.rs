@@ -15,6 +15,6 @@ pub mod soc;
 pub use chen2020::chen2020;
 pub use function::Function1D;
 pub use mass::CellBudget;
-pub use overrides::{Override, apply_overrides};
+pub use overrides::{Override, apply_overrides, from_base_table};
 pub use soc::{StoichiometryWindow, set_initial_soc, stoichiometry_window};
 pub use set::{Cell, Electrode, Electrolyte, FARADAY, GAS_CONSTANT, ParameterSet, Separator, Thermal};
