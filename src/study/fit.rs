@@ -140,16 +140,16 @@ impl FitStudy {
     /// (synthetic) file, never to a recording given with `--data`.
     pub fn noise_note(&self, data: Option<&Path>) -> Option<String> {
         let sigma = self.data.synthetic_noise;
+        // In mV, rounded to the microvolt.
+        let mv = (sigma * 1e6).round() / 1e3;
         (sigma > 0.0).then(|| match data {
             None => format!(
-                "synthetic Gaussian noise of {} mV (seed {}) was added to the voltage of `{}` (`data.synthetic_noise`)",
-                sigma * 1e3,
+                "synthetic Gaussian noise of {mv} mV (seed {}) was added to the voltage of `{}` (`data.synthetic_noise`)",
                 self.data.noise_seed,
                 self.data.file.display()
             ),
             Some(d) => format!(
-                "the study's `data.synthetic_noise` ({} mV) was not applied: `{}` (--data) is fitted as recorded",
-                sigma * 1e3,
+                "the study's `data.synthetic_noise` ({mv} mV) was not applied: `{}` (--data) is fitted as recorded",
                 d.display()
             ),
         })
