@@ -274,6 +274,22 @@ mod tests {
     }
 
     #[test]
+    fn a_folder_in_the_way_of_an_output_fails_before_anything_moves() {
+        let root = scratch("dir");
+        let target = root.join("out");
+        std::fs::create_dir_all(target.join("report.md")).unwrap();
+        let out = OutputDir::create(&target, &[]).unwrap();
+        crate::error::write_file(&out.path().join("design.json"), "{}").unwrap();
+        crate::error::write_file(&out.path().join("report.md"), "r").unwrap();
+        let e = out.commit(&[]).unwrap_err().to_string();
+        assert!(e.contains("report.md"), "{e}");
+        assert!(!target.join("design.json").exists(), "half the results were moved in");
+        let names: Vec<_> = std::fs::read_dir(&root).unwrap().map(|e| e.unwrap().file_name()).collect();
+        assert_eq!(names, vec![std::ffi::OsString::from("out")]);
+        std::fs::remove_dir_all(&root).unwrap();
+    }
+
+    #[test]
     fn canonical_handles_missing_tails_and_dot_dot() {
         let root = scratch("canon");
         let a = canonical(&root.join("x/../y/z"));
