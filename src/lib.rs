@@ -11,6 +11,7 @@ pub mod error;
 pub mod geometry;
 pub mod models;
 pub mod optim;
+pub mod output;
 pub mod pareto;
 pub mod params;
 pub mod problem;

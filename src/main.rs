@@ -4,11 +4,12 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 
-use clap::{Parser, Subcommand};
+use clap::{Args, Parser, Subcommand};
 
 use cellstudio::geometry::{MeshSizes, ModelBuilder};
 use cellstudio::models::{ModelKind, Submodels};
-use cellstudio::params::ParameterSet;
+use cellstudio::output::OutputDir;
+use cellstudio::params::{Override, ParameterSet, apply_overrides};
 use cellstudio::protocol::Protocol;
 use cellstudio::report::plot::{Series, line_plot};
 use cellstudio::simulation::{SimOptions, simulate};
@@ -28,10 +29,28 @@ struct Cli {
     command: Command,
 }
 
+/// `--set PATH=VALUE` overrides of the parameter set (repeatable).
+#[derive(Args, Clone, Debug, Default)]
+struct Overrides {
+    /// Override one parameter in SI units, e.g. `--set negative.diffusivity=3e-14` (repeatable).
+    #[arg(long = "set", value_name = "PATH=VALUE")]
+    set: Vec<Override>,
+}
+
+impl Overrides {
+    /// Whether `path` is overridden (`--set cell.contact_resistance=...` switches the
+    /// contact-resistance submodel on, as `--contact-resistance` does).
+    fn sets(&self, path: &str) -> bool {
+        self.set.iter().any(|o| o.path == path)
+    }
+}
+
 #[derive(Subcommand)]
 enum Command {
     /// Simulate a discharge or a protocol and write CSV + voltage plot.
     Simulate {
+        #[command(flatten)]
+        overrides: Overrides,
         /// spm, spme or dfn.
         #[arg(long, default_value = "spme")]
         model: ModelKind,
@@ -65,16 +84,22 @@ enum Command {
     },
     /// Run a design study end to end: optimise its objective and write the report.
     Design {
+        #[command(flatten)]
+        overrides: Overrides,
         /// Study file, e.g. designs/gravimetric_chen2020.toml.
         study: PathBuf,
     },
     /// Search the non-dominated front of a multi-objective study (NSGA-II) and plot it.
     Pareto {
+        #[command(flatten)]
+        overrides: Overrides,
         /// Study file with two or more objectives, e.g. designs/energy_vs_power_chen2020.toml.
         study: PathBuf,
     },
     /// Fit model parameters to a recording: optimise, report standard errors and plots.
     Fit {
+        #[command(flatten)]
+        overrides: Overrides,
         /// Fitting study file, e.g. fits/spm_contact_resistance.toml.
         study: PathBuf,
         /// Recording CSV (overrides the study's `data.file`).
@@ -83,6 +108,8 @@ enum Command {
     },
     /// Sample the posterior of a fitting study's parameters (fit first, then MCMC).
     Sample {
+        #[command(flatten)]
+        overrides: Overrides,
         /// Fitting study file with a `[sampler]` table, e.g. fits/spm_contact_resistance.toml.
         study: PathBuf,
         /// Recording CSV (overrides the study's `data.file`).
@@ -92,6 +119,8 @@ enum Command {
     /// Impedance spectrum of a model at a state of charge (CSV + Nyquist plot), optionally
     /// fitted to a measured spectrum.
     Eis {
+        #[command(flatten)]
+        overrides: Overrides,
         /// spm, spme or dfn.
         #[arg(long, default_value = "spm")]
         model: ModelKind,
@@ -122,6 +151,8 @@ enum Command {
     /// Locate where a model and a recording disagree, name the missing physics, refit the
     /// candidates and write a report (Markdown, JSON, plots).
     Diagnose {
+        #[command(flatten)]
+        overrides: Overrides,
         /// The model to test: spm, spme or dfn.
         #[arg(long, default_value = "spm")]
         model: ModelKind,
@@ -155,6 +186,8 @@ enum Command {
     },
     /// Evaluate a study's grid sweep (in parallel) and write CSV, JSON and density plots.
     Sweep {
+        #[command(flatten)]
+        overrides: Overrides,
         /// Study file, e.g. designs/gravimetric_chen2020.toml.
         study: PathBuf,
     },
@@ -175,11 +208,42 @@ fn read_toml<T: serde::de::DeserializeOwned>(path: &PathBuf) -> Result<T, Error>
     toml::from_str(&text).map_err(|e| Error::Parse { path: path.display().to_string(), message: e.to_string() })
 }
 
+/// The parameter set from `--params` (or the embedded default) with `--set` overrides.
+fn load_parameters(params: Option<&std::path::Path>, overrides: &Overrides) -> Result<ParameterSet, Error> {
+    let mut p = ParameterSet::from_file_or_default(params)?;
+    apply_overrides(&mut p, &overrides.set)?;
+    Ok(p)
+}
+
+/// `--contact-resistance` (ohm), checked and applied.
+fn set_contact_resistance(p: &mut ParameterSet, r: Option<f64>) -> Result<(), Error> {
+    if let Some(r) = r {
+        if !(r >= 0.0 && r.is_finite()) {
+            return Err(Error::invalid("--contact-resistance", r, "must be a non-negative resistance (ohm)"));
+        }
+        p.cell.contact_resistance = r;
+    }
+    Ok(())
+}
+
+fn note(notes: &[String]) {
+    for n in notes {
+        eprintln!("note: {n}");
+    }
+}
+
+fn warn(warnings: &[String]) {
+    for w in warnings {
+        eprintln!("warning: {w}");
+    }
+}
+
 fn run(cli: Cli) -> Result<(), Error> {
     match cli.command {
-        Command::Diagnose { model, data, params, contact_resistance, thermal, fit, refits, start_at_rest, max_rounds, out } => {
+        Command::Diagnose { overrides, model, data, params, contact_resistance, thermal, fit, refits, start_at_rest, max_rounds, out } => {
             use cellstudio::diagnose::{DiagnoseOptions, default_fit_parameter, diagnose_rounds, report};
-            let p = ParameterSet::from_file_or_default(params.as_deref())?;
+            let p = load_parameters(params.as_deref(), &overrides)?;
+            let staged = OutputDir::create(&out, &[Some(data.as_path()), params.as_deref()].into_iter().flatten().collect::<Vec<_>>())?;
             let rec = cellstudio::data::Recording::from_csv(&data)?;
             let submodels = Submodels { contact_resistance, thermal, ..Default::default() };
             let mut options = DiagnoseOptions::new(cellstudio::problem::fitting::ModelSpec::new(model, submodels));
@@ -192,14 +256,16 @@ fn run(cli: Cli) -> Result<(), Error> {
             for (k, d) in rounds.iter().enumerate() {
                 println!("{}# Round {} of {}\n\n{}", if k > 0 { "\n" } else { "" }, k + 1, rounds.len(), report::markdown(d, &[]));
             }
-            for f in report::write(&rounds, &out)? {
+            let written = report::write(&rounds, staged.path())?;
+            for f in staged.commit(&written)? {
                 println!("wrote            {}", f.display());
             }
             Ok(())
         }
-        Command::Design { study } => {
-            let study = Study::from_file(&study)?;
+        Command::Design { overrides, study } => {
+            let study = Study::from_file(&study)?.with_overrides(overrides.set)?;
             let out = run_design(&study)?;
+            warn(&out.warnings);
             let m = out.metric;
             println!("study            {}", study.name);
             println!("objective        maximise {}", m.label());
@@ -212,9 +278,11 @@ fn run(cli: Cli) -> Result<(), Error> {
             }
             Ok(())
         }
-        Command::Fit { study, data } => {
-            let study = FitStudy::from_file(&study)?;
+        Command::Fit { overrides, study, data } => {
+            let study = FitStudy::from_file(&study)?.with_overrides(overrides.set)?;
             let out = run_fit(&study, data.as_deref())?;
+            note(&out.notes);
+            warn(&out.warnings);
             let r = &out.result;
             println!("{}", study.name);
             println!(
@@ -232,9 +300,11 @@ fn run(cli: Cli) -> Result<(), Error> {
             }
             Ok(())
         }
-        Command::Sample { study, data } => {
-            let study = FitStudy::from_file(&study)?;
+        Command::Sample { overrides, study, data } => {
+            let study = FitStudy::from_file(&study)?.with_overrides(overrides.set)?;
             let out = run_sample(&study, data.as_deref())?;
+            note(&out.notes);
+            warn(&out.warnings);
             println!("{}: {} draws per chain in {:.1} s", study.name, out.result.options.iterations, out.seconds);
             println!("{}", out.summary.table());
             for f in &out.files {
@@ -242,20 +312,24 @@ fn run(cli: Cli) -> Result<(), Error> {
             }
             Ok(())
         }
-        Command::Eis { model, soc, params, contact_resistance, frequencies, fit, parameters, optimiser, out } => {
-            let mut p = ParameterSet::from_file_or_default(params.as_deref())?;
-            if let Some(r) = contact_resistance {
-                p.cell.contact_resistance = r;
+        Command::Eis { overrides, model, soc, params, contact_resistance, frequencies, fit, parameters, optimiser, out } => {
+            if !(0.0..=1.0).contains(&soc) {
+                return Err(Error::invalid("--soc", soc, "must lie in 0..=1"));
             }
+            let frequencies = eis::frequency_grid(&frequencies)?;
+            cellstudio::optim::by_name(&optimiser, Default::default())?;
+            let mut p = load_parameters(params.as_deref(), &overrides)?;
+            set_contact_resistance(&mut p, contact_resistance)?;
             let run = eis::EisRun {
                 kind: model,
-                submodels: Submodels { contact_resistance: contact_resistance.is_some(), ..Default::default() },
+                submodels: Submodels { contact_resistance: contact_resistance.is_some() || overrides.sets("cell.contact_resistance"), ..Default::default() },
                 params: p,
                 soc,
-                frequencies: (frequencies[0], frequencies[1], frequencies[2] as usize),
+                frequencies,
                 fit: fit.map(|f| (f, parameters)),
                 optimiser,
                 out,
+                inputs: params.into_iter().collect(),
             };
             let outcome = eis::run_eis(&run)?;
             if let Some((names, x, result, seconds)) = &outcome.fit {
@@ -269,9 +343,10 @@ fn run(cli: Cli) -> Result<(), Error> {
             }
             Ok(())
         }
-        Command::Pareto { study } => {
-            let study = Study::from_file(&study)?;
+        Command::Pareto { overrides, study } => {
+            let study = Study::from_file(&study)?.with_overrides(overrides.set)?;
             let out = run_pareto(&study)?;
+            warn(&out.warnings);
             println!("study            {}", study.name);
             println!("designs          {} evaluated ({} failed) in {:.2} s, {} model builds", out.evaluated, out.failed, out.seconds, out.rebuilds);
             println!("baseline         {:?}", out.baseline);
@@ -284,11 +359,12 @@ fn run(cli: Cli) -> Result<(), Error> {
             }
             Ok(())
         }
-        Command::Sweep { study } => {
-            let study = Study::from_file(&study)?;
+        Command::Sweep { overrides, study } => {
+            let study = Study::from_file(&study)?.with_overrides(overrides.set)?;
             let out = run_sweep(&study)?;
-            let ok: Vec<_> = out.points.iter().filter_map(|p| p.metrics.map(|m| (p, m))).collect();
-            let failed = out.points.len() - ok.len();
+            warn(&out.warnings);
+            let ok: Vec<_> = out.points.iter().filter_map(|p| p.metrics.map(|m| (p, m))).filter(|(_, m)| !cellstudio::study::degenerate(m, &out.baseline)).collect();
+            let failed = out.points.iter().filter(|p| p.metrics.is_none()).count();
             println!("study            {}", study.name);
             println!("designs          {} evaluated ({failed} failed) in {:.2} s, {:.0} designs/s, {} model builds", out.points.len(), out.seconds, out.points.len() as f64 / out.seconds, out.rebuilds);
             println!("baseline         {:.1} W h/kg, {:.1} W h/L", out.baseline.gravimetric_energy_density, out.baseline.volumetric_energy_density);
@@ -303,16 +379,22 @@ fn run(cli: Cli) -> Result<(), Error> {
             }
             Ok(())
         }
-        Command::Simulate { model, c_rate, protocol, params, contact_resistance, thermal, mesh, out, repeat, json } => {
-            let mut p = ParameterSet::from_file_or_default(params.as_deref())?;
-            if let Some(r) = contact_resistance {
-                p.cell.contact_resistance = r;
+        Command::Simulate { overrides, model, c_rate, protocol: protocol_file, params, contact_resistance, thermal, mesh, out, repeat, json } => {
+            if !(c_rate > 0.0 && c_rate.is_finite()) {
+                return Err(Error::invalid("--c-rate", c_rate, "must be positive"));
             }
-            let protocol = match &protocol {
+            if mesh < 2 {
+                return Err(Error::invalid("--mesh", mesh as f64, "must be at least 2 volumes"));
+            }
+            let mut p = load_parameters(params.as_deref(), &overrides)?;
+            set_contact_resistance(&mut p, contact_resistance)?;
+            let protocol = match &protocol_file {
                 Some(path) => read_toml::<Protocol>(path)?,
                 None => Protocol::discharge(c_rate),
             };
-            let submodels = Submodels { contact_resistance: contact_resistance.is_some(), thermal, ..Default::default() };
+            let staged = OutputDir::create(&out, &[params.as_deref(), protocol_file.as_deref()].into_iter().flatten().collect::<Vec<_>>())?;
+            let dir = staged.path();
+            let submodels = Submodels { contact_resistance: contact_resistance.is_some() || overrides.sets("cell.contact_resistance"), thermal, ..Default::default() };
             let sizes = MeshSizes { x_n: mesh, x_s: mesh, x_p: mesh, r_n: mesh, r_p: mesh };
             let mut builder = ModelBuilder::new(model, submodels, sizes);
             let t_build = Instant::now();
@@ -323,16 +405,19 @@ fn run(cli: Cli) -> Result<(), Error> {
             let mut sol = None;
             for _ in 0..repeat.max(1) {
                 let t = Instant::now();
-                sol = Some(simulate(built.model.as_ref(), &mut built.workspace, &protocol, &opts, None)?);
+                sol = Some(simulate(built.model.as_ref(), &mut built.workspace, &protocol, &opts, None).map_err(|e| match &protocol_file {
+                    // Name what the user wrote: the rate, or the protocol file.
+                    None => Error::InvalidSetting { field: "--c-rate".into(), reason: format!("a {c_rate} C discharge failed: {e}") },
+                    Some(path) => Error::InvalidSetting { field: "--protocol".into(), reason: format!("{} failed: {e}", path.display()) },
+                })?);
                 times.push(t.elapsed().as_secs_f64());
             }
             let sol = sol.expect("at least one run");
             times.sort_by(f64::total_cmp);
             let median = times[times.len() / 2];
-            std::fs::create_dir_all(&out).map_err(Error::io(&out))?;
             let stem = format!("{}_simulation", model.to_string().to_lowercase());
-            let csv = out.join(format!("{stem}.csv"));
-            let svg = out.join(format!("{stem}_voltage.svg"));
+            let csv = dir.join(format!("{stem}.csv"));
+            let svg = dir.join(format!("{stem}_voltage.svg"));
             sol.write_csv(&csv)?;
             let label = format!("{model} {}", p.name);
             line_plot(&svg, "Terminal voltage", "Time (s)", "Voltage (V)", &[Series { label, x: &sol.time, y: &sol.voltage }])?;
@@ -340,7 +425,10 @@ fn run(cli: Cli) -> Result<(), Error> {
             // (the timed runs do not pay for the copies).
             let kept = SimOptions { keep_states: true, ..opts.clone() };
             let with_states = simulate(built.model.as_ref(), &mut built.workspace, &protocol, &kept, None)?;
-            let fields = cellstudio::report::fields::write_fields(built.model.as_ref(), &with_states, &out, &stem)?;
+            let fields = cellstudio::report::fields::write_fields(built.model.as_ref(), &with_states, dir, &stem)?;
+            let mut written = staged.commit(&[vec![csv, svg], fields].concat())?;
+            let fields = written.split_off(2);
+            let (csv, svg) = (written[0].clone(), written[1].clone());
             if json {
                 let summary = serde_json::json!({
                     "model": model.to_string(),

@@ -45,6 +45,15 @@ pub struct CostValue {
 const LN_2PI: f64 = 1.837_877_066_409_345_5;
 
 impl CostKind {
+    /// The keys a `[cost]` table of this kind may hold.
+    pub fn keys(&self) -> &'static [&'static str] {
+        match self {
+            CostKind::Sse | CostKind::Rmse => &["kind"],
+            CostKind::Minkowski { .. } | CostKind::SumOfPower { .. } => &["kind", "p"],
+            CostKind::GaussianLogLikelihood { .. } | CostKind::Map { .. } => &["kind", "sigma"],
+        }
+    }
+
     /// Checks the cost's settings; errors name the field.
     pub fn validate(&self) -> Result<(), Error> {
         match *self {

@@ -44,8 +44,8 @@ pub(crate) fn check_frequencies(frequencies: &[f64]) -> Result<(), Error> {
 /// ```
 pub fn log_frequencies(f_min: f64, f_max: f64, n: usize) -> Result<Vec<f64>, Error> {
     check_frequencies(&[f_min, f_max])?;
-    if !(f_max > f_min) || n < 2 {
-        return Err(Error::invalid("frequency", f_max, format!("need f_max > f_min = {f_min} and n >= 2 (n = {n})")));
+    if !(f_max > f_min) || !(2..=1_000_000).contains(&n) {
+        return Err(Error::invalid("frequency", f_max, format!("need f_max > f_min = {f_min} and 2 <= n <= 1000000 (n = {n})")));
     }
     let (a, b) = (f_max.log10(), f_min.log10());
     Ok((0..n).map(|k| 10f64.powf(a + (b - a) * k as f64 / (n - 1) as f64)).collect())

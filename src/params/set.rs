@@ -320,12 +320,17 @@ impl ParameterSet {
         Ok(())
     }
 
-    /// Reads a parameter set from a TOML file and validates it.
+    /// Reads a parameter set from a TOML file and validates it: a whole set, or a base set
+    /// with a few overrides (`base = "chen2020"`, see [`super::from_base_table`]).
     pub fn from_toml_file(path: &std::path::Path) -> Result<Self, Error> {
         let text = std::fs::read_to_string(path)
             .map_err(Error::io(&path))?;
-        let set: ParameterSet = toml::from_str(&text)
-            .map_err(|e| Error::Parse { path: path.display().to_string(), message: e.to_string() })?;
+        let parse = |e: toml::de::Error| Error::Parse { path: path.display().to_string(), message: e.to_string() };
+        let table: toml::Table = toml::from_str(&text).map_err(parse)?;
+        if table.contains_key("base") {
+            return super::from_base_table(&table, &path.display().to_string());
+        }
+        let set: ParameterSet = toml::from_str(&text).map_err(parse)?;
         set.validate()?;
         Ok(set)
     }

@@ -55,6 +55,8 @@ pub struct DesignOutcome {
     pub rebuilds: usize,
     pub seconds: f64,
     pub files: Vec<PathBuf>,
+    /// Warnings also written into the report (optimum on a bound).
+    pub warnings: Vec<String>,
 }
 
 impl DesignOutcome {
@@ -84,6 +86,13 @@ fn constraints(study: &Study) -> LinearConstraints {
 
 /// Runs the study's optimiser on its first objective from the baseline design.
 pub fn run_design(study: &Study) -> Result<DesignOutcome, Error> {
+    if study.objective.maximise.len() != 1 {
+        let names: Vec<&str> = study.objective.maximise.iter().map(|m| m.label()).collect();
+        return Err(Error::InvalidSetting {
+            field: "objective.maximise".into(),
+            reason: format!("`design` maximises one objective, the study names {} ({}); use `pareto` for several", names.len(), names.join(", ")),
+        });
+    }
     let metric = study.objective.maximise[0];
     let problem = study.problem()?;
     let mut table = study.optimiser.clone();
@@ -95,6 +104,7 @@ pub fn run_design(study: &Study) -> Result<DesignOutcome, Error> {
         .try_into()
         .map_err(|e: toml::de::Error| Error::InvalidSetting { field: "optimiser".into(), reason: e.to_string() })?;
     let mut optimiser = by_name(&method, options.clone())?;
+    let dir = study.output_dir()?;
     let objective = MaximiseMetric { problem: &problem, metric };
     let bounds = Bounds::new(
         study.variables.iter().map(|v| v.lower).collect(),
@@ -110,22 +120,38 @@ pub fn run_design(study: &Study) -> Result<DesignOutcome, Error> {
     let mut observer = Progress { bar, trace: TraceObserver::default() };
     let result = optimiser.minimise(&opt_problem, &x0, &mut observer)?;
     observer.bar.finish_and_clear();
-    let optimised = problem.evaluate(&result.x)?;
+    let optimised = problem.evaluate(&result.x)
+        .map_err(|e| Error::InvalidSetting { field: "design".into(), reason: format!("no valid design: the optimum at {:?} fails: {e}", result.x) })?;
+    let value = optimised.get(metric);
+    if !(value > 0.0 && value.is_finite()) || super::degenerate(&optimised, &initial) {
+        return Err(Error::InvalidSetting {
+            field: "design".into(),
+            reason: format!(
+                "no valid design: the optimum at {:?} stores {} W h against the baseline's {} W h ({} = {}, degenerate); check the variables' bounds",
+                result.x, crate::error::number(optimised.energy), crate::error::number(initial.energy), metric.label(), crate::error::number(value)
+            ),
+        });
+    }
     let seconds = start.elapsed().as_secs_f64();
-    let mut outcome = DesignOutcome { metric, initial_x, initial, result, optimised, rebuilds: problem.rebuild_count(), seconds, files: Vec::new() };
-    write_outputs(study, &problem, &mut outcome, &method)?;
+    let names: Vec<String> = study.variables.iter().map(|v| v.path.clone()).collect();
+    let lower: Vec<f64> = study.variables.iter().map(|v| v.lower).collect();
+    let upper: Vec<f64> = study.variables.iter().map(|v| v.upper).collect();
+    let mut warnings = study.warnings();
+    warnings.extend(super::at_bound_warnings("the optimum", &names, &result.x, &lower, &upper));
+    let mut outcome =
+        DesignOutcome { metric, initial_x, initial, result, optimised, rebuilds: problem.rebuild_count(), seconds, files: Vec::new(), warnings };
+    write_outputs(study, &problem, &mut outcome, &method, dir.path())?;
+    outcome.files = dir.commit(&outcome.files)?;
     Ok(outcome)
 }
 
-fn write_outputs(study: &Study, problem: &DesignProblem, out: &mut DesignOutcome, method: &str) -> Result<(), Error> {
-    let dir = &study.output.dir;
-    std::fs::create_dir_all(dir).map_err(Error::io(&dir))?;
+fn write_outputs(study: &Study, problem: &DesignProblem, out: &mut DesignOutcome, method: &str, dir: &std::path::Path) -> Result<(), Error> {
     let names: Vec<&str> = study.variables.iter().map(|v| v.path.as_str()).collect();
     let json = serde_json::json!({
         "study": study.name, "variables": names, "method": method,
         "initial": { "x": out.initial_x, "metrics": out.initial },
         "optimised": { "x": out.result.x, "metrics": out.optimised },
-        "result": out.result, "rebuilds": out.rebuilds, "seconds": out.seconds,
+        "result": out.result, "rebuilds": out.rebuilds, "seconds": out.seconds, "warnings": out.warnings,
     });
     write_output(dir, "design.json", serde_json::to_string_pretty(&json).unwrap_or_default(), &mut out.files)?;
 
@@ -155,7 +181,11 @@ fn write_outputs(study: &Study, problem: &DesignProblem, out: &mut DesignOutcome
             m.energy, m.mass * 1e3, m.volume * 1e6, m.gravimetric_energy_density, m.volumetric_energy_density,
             m.gravimetric_power_density, m.volumetric_power_density);
     }
-    let _ = writeln!(md, "\nImprovement: {:+.2} %.\n\n![voltage](design_voltage.svg)", out.improvement());
+    let _ = writeln!(md, "\nImprovement: {:+.2} %.\n", out.improvement());
+    for w in &out.warnings {
+        let _ = writeln!(md, "**Warning:** {w}\n");
+    }
+    let _ = writeln!(md, "![voltage](design_voltage.svg)");
     write_output(dir, "report.md", md, &mut out.files)?;
     Ok(())
 }

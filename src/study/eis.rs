@@ -24,6 +24,40 @@ pub struct EisRun {
     pub fit: Option<(PathBuf, Vec<String>)>,
     pub optimiser: String,
     pub out: PathBuf,
+    /// Other files the run reads (the parameter set), which no output may overwrite.
+    pub inputs: Vec<PathBuf>,
+}
+
+/// Most frequencies of a model spectrum.
+pub const MAX_FREQUENCIES: usize = 100_000;
+
+/// The `--frequencies F_MIN F_MAX N` triple checked: positive finite increasing frequencies
+/// (Hz) and a whole number of points in `2..=MAX_FREQUENCIES`.
+///
+/// ```
+/// use cellstudio::study::eis::frequency_grid;
+/// assert_eq!(frequency_grid(&[1e-4, 1e3, 60.0]).unwrap(), (1e-4, 1e3, 60));
+/// assert!(frequency_grid(&[1e-4, 1e3, 2.7]).unwrap_err().to_string().contains("whole number"));
+/// assert!(frequency_grid(&[1e-4, 1e3, 1e30]).unwrap_err().to_string().contains("at most"));
+/// ```
+pub fn frequency_grid(values: &[f64]) -> Result<(f64, f64, usize), Error> {
+    let [f0, f1, n] = values else {
+        return Err(Error::InvalidSetting { field: "--frequencies".into(), reason: format!("expected F_MIN F_MAX N, got {values:?}") });
+    };
+    let (f0, f1, n) = (*f0, *f1, *n);
+    if !(f0 > 0.0 && f0.is_finite()) {
+        return Err(Error::invalid("--frequencies F_MIN", f0, "must be a positive frequency (Hz)"));
+    }
+    if !(f1 > f0 && f1.is_finite()) {
+        return Err(Error::invalid("--frequencies F_MAX", f1, format!("must be finite and exceed F_MIN = {}", crate::error::number(f0))));
+    }
+    if n.fract() != 0.0 || !n.is_finite() {
+        return Err(Error::invalid("--frequencies N", n, "must be a whole number of points"));
+    }
+    if !(2.0..=MAX_FREQUENCIES as f64).contains(&n) {
+        return Err(Error::invalid("--frequencies N", n, format!("must be at least 2 and at most {MAX_FREQUENCIES}")));
+    }
+    Ok((f0, f1, n as usize))
 }
 
 /// What an `eis` run produced.
@@ -37,15 +71,16 @@ pub struct EisOutcome {
 pub fn run_eis(run: &EisRun) -> Result<EisOutcome, Error> {
     let mut base = run.params.clone();
     set_initial_soc(&mut base, run.soc)?;
-    std::fs::create_dir_all(&run.out).map_err(Error::io(&run.out))?;
     let (f0, f1, n) = run.frequencies;
     let dense = log_frequencies(f0, f1, n)?;
+    let inputs: Vec<&std::path::Path> = run.inputs.iter().map(|p| p.as_path()).chain(run.fit.as_ref().map(|f| f.0.as_path())).collect();
+    let out = crate::output::OutputDir::create(&run.out, &inputs)?;
     let spectrum_of = |variables: &[String], x: &[f64]| -> Result<Spectrum, Error> {
         let probe = Spectrum::new(dense.clone(), vec![1.0; dense.len()], vec![0.0; dense.len()])?;
         EisFit::new(base.clone(), variables.to_vec(), probe, run.kind)?.with_submodels(run.submodels).model_spectrum(x)
     };
     let mut files = Vec::new();
-    let nyquist = run.out.join("nyquist.svg");
+    let nyquist = out.path().join("nyquist.svg");
     let title = format!("{} impedance at {:.0} % SOC", run.kind, 100.0 * run.soc);
     let (spectrum, fit) = match &run.fit {
         None => {
@@ -72,8 +107,9 @@ pub fn run_eis(run: &EisRun) -> Result<EisOutcome, Error> {
         }
     };
     files.push(nyquist);
-    let csv = run.out.join("spectrum.csv");
+    let csv = out.path().join("spectrum.csv");
     spectrum.write_csv(&csv)?;
     files.push(csv);
+    let files = out.commit(&files)?;
     Ok(EisOutcome { spectrum, fit, files })
 }

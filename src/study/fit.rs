@@ -26,6 +26,9 @@ use crate::report::plot::{Series, heat_map, line_plot};
 pub struct FitStudy {
     /// Title used in reports.
     pub name: String,
+    /// The file the study was read from (an input no output may overwrite).
+    #[serde(skip)]
+    pub source: Option<PathBuf>,
     #[serde(default)]
     pub cell: CellChoice,
     pub model: ModelSpec,
@@ -54,8 +57,9 @@ pub struct DataChoice {
     pub file: PathBuf,
     #[serde(default)]
     pub format: CsvFormat,
-    /// For synthetic studies only: Gaussian noise (V) added to the recorded voltage, seeded by
-    /// `noise_seed`.
+    /// For synthetic studies only: Gaussian noise (V) added to the voltage of the study's own
+    /// `file` (a simulated curve), seeded by `noise_seed`. Never added to a recording given
+    /// with `--data`; the report says when it was added.
     #[serde(default)]
     pub synthetic_noise: f64,
     #[serde(default)]
@@ -75,24 +79,80 @@ pub struct Landscape {
 }
 
 impl FitStudy {
-    /// Reads and checks a study file.
+    /// Reads and checks a study file: every section, the cost's keys, the optimiser's and the
+    /// sampler's names and options, before any work.
     pub fn from_file(path: &Path) -> Result<Self, Error> {
         let text = std::fs::read_to_string(path).map_err(Error::io(&path))?;
-        let study: FitStudy =
-            toml::from_str(&text).map_err(|e| Error::Parse { path: path.display().to_string(), message: e.to_string() })?;
-        study.cost.validate()?;
-        if study.parameters.is_empty() {
+        let parse = |e: toml::de::Error| Error::Parse { path: path.display().to_string(), message: e.to_string() };
+        let mut study: FitStudy = toml::from_str(&text).map_err(parse)?;
+        let raw: toml::Table = toml::from_str(&text).map_err(parse)?;
+        if let Some(cost) = raw.get("cost").and_then(|c| c.as_table()) {
+            let allowed = study.cost.keys();
+            if let Some(key) = cost.keys().find(|k| !allowed.contains(&k.as_str())) {
+                return Err(Error::InvalidSetting {
+                    field: format!("cost.{key}"),
+                    reason: format!("unknown key for kind = \"{}\" (allowed: {})", study.cost.name(), allowed.join(", ")),
+                });
+            }
+        }
+        study.source = Some(path.to_path_buf());
+        study.validate()?;
+        Ok(study)
+    }
+
+    /// Checks the settings (the parameter set with its overrides included).
+    pub fn validate(&self) -> Result<(), Error> {
+        self.cost.validate()?;
+        if self.parameters.is_empty() {
             return Err(Error::InvalidSetting { field: "parameters".into(), reason: "at least one is needed".into() });
         }
-        if let Some(l) = &study.landscape {
+        if let Some(l) = &self.landscape {
             if l.points < 2 || l.points > 200 {
                 return Err(Error::invalid("landscape.points", l.points as f64, "must lie in 2..=200"));
             }
         }
-        if !(study.data.synthetic_noise >= 0.0 && study.data.synthetic_noise.is_finite()) {
-            return Err(Error::invalid("data.synthetic_noise", study.data.synthetic_noise, "must be non-negative"));
+        if !(self.data.synthetic_noise >= 0.0 && self.data.synthetic_noise.is_finite()) {
+            return Err(Error::invalid("data.synthetic_noise", self.data.synthetic_noise, "must be non-negative"));
         }
-        Ok(study)
+        let (method, options) = self.optimiser()?;
+        crate::optim::by_name(&method, options)?;
+        let (method, sampler, _) = self.sampler()?;
+        crate::sample::by_name(&method, sampler)?;
+        self.cell.load()?;
+        Ok(())
+    }
+
+    /// The study with `--set` overrides of the cell's parameters, checked again.
+    pub fn with_overrides(mut self, overrides: Vec<crate::params::Override>) -> Result<Self, Error> {
+        if !overrides.is_empty() {
+            self.cell.overrides = overrides;
+            self.validate()?;
+        }
+        Ok(self)
+    }
+
+    /// Files the run reads: the study, the parameter set and the recording.
+    pub fn inputs<'a>(&'a self, data: Option<&'a Path>) -> Vec<&'a Path> {
+        self.source.as_deref().into_iter().chain(self.cell.file()).chain([data.unwrap_or(&self.data.file)]).collect()
+    }
+
+    /// What the run does with `data.synthetic_noise`, when it is set: added to the study's own
+    /// (synthetic) file, never to a recording given with `--data`.
+    pub fn noise_note(&self, data: Option<&Path>) -> Option<String> {
+        let sigma = self.data.synthetic_noise;
+        // In mV, rounded to the microvolt.
+        let mv = (sigma * 1e6).round() / 1e3;
+        (sigma > 0.0).then(|| match data {
+            None => format!(
+                "synthetic Gaussian noise of {mv} mV (seed {}) was added to the voltage of `{}` (`data.synthetic_noise`)",
+                self.data.noise_seed,
+                self.data.file.display()
+            ),
+            Some(d) => format!(
+                "the study's `data.synthetic_noise` ({mv} mV) was not applied: `{}` (--data) is fitted as recorded",
+                d.display()
+            ),
+        })
     }
 
     /// The optimiser's name and options.
@@ -106,10 +166,11 @@ impl FitStudy {
         Ok((method, options))
     }
 
-    /// Reads the recording (from `data`, or the study's file), adding synthetic noise if set.
+    /// Reads the recording: `data` as recorded, or the study's own file with its synthetic
+    /// noise added (when `data.synthetic_noise` is set).
     pub fn recording(&self, data: Option<&Path>) -> Result<Recording, Error> {
         let mut rec = Recording::from_csv_with(data.unwrap_or(&self.data.file), &self.data.format)?;
-        if self.data.synthetic_noise > 0.0 {
+        if data.is_none() && self.data.synthetic_noise > 0.0 {
             let mut rng = rand::rngs::StdRng::seed_from_u64(self.data.noise_seed);
             let noise = Normal::new(0.0, self.data.synthetic_noise).expect("checked non-negative");
             for v in &mut rec.voltage {
@@ -132,18 +193,32 @@ pub struct FitOutcome {
     /// RMS residual at the initial parameters (V).
     pub initial_rmse: f64,
     pub files: Vec<PathBuf>,
+    /// Notes (synthetic noise) and warnings (parameters at a bound), also in the report.
+    pub notes: Vec<String>,
+    pub warnings: Vec<String>,
 }
 
 /// Fits the study's problem, then writes `report.md`, `fit.json`, `fit_voltage.svg`,
 /// `fit_residual.svg` and (with `[landscape]`) `landscape.svg`.
 pub fn run_fit(study: &FitStudy, data: Option<&Path>) -> Result<FitOutcome, Error> {
+    let out = crate::output::OutputDir::create(&study.output.dir, &study.inputs(data))?;
+    let mut outcome = fit_into(study, data, out.path())?;
+    outcome.files = out.commit(&outcome.files)?;
+    Ok(outcome)
+}
+
+/// [`run_fit`] writing into `dir` (a staged output folder).
+pub(crate) fn fit_into(study: &FitStudy, data: Option<&Path>, dir: &Path) -> Result<FitOutcome, Error> {
     let problem = study.problem(data)?;
     let (method, options) = study.optimiser()?;
     let initial_voltage = problem.simulate(&problem.initial())?;
     let initial_rmse = rms(&problem.residuals(&initial_voltage), &problem.weights);
     let result = fit(&problem, study.cost, &method, options)?;
-    let dir = &study.output.dir;
-    std::fs::create_dir_all(dir).map_err(Error::io(&dir))?;
+    let notes: Vec<String> = study.noise_note(data).into_iter().collect();
+    let names: Vec<String> = problem.parameters.iter().map(|p| p.path.clone()).collect();
+    let lower: Vec<f64> = problem.parameters.iter().map(|p| p.lower).collect();
+    let upper: Vec<f64> = problem.parameters.iter().map(|p| p.upper).collect();
+    let warnings = super::at_bound_warnings("the fit", &names, &result.x, &lower, &upper);
     let mut files = Vec::new();
     let t = &problem.data.time;
     let path = dir.join("fit_voltage.svg");
@@ -176,8 +251,15 @@ pub fn run_fit(study: &FitStudy, data: Option<&Path>) -> Result<FitOutcome, Erro
         files.push(path);
     }
     write_output(dir, "fit.json", serde_json::to_string_pretty(&result).expect("serialisable"), &mut files)?;
-    write_output(dir, "report.md", report(study, &problem, &result, initial_rmse), &mut files)?;
-    Ok(FitOutcome { result, initial_rmse, files })
+    let mut md = report(study, &problem, &result, initial_rmse);
+    for n in &notes {
+        let _ = writeln!(md, "\nNote: {n}.");
+    }
+    for w in &warnings {
+        let _ = writeln!(md, "\n**Warning:** {w}.");
+    }
+    write_output(dir, "report.md", md, &mut files)?;
+    Ok(FitOutcome { result, initial_rmse, files, notes, warnings })
 }
 
 fn rms(r: &[f64], w: &[f64]) -> f64 {

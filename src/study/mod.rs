@@ -14,7 +14,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::error::Error;
 use crate::models::ModelKind;
-use crate::params::{ParameterSet, chen2020};
+use crate::params::{Override, ParameterSet, apply_overrides, chen2020};
 use crate::problem::design::{DesignProblem, Metric, Tie};
 
 /// A design study as written in `designs/*.toml`.
@@ -23,6 +23,9 @@ use crate::problem::design::{DesignProblem, Metric, Tie};
 pub struct Study {
     /// Title used in reports.
     pub name: String,
+    /// The file the study was read from (an input no output may overwrite).
+    #[serde(skip)]
+    pub source: Option<PathBuf>,
     #[serde(default)]
     pub cell: CellChoice,
     #[serde(default)]
@@ -49,21 +52,31 @@ pub struct Study {
 pub struct CellChoice {
     /// `chen2020` (embedded) or a path to a parameter-set TOML file.
     pub parameter_set: String,
+    /// Overrides from the command line (`--set path=value`), applied after loading.
+    #[serde(skip)]
+    pub overrides: Vec<Override>,
 }
 
 impl CellChoice {
-    /// The parameter set: embedded Chen 2020 or a TOML file.
+    /// The parameter set: embedded Chen 2020 or a TOML file, with the overrides applied.
     pub fn load(&self) -> Result<ParameterSet, Error> {
-        match self.parameter_set.as_str() {
-            "chen2020" => Ok(chen2020()),
-            path => ParameterSet::from_file(Path::new(path)),
-        }
+        let mut p = match self.parameter_set.as_str() {
+            "chen2020" => chen2020(),
+            path => ParameterSet::from_file(Path::new(path))?,
+        };
+        apply_overrides(&mut p, &self.overrides)?;
+        Ok(p)
+    }
+
+    /// The parameter-set file, when the set is not the embedded one.
+    pub fn file(&self) -> Option<&Path> {
+        (self.parameter_set != "chen2020").then(|| Path::new(&self.parameter_set))
     }
 }
 
 impl Default for CellChoice {
     fn default() -> Self {
-        Self { parameter_set: "chen2020".into() }
+        Self { parameter_set: "chen2020".into(), overrides: Vec::new() }
     }
 }
 
@@ -190,7 +203,28 @@ impl Study {
     /// Reads and checks a study file.
     pub fn from_file(path: &Path) -> Result<Self, Error> {
         let text = std::fs::read_to_string(path).map_err(Error::io(&path))?;
-        Self::from_toml(&text, &path.display().to_string())
+        let mut study = Self::from_toml(&text, &path.display().to_string())?;
+        study.source = Some(path.to_path_buf());
+        Ok(study)
+    }
+
+    /// The study with `--set` overrides of the cell's parameters, checked again.
+    pub fn with_overrides(mut self, overrides: Vec<Override>) -> Result<Self, Error> {
+        if !overrides.is_empty() {
+            self.cell.overrides = overrides;
+            self.validate()?;
+        }
+        Ok(self)
+    }
+
+    /// Files the study reads: the study file and the parameter-set file.
+    pub fn inputs(&self) -> Vec<&Path> {
+        self.source.as_deref().into_iter().chain(self.cell.file()).collect()
+    }
+
+    /// Creates the staged output folder, checked against the study's inputs.
+    pub fn output_dir(&self) -> Result<crate::output::OutputDir, Error> {
+        crate::output::OutputDir::create(&self.output.dir, &self.inputs())
     }
 
     /// Parses and checks study text; `origin` names it in errors.
@@ -275,8 +309,22 @@ impl Study {
                 });
             }
         }
-        // The baseline itself must satisfy the ties and physical ranges.
-        self.problem()?.parameters(&self.baseline()?)?;
+        // The baseline itself must satisfy the ties and physical ranges, and so must each
+        // bound (the other variables at the baseline).
+        let (problem, baseline) = (self.problem()?, self.baseline()?);
+        problem.parameters(&baseline)?;
+        for (k, v) in self.variables.iter().enumerate() {
+            for (side, b) in [("lower", v.lower), ("upper", v.upper)] {
+                let mut x = baseline.clone();
+                x[k] = b;
+                if let Err(e) = problem.parameters(&x) {
+                    return Err(Error::InvalidSetting {
+                        field: format!("variables[{k}].{side}"),
+                        reason: format!("{} = {} is outside the physical range: {e}", v.path, crate::error::number(b)),
+                    });
+                }
+            }
+        }
         Ok(())
     }
 
@@ -309,6 +357,26 @@ impl Study {
         self.variables.iter().map(|v| base.get(&v.path)).collect()
     }
 
+    /// Warnings about a valid study: baseline values outside their variable's bounds (the
+    /// search starts from the projection; the baseline is still reported as it is).
+    pub fn warnings(&self) -> Vec<String> {
+        let Ok(baseline) = self.baseline() else { return Vec::new() };
+        self.variables
+            .iter()
+            .zip(baseline)
+            .filter(|(v, b)| !(v.lower..=v.upper).contains(b))
+            .map(|(v, b)| {
+                format!(
+                    "the baseline's {} = {} lies outside its bounds [{}, {}]",
+                    v.path,
+                    crate::error::number(b),
+                    crate::error::number(v.lower),
+                    crate::error::number(v.upper)
+                )
+            })
+            .collect()
+    }
+
     /// The design problem the study describes.
     pub fn problem(&self) -> Result<DesignProblem, Error> {
         let problem = DesignProblem::new(
@@ -324,6 +392,35 @@ impl Study {
             None => Ok(problem),
         }
     }
+}
+
+/// Fraction of the baseline's energy below which a design counts as degenerate (it stores
+/// practically nothing, e.g. a 1 nm electrode).
+pub const DEGENERATE_ENERGY_FRACTION: f64 = 1e-3;
+
+/// Whether design metrics `m` are no result: non-finite, or an energy (W h) below
+/// [`DEGENERATE_ENERGY_FRACTION`] of the baseline's.
+pub fn degenerate(m: &crate::problem::design::DesignMetrics, baseline: &crate::problem::design::DesignMetrics) -> bool {
+    !(m.energy.is_finite() && m.energy > DEGENERATE_ENERGY_FRACTION * baseline.energy)
+}
+
+/// Warnings for values within 1e-6 of the bound range of a bound: `what` names the point
+/// (e.g. "the optimum").
+pub fn at_bound_warnings(what: &str, names: &[String], x: &[f64], lower: &[f64], upper: &[f64]) -> Vec<String> {
+    let mut out = Vec::new();
+    for (k, name) in names.iter().enumerate() {
+        let (Some(&v), Some(&lo), Some(&hi)) = (x.get(k), lower.get(k), upper.get(k)) else { continue };
+        let tol = 1e-6 * (hi - lo).abs();
+        for (side, b) in [("lower", lo), ("upper", hi)] {
+            if (v - b).abs() <= tol {
+                out.push(format!(
+                    "{what} has {name} = {} at its {side} bound; the best value may lie outside the searched range",
+                    crate::error::number(v)
+                ));
+            }
+        }
+    }
+    out
 }
 
 /// Writes `text` to `dir/name` and appends the path to `files`.

@@ -20,6 +20,8 @@ pub struct ParetoOutcome {
     pub rebuilds: usize,
     pub seconds: f64,
     pub files: Vec<PathBuf>,
+    /// Warnings also written into `pareto_front.json` (failed designs, baseline off bounds).
+    pub warnings: Vec<String>,
 }
 
 /// Runs NSGA-II with the study's `[optimiser]` table as [`Nsga2Options`].
@@ -37,6 +39,7 @@ pub fn run_pareto(study: &Study) -> Result<ParetoOutcome, Error> {
         .try_into()
         .map_err(|e: toml::de::Error| Error::InvalidSetting { field: "optimiser".into(), reason: e.to_string() })?;
     let problem = study.problem()?;
+    let out = study.output_dir()?;
     let lower: Vec<f64> = study.variables.iter().map(|v| v.lower).collect();
     let upper: Vec<f64> = study.variables.iter().map(|v| v.upper).collect();
     let failed = std::sync::atomic::AtomicUsize::new(0);
@@ -55,8 +58,18 @@ pub fn run_pareto(study: &Study) -> Result<ParetoOutcome, Error> {
     bar.finish_and_clear();
     let seconds = start.elapsed().as_secs_f64();
 
-    let dir = &study.output.dir;
-    std::fs::create_dir_all(dir).map_err(Error::io(&dir))?;
+    let failed = failed.into_inner();
+    if front.is_empty() || failed >= archive.len() {
+        return Err(Error::InvalidSetting {
+            field: "pareto".into(),
+            reason: format!("no valid design: {failed} of {} designs failed (nothing written)", archive.len()),
+        });
+    }
+    let mut warnings = study.warnings();
+    if failed > 0 {
+        warnings.push(format!("{failed} of {} designs failed", archive.len()));
+    }
+    let dir = out.path();
     let names: Vec<String> = study.variables.iter().map(|v| v.path.clone()).collect();
     let objectives: Vec<String> = metrics.iter().map(|m| serde_json::to_value(m).unwrap_or_default().as_str().unwrap_or("").to_string()).collect();
     let mut csv = format!("{},{}\n", names.join(","), objectives.join(","));
@@ -69,7 +82,7 @@ pub fn run_pareto(study: &Study) -> Result<ParetoOutcome, Error> {
     let mut files = Vec::new();
     write_output(dir, "pareto_front.csv", csv, &mut files)?;
     let json = serde_json::json!({ "study": study.name, "variables": names, "objectives": objectives,
-        "baseline": baseline, "front": sorted, "evaluated": archive.len(), "seconds": seconds });
+        "baseline": baseline, "front": sorted, "evaluated": archive.len(), "failed": failed, "warnings": warnings, "seconds": seconds });
     write_output(dir, "pareto_front.json", serde_json::to_string_pretty(&json).unwrap_or_default(), &mut files)?;
     let plot = dir.join("pareto_front.svg");
     let pts = |set: &[Individual]| set.iter().map(|i| (i.f[0], i.f[1])).collect::<Vec<_>>();
@@ -81,13 +94,15 @@ pub fn run_pareto(study: &Study) -> Result<ParetoOutcome, Error> {
         Some(("baseline".into(), (baseline[0], baseline[1]))),
     )?;
     files.push(plot);
+    let files = out.commit(&files)?;
     Ok(ParetoOutcome {
         front: sorted,
         evaluated: archive.len(),
-        failed: failed.into_inner(),
+        failed,
         baseline,
         rebuilds: problem.rebuild_count(),
         seconds,
         files,
+        warnings,
     })
 }

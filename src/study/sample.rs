@@ -9,7 +9,7 @@ use std::path::{Path, PathBuf};
 use rand::SeedableRng;
 use rand_distr::{Distribution, Normal};
 
-use super::fit::{FitStudy, run_fit};
+use super::fit::{FitStudy, fit_into};
 use crate::cost::CostKind;
 use crate::error::Error;
 use crate::problem::posterior::Posterior;
@@ -27,6 +27,9 @@ pub struct SampleOutcome {
     pub summary: PosteriorSummary,
     pub seconds: f64,
     pub files: Vec<PathBuf>,
+    /// The fit's notes (synthetic noise) and warnings (parameters at a bound).
+    pub notes: Vec<String>,
+    pub warnings: Vec<String>,
 }
 
 impl FitStudy {
@@ -54,7 +57,8 @@ impl FitStudy {
 pub fn run_sample(study: &FitStudy, data: Option<&Path>) -> Result<SampleOutcome, Error> {
     let (method, mut sampler_options, mut run) = study.sampler()?;
     run.progress = true;
-    let fitted = run_fit(study, data)?;
+    let out = crate::output::OutputDir::create(&study.output.dir, &study.inputs(data))?;
+    let fitted = fit_into(study, data, out.path())?;
     let problem = study.problem(data)?;
     let sigma = match study.cost {
         CostKind::GaussianLogLikelihood { sigma } | CostKind::Map { sigma } => sigma,
@@ -101,7 +105,7 @@ pub fn run_sample(study: &FitStudy, data: Option<&Path>) -> Result<SampleOutcome
         }
     }
     let summary = in_model.summary(&names);
-    let dir = &study.output.dir;
+    let dir = out.path();
     let mut files = fitted.files;
     let mut csv = format!("chain,{}\n", names.join(","));
     for (k, chain) in in_model.chains.iter().enumerate() {
@@ -133,5 +137,6 @@ pub fn run_sample(study: &FitStudy, data: Option<&Path>) -> Result<SampleOutcome
     );
     let _ = writeln!(md, "```\n{}\n```", summary.table());
     write_output(dir, "posterior.md", md, &mut files)?;
-    Ok(SampleOutcome { names, result: in_model, summary, seconds, files })
+    let files = out.commit(&files)?;
+    Ok(SampleOutcome { names, result: in_model, summary, seconds, files, notes: fitted.notes, warnings: fitted.warnings })
 }

@@ -18,6 +18,8 @@ pub struct SweepOutcome {
     pub rebuilds: usize,
     pub seconds: f64,
     pub files: Vec<PathBuf>,
+    /// Warnings also written into `sweep.json` (designs that failed).
+    pub warnings: Vec<String>,
 }
 
 
@@ -41,13 +43,35 @@ pub fn run_sweep(study: &Study) -> Result<SweepOutcome, Error> {
             latin_hypercube(&lower, &upper, n, sweep.seed)
         }
     };
+    let out = study.output_dir()?;
     let start = Instant::now();
     let baseline_x = study.baseline()?;
     let baseline = problem.evaluate(&baseline_x)?;
     let points = evaluate_all(&problem, &candidates);
     let seconds = start.elapsed().as_secs_f64();
-    let dir = &study.output.dir;
-    std::fs::create_dir_all(dir).map_err(Error::io(dir))?;
+    // A design that failed, or stores no energy, is no result.
+    let valid = |p: &SweepPoint| p.metrics.is_some_and(|m| !super::degenerate(&m, &baseline));
+    let failed = points.iter().filter(|p| p.metrics.is_none()).count();
+    let degenerate = points.iter().filter(|p| p.metrics.is_some() && !valid(p)).count();
+    if !points.iter().any(valid) {
+        let reason = points.iter().find_map(|p| p.error.as_ref().map(|e| format!("; the first failure, at {:?}: {e}", p.x))).unwrap_or_default();
+        return Err(Error::InvalidSetting {
+            field: "sweep".into(),
+            reason: format!(
+                "no valid design (nothing written): {failed} of {} designs failed and {degenerate} store less than {} of the baseline's energy{reason}",
+                points.len(),
+                super::DEGENERATE_ENERGY_FRACTION
+            ),
+        });
+    }
+    let mut warnings = study.warnings();
+    if failed > 0 {
+        warnings.push(format!("{failed} of {} designs failed (error column of sweep.csv; blank in the plots)", points.len()));
+    }
+    if degenerate > 0 {
+        warnings.push(format!("{degenerate} of {} designs store less than {} of the baseline's energy (degenerate)", points.len(), super::DEGENERATE_ENERGY_FRACTION));
+    }
+    let dir = out.path();
     let mut files = Vec::new();
 
     let names: Vec<&str> = study.variables.iter().map(|v| v.path.as_str()).collect();
@@ -76,7 +100,7 @@ pub fn run_sweep(study: &Study) -> Result<SweepOutcome, Error> {
     crate::error::write_file(&csv_path, csv)?;
     files.push(csv_path);
     let json_path = dir.join("sweep.json");
-    let json = serde_json::json!({ "study": study.name, "variables": names, "baseline": baseline, "points": points });
+    let json = serde_json::json!({ "study": study.name, "variables": names, "baseline": baseline, "warnings": warnings, "points": points });
     crate::error::write_file(&json_path, serde_json::to_string_pretty(&json).unwrap_or_default())?;
     files.push(json_path);
 
@@ -107,5 +131,6 @@ pub fn run_sweep(study: &Study) -> Result<SweepOutcome, Error> {
         }
         files.push(path);
     }
-    Ok(SweepOutcome { points, baseline, rebuilds: problem.rebuild_count(), seconds, files })
+    let files = out.commit(&files)?;
+    Ok(SweepOutcome { points, baseline, rebuilds: problem.rebuild_count(), seconds, files, warnings })
 }
