@@ -25,8 +25,8 @@ fn main() {
         ("b7_control_drive", ModelKind::Spme),
         ("b8_two_effects", ModelKind::Spme),
     ];
-    println!("| case | model | points | hours | rounds | median s | s per hour | first verdict |");
-    println!("|---|---|---|---|---|---|---|---|");
+    println!("| case | model | points | hours | rounds | RMSE before -> after (mV) | median s | s per hour | first verdict |");
+    println!("|---|---|---|---|---|---|---|---|---|");
     for (case, kind) in cases {
         let rec = Recording::from_csv(&dir.join(case).join("recording.csv")).expect("recording");
         let hours = (rec.time[rec.time.len() - 1] - rec.time[0]) / 3600.0;
@@ -42,7 +42,16 @@ fn main() {
         times.sort_by(f64::total_cmp);
         let s = times[times.len() / 2];
         let rounds = last.expect("one repeat");
-        let verdict: String = report::verdict_in_words(&rounds[0]).chars().take(70).collect();
-        println!("| {case} | {kind} | {} | {hours:.2} | {} | {s:.1} | {:.1} | {verdict}... |", rec.time.len(), rounds.len(), s / hours);
+        let verdict: String = report::verdict_in_words(&rounds[0]).chars().take(90).collect();
+        let before = rounds[0].baseline.rmse_all;
+        let after = rounds.last().map(|d| d.baseline.rmse_all).unwrap_or(before);
+        println!(
+            "| {case} | {kind} | {} | {hours:.2} | {} | {:.2} -> {:.2} | {s:.1} | {:.1} | {verdict}... |",
+            rec.time.len(),
+            rounds.len(),
+            before * 1e3,
+            after * 1e3,
+            s / hours
+        );
     }
 }

@@ -1016,6 +1016,11 @@ fn first_of(
 /// `User-defined` as `cellstudio.*`, so that [`from_bpx_json`] restores every scalar.
 pub fn to_bpx_json(p: &ParameterSet) -> Result<String, Error> {
     p.validate()?;
+    for (field, v) in [("electrolyte.diffusivity_factor", p.electrolyte.diffusivity_factor), ("electrolyte.conductivity_factor", p.electrolyte.conductivity_factor)] {
+        if v != 1.0 {
+            return Err(Error::invalid(field, v, "BPX has no transport factor: export the set with the factor at 1 (scale the function instead)"));
+        }
+    }
     let ce0 = p.electrolyte.initial_concentration;
     let windows = stoichiometry_windows(p)?;
     let c = &p.cell;
