@@ -31,7 +31,7 @@ fn main() {
             match sol {
                 Ok(sol) => {
                     let e = rec.voltage_error(&sol.time, &sol.voltage);
-                    println!("{name:10} rms {:9.5} mV max {:9.5} mV  end {:8.1} s (ref {:8.1})  Q {:.4} Ah  {:?} steps {} jac {} rhs {}",
+                    println!("{name:10} rms {:9.3e} mV max {:9.3e} mV  end {:8.1} s (ref {:8.1})  Q {:.4} Ah  {:?} steps {} jac {} rhs {}",
                         e.rms * 1e3, e.max * 1e3, sol.time.last().unwrap(), rec.time.last().unwrap(), sol.final_capacity(), el, sol.stats.steps, sol.stats.jacobian_evals, sol.stats.rhs_evals);
                 }
                 Err(e) => println!("{name}: {e}"),

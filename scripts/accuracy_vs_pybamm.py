@@ -14,7 +14,7 @@ Environment: scripts/requirements.txt (PyBaMM 26.10.1.1, the version of the refe
    (Experiment, sampled every 1 s).  Curves are written in the format of tests/data
    (``time_s,current_A,voltage_V,discharge_capacity_Ah``) to ``--out``
    (default out/pybamm_tight/).  Skipped when the file exists unless ``--regenerate``.
-2. Our side: ``target/release/examples/check_reference`` with ``REF_DIR`` pointing at those
+2. Our side: ``$CARGO_TARGET_DIR/release/examples/check_reference`` (or ``$CHECK_BIN``) with ``REF_DIR`` pointing at those
    curves and ``BENCH_TOL`` = each of ``--ours-rtol`` (rtol = atol), outputs at the
    reference's times (dense output, no interpolation of ours).
 3. Prints a Markdown table of the RMS and max voltage difference (mV) per case and rtol.
@@ -33,7 +33,7 @@ import numpy as np
 
 REPO = Path(__file__).resolve().parent.parent
 TARGET = Path(os.environ.get("CARGO_TARGET_DIR", REPO / "target"))
-CHECK_BIN = TARGET / "release" / "examples" / "check_reference"
+CHECK_BIN = Path(os.environ.get("CHECK_BIN", TARGET / "release" / "examples" / "check_reference"))
 MODELS = {"spm": "SPM", "spme": "SPMe", "dfn": "DFN"}
 CC_CASES = {"0.5C": 0.5, "1C": 1.0, "2C": 2.0}
 
@@ -76,7 +76,7 @@ def ours(ref_dir: Path, rtol: float) -> dict[str, tuple[float, float]]:
     out = subprocess.run([str(CHECK_BIN)], cwd=REPO, env=env, check=True, capture_output=True, text=True).stdout
     res = {}
     for line in out.splitlines():
-        m = re.match(r"(\S+)\s+rms\s+([\d.]+) mV max\s+([\d.]+) mV", line)
+        m = re.match(r"(\S+)\s+rms\s+([\d.eE+-]+) mV max\s+([\d.eE+-]+) mV", line)
         if m:
             res[m.group(1)] = (float(m.group(2)), float(m.group(3)))
     return res
@@ -113,7 +113,7 @@ def main() -> None:
             cells = []
             for r in rtols:
                 v = results[r].get(key)
-                cells.append("n/a" if v is None else f"{v[0]:.4f} / {v[1]:.4f}")
+                cells.append("n/a" if v is None else f"{v[0]:.1e} / {v[1]:.1e}")
             print(f"| {MODELS[name]} {case} | " + " | ".join(cells) + " |")
 
 
