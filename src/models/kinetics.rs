@@ -16,7 +16,7 @@ pub const SQRT_REGULARISATION: f64 = 1e-3;
 /// `x (x^2 + (delta s)^2)^(-1/4)` with `delta` = [`SQRT_REGULARISATION`] and scale `s` =
 /// `c_e_ref` (mol/m^3, the initial electrolyte concentration) for `c_e` and `c_max`
 /// (mol/m^3) for the two particle factors. The relative change is about
-/// `delta^2 s^2 / (4 x^2)`: 2.6e-5 at stoichiometry 0.9, below 1e-6 in mid range; the
+/// `delta^2 s^2 / (4 x^2)` per factor: 2.6e-5 at stoichiometry 0.9, 2e-6 at 0.5; the
 /// derivative stays finite at an empty or full particle. The rate constant `k`
 /// (A/m^2 (m^3/mol)^1.5) is already temperature-corrected. Concentrations are clamped to
 /// `c_e >= 0` and `0 <= c_s <= c_max`, as PyBaMM does before the regularisation.
