@@ -1,6 +1,7 @@
 //! Development probe: evaluates our SPMe/DFN voltage and DFN algebraic residuals on states
 //! exported from PyBaMM (JSON written by `scripts/pybamm_states.py`; argument: its path), so that differences in
-//! the model equations show up without any time integration.
+//! the model equations show up without any time integration. `PROBE_ROWS` prints every
+//! algebraic residual.
 use cellstudio::geometry::{MeshSizes, ModelBuilder};
 use cellstudio::models::{ModelKind, Submodels};
 use cellstudio::params::chen2020;
@@ -67,7 +68,9 @@ fn main() {
     }
 }
 
-/// Kinetics of one state, term by term (`PROBE_KINETICS=c_s_n,c_s_p,c_e,phi_s_n-phi_e` style).
+/// With `PROBE_KINETICS` set: OCP, exchange current and Butler-Volmer current of the DFN at
+/// PyBaMM's initial Chen 2020 surface concentrations (mol/m^3), c_e = 1000 mol/m^3, 298.15 K,
+/// to set beside PyBaMM's own variables.
 fn kinetics(ec: &cellstudio::models::Electrochem) {
     use cellstudio::models::electrochem::Side;
     use cellstudio::models::kinetics::butler_volmer;
