@@ -104,7 +104,9 @@ mod impedance {
         let ce = p.electrolyte.initial_concentration;
         let r_ct = |e: &cellstudio::params::Electrode| {
             let cs = e.initial_concentration;
-            let j0 = e.rate_constant * (ce * cs * (e.max_concentration - cs)).sqrt();
+            // the model's exchange current (PyBaMM's regularised square roots, 1.5e-6 below
+            // the plain product here)
+            let j0 = cellstudio::models::kinetics::exchange_current(e.rate_constant, ce, ce, cs, e.max_concentration);
             let a = 3.0 * e.active_fraction / e.particle_radius;
             GAS_CONSTANT * t / (e.charge_transfer_coefficient * FARADAY * 2.0 * j0) / (p.cell.area() * a * e.thickness)
         };

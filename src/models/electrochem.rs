@@ -66,9 +66,12 @@ impl Electrochem {
         e.diffusivity * arrhenius(e.diffusivity_activation_energy, self.t_ref(), t)
     }
 
-    /// Exchange-current density (A/m^2).
+    /// Exchange-current density (A/m^2) at electrolyte concentration `c_e` and surface
+    /// concentration `c_s` (mol/m^3), temperature `t` (K), all three square roots
+    /// regularised (the DFN's form; the SPM and SPMe inline theirs, see their voltages).
     pub fn j0(&self, side: Side, c_e: f64, c_s: f64, t: f64) -> f64 {
-        exchange_current(self.rate_constant(side, t), c_e, c_s, self.electrode(side).max_concentration)
+        let c_e_ref = self.params.electrolyte.initial_concentration;
+        exchange_current(self.rate_constant(side, t), c_e, c_e_ref, c_s, self.electrode(side).max_concentration)
     }
 
     /// Reaction rate constant at temperature `t` (K), A/m^2 (m^3/mol)^1.5: hoist it out of

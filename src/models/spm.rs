@@ -5,7 +5,7 @@
 //! thermal submodel is on.
 
 use super::electrochem::{Electrochem, Side};
-use super::kinetics::overpotential;
+use super::kinetics::{overpotential, particle_factor};
 use super::submodels::thermal::bernardi_heat;
 use super::{Model, PhysicsModel, push_tridiagonal};
 use crate::params::ParameterSet;
@@ -115,7 +115,11 @@ impl Model for Spm {
         let eta = |side: Side, c_s: f64| {
             let e = ec.electrode(side);
             let j = ec.mean_interfacial_current(side, current);
-            overpotential(j, ec.j0(side, c_e, c_s, temp), e.charge_transfer_coefficient, temp)
+            // PyBaMM 26.10's SPM regularises the particle factors of j0 but not the constant
+            // sqrt(c_e) (2.5e-7 of j0, 1e-5 mV): see docs/pybamm_equations.md, section 1.
+            let c_s = c_s.clamp(0.0, e.max_concentration);
+            let j0 = ec.rate_constant(side, temp) * c_e.sqrt() * particle_factor(c_s, e.max_concentration);
+            overpotential(j, j0, e.charge_transfer_coefficient, temp)
         };
         ec.ocp(Side::Positive, sp) + eta(Side::Positive, sp)
             - ec.ocp(Side::Negative, sn)
