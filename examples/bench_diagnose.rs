@@ -44,7 +44,9 @@ fn main() {
         let rounds = last.expect("one repeat");
         let verdict: String = report::verdict_in_words(&rounds[0]).chars().take(90).collect();
         let before = rounds[0].baseline.rmse_all;
-        let after = rounds.last().map(|d| d.baseline.rmse_all).unwrap_or(before);
+        // The last round's model, or the effect that round named on top of it.
+        let last = rounds.last().expect("one round");
+        let after = last.best().filter(|_| last.found).and_then(|c| c.fit.as_ref()).map_or(last.baseline.rmse_all, |f| f.rmse_all);
         println!(
             "| {case} | {kind} | {} | {hours:.2} | {} | {:.2} -> {:.2} | {s:.1} | {:.1} | {verdict}... |",
             rec.time.len(),

@@ -98,7 +98,8 @@ pub struct ResidualAnalysis {
     pub lag1_autocorrelation: f64,
     pub ljung_box: TestResult,
     pub runs: TestResult,
-    /// Whether noise cannot explain the residual: both whiteness tests reject at p < 0.001.
+    /// Whether noise cannot explain the residual: a whiteness test rejects at p < 0.001, or
+    /// the RMS is more than 1.5 times the point-to-point noise.
     pub structured: bool,
     /// `r` against current (slope in ohm).
     pub vs_current: Option<Regression>,
@@ -163,7 +164,7 @@ pub fn analyse(rec: &Recording, features: &Features, residual: &[f64], nominal_c
     let lb = ljung_box(&r, lags);
     let runs = runs_test(&r);
     let structure_ratio = rmse / noise;
-    let structured = lb.p_value < 1e-3 && runs.p_value < 1e-3;
+    let structured = lb.p_value < 1e-3 || runs.p_value < 1e-3 || structure_ratio > 1.5;
 
     // Steps: residual jump against current jump.
     let (mut di, mut dr) = (Vec::new(), Vec::new());

@@ -391,7 +391,11 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
                         let m = &options.margins;
                         out.comparison = select::compare(&baseline, &f, n_train);
                         let cmp = &out.comparison;
-                        out.clears_margins = cmp.delta_bic > m.min_delta_bic && cmp.holdout_gain >= m.min_holdout_gain && cmp.explained >= m.size_floor(noise);
+                        // ΔBIC and the Laplace evidence must agree.
+                        out.clears_margins = cmp.delta_bic > m.min_delta_bic
+                            && cmp.ln_bayes_factor > 0.0
+                            && cmp.holdout_gain >= m.min_holdout_gain
+                            && cmp.explained >= m.size_floor(noise);
                         // Plausibility of the candidate's own values, not the baseline's.
                         let (names, values): (Vec<String>, Vec<f64>) =
                             f.names.iter().zip(&f.values).filter(|(n, _)| !baseline.names.contains(n)).map(|(n, v)| (n.clone(), *v)).unzip();
@@ -411,7 +415,9 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
         let key = |c: &CandidateOutcome| (c.named, c.fit.is_some());
         key(b).cmp(&key(a)).then_with(|| b.comparison.delta_bic.total_cmp(&a.comparison.delta_bic))
     });
-    let structured = analysis.structured && baseline.rmse_all > options.margins.size_floor(noise);
+    // Structure: the whiteness tests reject noise, or the residual is twice the noise level,
+    // and what lies above the noise exceeds the size floor.
+    let structured = (analysis.structured || baseline.rmse_all > 2.0 * noise) && !no_room;
     let standings: Vec<select::Standing> =
         outcomes.iter().map(|c| select::Standing { candidate: c.candidate, comparison: c.comparison, named: c.named }).collect();
     let verdict = select::verdict(&standings, structured, options.margins.min_delta_bic);

@@ -215,7 +215,21 @@ pub fn verdict_in_words(d: &Diagnosis) -> String {
             let windows: Vec<String> = d.residual.segments.iter().take(3).map(|s| format!("{:.0}-{:.0} s", s.start, s.end)).collect();
             let best = d.best().map(|c| {
                 let why = c.implausible.clone().unwrap_or_else(|| {
-                    format!("cuts the hold-out RMSE by {:.0} % and removes {} (needed: {:.0} % and {})", 100.0 * c.comparison.holdout_gain, mv(c.comparison.explained), 100.0 * d.margins.min_holdout_gain, mv(floor))
+                    let (m, k) = (&d.margins, &c.comparison);
+                    let mut short = Vec::new();
+                    if k.delta_bic <= m.min_delta_bic {
+                        short.push(format!("ΔBIC {:.1} (needed > {})", k.delta_bic, m.min_delta_bic));
+                    }
+                    if k.ln_bayes_factor <= 0.0 {
+                        short.push(format!("Laplace ln Bayes factor {:.1} (needed > 0)", k.ln_bayes_factor));
+                    }
+                    if k.holdout_gain < m.min_holdout_gain {
+                        short.push(format!("hold-out cut {:.0} % (needed {:.0} %)", 100.0 * k.holdout_gain, 100.0 * m.min_holdout_gain));
+                    }
+                    if k.explained < floor {
+                        short.push(format!("removes {} (needed {})", mv(k.explained), mv(floor)));
+                    }
+                    format!("falls short: {}", short.join(", "))
                 });
                 format!(" The closest, {}, {why}.", c.name)
             });
@@ -228,8 +242,8 @@ pub fn verdict_in_words(d: &Diagnosis) -> String {
             )
         }
         Verdict::NoMissingPhysics => {
-            let why = if d.residual.structured {
-                format!("what remains (RMSE {}) is below the {} a named effect must remove", mv(b.rmse_all), mv(floor))
+            let why = if d.residual.structured || b.rmse_all > 1.5 * d.noise {
+                format!("what remains (RMSE {}, noise {}) is below the {} a named effect must remove", mv(b.rmse_all), mv(d.noise), mv(floor))
             } else {
                 format!("the residual (RMSE {}) is consistent with noise ({})", mv(b.rmse_all), mv(d.noise))
             };
@@ -303,7 +317,7 @@ pub fn markdown(d: &Diagnosis, plots: &[(String, String)]) -> String {
     );
     let _ = writeln!(
         s,
-        "A candidate is named when ΔBIC (with effective points and structural parameters counted) exceeds {}, it cuts the hold-out RMSE by at least {:.0} %, it removes at least {} RMS on held-out points ({}x the noise of {}, at least {}), and its fitted values are plausible.\n",
+        "A candidate is named when ΔBIC (with effective points and structural parameters counted) exceeds {} and the Laplace Bayes factor favours it, it cuts the hold-out RMSE by at least {:.0} %, it removes at least {} RMS on held-out points ({}x the noise of {}, at least {}), and its fitted values are plausible.\n",
         d.margins.min_delta_bic,
         100.0 * d.margins.min_holdout_gain,
         mv(d.margins.size_floor(d.noise)),
