@@ -256,6 +256,7 @@ fn run(cli: Cli) -> Result<(), Error> {
             for (k, d) in rounds.iter().enumerate() {
                 println!("{}# Round {} of {}\n\n{}", if k > 0 { "\n" } else { "" }, k + 1, rounds.len(), report::markdown(d, &[]));
             }
+            println!("\n{}\n", report::conclusion(&rounds));
             let written = report::write(&rounds, staged.path())?;
             for f in staged.commit(&written)? {
                 println!("wrote            {}", f.display());

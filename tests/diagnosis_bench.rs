@@ -4,7 +4,8 @@
 //! `../shared/tools/diagnosis-bench` judges it (its `judge_verdict.py`, copied beside the
 //! data): the first verdict names the concealed effect (for two effects, the rounds together
 //! name both), the negative control reports no missing physics, and where an effect exists
-//! the named model cuts the RMSE at least 5x.
+//! the named model cuts the RMSE at least 5x. For two effects, the conclusion over the rounds
+//! must keep both (an earlier stand-in superseded by later rounds does not count).
 
 use std::path::{Path, PathBuf};
 
@@ -63,6 +64,13 @@ fn run_case(name: &str) {
         println!("  round {}: {}", k + 1, d.summary);
     }
     assert!(judged(&t, &rounds), "{name}: verdict does not name {}: {}", t.effect, report::verdict_in_words(&rounds[0]));
+    if t.effect.contains('+') {
+        // Stricter than the bench's judge: the effects kept at the end (not superseded by
+        // later rounds) name each concealed effect.
+        let conclusion = report::conclusion(&rounds).to_lowercase();
+        let kept = conclusion.split("superseded").next().unwrap_or_default();
+        assert!(t.accept.iter().all(|g| g.iter().any(|w| kept.contains(w))), "{name}: {conclusion}");
+    }
     let before = rounds[0].baseline.rmse_all;
     if t.effect == "none" {
         assert!(!rounds[0].found, "{name}: the control names an effect");

@@ -19,6 +19,7 @@
 //!
 //! [`diagnose_rounds`] repeats the diagnosis on the augmented model to find a second effect.
 
+pub mod backward;
 pub mod candidates;
 pub mod features;
 pub mod locate;
@@ -154,6 +155,9 @@ pub fn describe(spec: &ModelSpec) -> String {
 #[derive(Clone, Debug, Serialize)]
 pub struct Diagnosis {
     pub model: String,
+    /// The user's model of this round.
+    #[serde(skip)]
+    pub spec: ModelSpec,
     pub points: usize,
     pub train_points: usize,
     pub holdout_points: usize,
@@ -175,6 +179,8 @@ pub struct Diagnosis {
     pub residual_after: Option<ResidualAnalysis>,
     /// Checks and events worth knowing (unit checks, truncation, temperature used).
     pub notes: Vec<String>,
+    /// On the last round: effects named in earlier rounds that the final model does not need.
+    pub superseded: Vec<backward::Superseded>,
     /// The verdict in plain words.
     pub summary: String,
     /// Wall time (s).
@@ -430,6 +436,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
     }
     let mut diagnosis = Diagnosis {
         model: describe(&options.spec),
+        spec: options.spec,
         points: features.valid.iter().filter(|v| **v).count(),
         train_points: n_train,
         holdout_points: split.holdout_points(),
@@ -444,6 +451,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
         verdict,
         residual_after,
         notes,
+        superseded: Vec::new(),
         summary: String::new(),
         seconds: 0.0,
         data,
@@ -470,6 +478,29 @@ pub fn diagnose_rounds(data: &Recording, base: &ParameterSet, options: &Diagnose
         options.spec = next.spec;
         options.fitted = next.fitted;
         options.fitted_baseline = Some(fit);
+    }
+    if rounds.iter().filter(|d| d.found).count() >= 2 {
+        let last = rounds.last().expect("two rounds");
+        let (spec, fitted, fit) = match last.best().filter(|_| last.found).and_then(|c| c.next.clone().zip(c.fit.clone())) {
+            Some((next, fit)) => (next.spec, next.fitted, fit),
+            None => (options.spec, options.fitted.clone(), last.baseline.clone()),
+        };
+        let model_base = last.best().filter(|_| last.found).and_then(|c| c.next.as_ref()).map_or(base.clone(), |n| n.base.clone());
+        let model = backward::FinalModel { spec, base: &model_base, fitted: &fitted, fit: &fit };
+        let superseded = backward::superseded(&rounds, &model, &options);
+        let last = rounds.last_mut().expect("two rounds");
+        for s in &superseded {
+            last.summary.push_str(&format!(
+                " Superseded: {} (round {}) is not needed once the later effects are in the model: without it the RMSE is {:.2} mV (with it {:.2} mV), ΔBIC {:.1}, Laplace ln Bayes factor {:.1}.",
+                s.name,
+                s.round,
+                s.rmse_without * 1e3,
+                s.rmse_with * 1e3,
+                s.delta_bic,
+                s.ln_bayes_factor
+            ));
+        }
+        last.superseded = superseded;
     }
     Ok(rounds)
 }

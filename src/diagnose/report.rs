@@ -252,6 +252,32 @@ pub fn verdict_in_words(d: &Diagnosis) -> String {
     }
 }
 
+/// The conclusion over all rounds: the effects named and kept (not superseded), and the fit
+/// they reach.
+pub fn conclusion(rounds: &[Diagnosis]) -> String {
+    let Some(last) = rounds.last() else { return String::new() };
+    let named: Vec<(usize, &CandidateOutcome)> = rounds.iter().enumerate().filter(|(_, d)| d.found).filter_map(|(k, d)| d.best().map(|c| (k + 1, c))).collect();
+    if named.is_empty() {
+        return format!("Conclusion: nothing named; the user's model stays at RMSE {} (noise {}).", mv(rounds[0].baseline.rmse_all), mv(rounds[0].noise));
+    }
+    let kept: Vec<String> = named.iter().filter(|(k, _)| !last.superseded.iter().any(|s| s.round == *k)).map(|(_, c)| c.name.clone()).collect();
+    let dropped: Vec<String> = last.superseded.iter().map(|s| format!("{} (round {})", s.name, s.round)).collect();
+    let final_rmse = last.best().filter(|_| last.found).and_then(|c| c.fit.as_ref()).map_or(last.baseline.rmse_all, |f| f.rmse_all);
+    let rmse = last.superseded.iter().map(|s| s.rmse_without).fold(final_rmse, f64::min);
+    let mut out = format!(
+        "Conclusion: {} explain{} the recording, RMSE {} -> {} (noise {}).",
+        kept.join(" + "),
+        if kept.len() == 1 { "s" } else { "" },
+        mv(rounds[0].baseline.rmse_all),
+        mv(rmse),
+        mv(rounds[0].noise)
+    );
+    if !dropped.is_empty() {
+        out.push_str(&format!(" Superseded by the later effects: {}.", dropped.join(", ")));
+    }
+    out
+}
+
 /// The verdict in plain words: the verdict first, then where the mismatch is, then notes.
 pub fn plain_words(d: &Diagnosis) -> String {
     let mut s = verdict_in_words(d);
@@ -427,6 +453,9 @@ pub fn write(rounds: &[Diagnosis], dir: &Path) -> Result<Vec<PathBuf>, Error> {
         }
         md.push_str(&markdown(d, &names));
         files.extend(plots.into_iter().map(|(_, p)| p));
+    }
+    if rounds.len() > 1 {
+        md.insert_str(0, &format!("{}\n\n", conclusion(rounds)));
     }
     let md_path = dir.join("diagnosis.md");
     crate::error::write_file(&md_path, md)?;
