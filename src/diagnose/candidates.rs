@@ -19,6 +19,7 @@ use crate::problem::fitting::{FitParameter, INITIAL_SOC, ModelSpec};
 pub enum Candidate {
     SeriesResistance,
     Electrolyte,
+    ElectrolyteComposite,
     ElectrolyteTransport,
     Kinetics,
     SolidDiffusion,
@@ -57,9 +58,10 @@ pub struct Augmentation {
 const MISMATCH_RANGE: f64 = 30.0;
 
 impl Candidate {
-    pub const ALL: [Candidate; 10] = [
+    pub const ALL: [Candidate; 11] = [
         Candidate::SeriesResistance,
         Candidate::Electrolyte,
+        Candidate::ElectrolyteComposite,
         Candidate::ElectrolyteTransport,
         Candidate::Kinetics,
         Candidate::SolidDiffusion,
@@ -75,6 +77,7 @@ impl Candidate {
         match self {
             Candidate::SeriesResistance => "series/contact resistance",
             Candidate::Electrolyte => "electrolyte transport",
+            Candidate::ElectrolyteComposite => "electrolyte transport (composite SPMe)",
             Candidate::ElectrolyteTransport => "electrolyte transport properties (diffusivity, conductivity)",
             Candidate::Kinetics => "charge-transfer kinetics (exchange-current density)",
             Candidate::SolidDiffusion => "solid (particle) diffusivity",
@@ -88,7 +91,7 @@ impl Candidate {
 
     pub fn class(self) -> Class {
         match self {
-            Candidate::SeriesResistance | Candidate::Electrolyte | Candidate::Thermal | Candidate::RcDynamics | Candidate::Hysteresis => {
+            Candidate::SeriesResistance | Candidate::Electrolyte | Candidate::ElectrolyteComposite | Candidate::Thermal | Candidate::RcDynamics | Candidate::Hysteresis => {
                 Class::MissingPhysics
             }
             _ => Class::ParameterMismatch,
@@ -100,6 +103,7 @@ impl Candidate {
         match self {
             Candidate::SeriesResistance => "an instantaneous voltage step at every current step, proportional to the current change and the same at every state of charge",
             Candidate::Electrolyte => "polarisation that grows with rate and relaxes over tens of seconds to minutes in rests (an SPM or SPMe used where the DFN's electrolyte is needed)",
+            Candidate::ElectrolyteComposite => "as electrolyte transport, with the SPMe's composite (first-order) electrolyte instead of the DFN's",
             Candidate::ElectrolyteTransport => "rate-dependent polarisation that builds over the first minutes of a load and relaxes in rests, with the electrolyte model already present",
             Candidate::Kinetics => "an instantaneous overpotential at current steps that is not proportional to the current (asinh) and grows towards the ends of the stoichiometry range",
             Candidate::SolidDiffusion => "an extra drop late in a high-rate discharge and slow (many minutes) relaxation in rests",
@@ -115,7 +119,7 @@ impl Candidate {
     pub fn plausible_range(self) -> &'static str {
         match self {
             Candidate::SeriesResistance => "0.1 to 100 mOhm",
-            Candidate::Electrolyte => "no fitted parameters",
+            Candidate::Electrolyte | Candidate::ElectrolyteComposite => "no fitted parameters",
             Candidate::ElectrolyteTransport | Candidate::Kinetics | Candidate::SolidDiffusion => "0.05 to 20 times the set's value, not on a search bound",
             Candidate::LithiumInventory => "up to 40 % of the cyclable lithium lost (or gained)",
             Candidate::ActiveMaterial => "up to 50 % of an electrode's active material lost",
@@ -190,6 +194,14 @@ impl Candidate {
                 let change = format!("{} -> {next}", spec.kind);
                 spec.kind = next;
                 (Vec::new(), change)
+            }
+            Candidate::ElectrolyteComposite => {
+                if spec.kind != ModelKind::Spm {
+                    return None;
+                }
+                spec.kind = ModelKind::Spme;
+                structural_parameters = 7;
+                (Vec::new(), "SPM -> SPMe".into())
             }
             Candidate::ElectrolyteTransport => {
                 if spec.kind == ModelKind::Spm {
@@ -311,7 +323,7 @@ impl Candidate {
                 let h = get("cell.hysteresis_voltage")?;
                 (h > 0.05).then(|| format!("hysteresis half-width {:.1} mV exceeds 50 mV", h * 1e3))
             }
-            Candidate::Electrolyte => None,
+            Candidate::Electrolyte | Candidate::ElectrolyteComposite => None,
         }
     }
 
