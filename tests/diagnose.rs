@@ -222,3 +222,19 @@ fn two_concealed_effects_are_named_in_successive_rounds() {
     // What the second round adds leaves noise.
     assert!(!rounds[1].residual_after.as_ref().unwrap().structured);
 }
+
+/// A user's model that cannot follow the recording (a negative electrode too thin for the
+/// charge the recording moves: its lithium runs out part-way) is diagnosed up to where it
+/// broke down, and the report says where, instead of stopping with a solver error.
+#[test]
+fn a_model_that_breaks_down_part_way_is_diagnosed_up_to_there() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/diagnosis-bench/b3_inventory_C2/recording.csv");
+    let rec = Recording::from_csv(&path).unwrap();
+    let mut p = chen2020();
+    p.negative.thickness = 55e-6;
+    let d = diagnose(&rec, &p, &DiagnoseOptions::new(ModelSpec::new(ModelKind::Spme, Submodels::default()))).unwrap();
+    let note = d.notes.iter().find(|n| n.contains("broke down")).expect("a note on where the model broke down");
+    println!("{note}\n{}", d.summary);
+    assert!(d.data.time.len() < rec.time.len(), "the diagnosed recording is cut");
+    assert!(d.summary.contains("broke down"));
+}

@@ -226,7 +226,8 @@ fn fit_baseline(data: &mut Recording, base: &ParameterSet, options: &DiagnoseOpt
         let user: Vec<f64> = options.fitted.iter().map(|p| p.initial).collect();
         starts = socs.iter().map(|s| user.iter().copied().chain([*s]).collect()).collect();
     }
-    for attempt in 0..2 {
+    const ATTEMPTS: usize = 3;
+    for attempt in 0..ATTEMPTS {
         let features = Features::of(data);
         let split = Split::blocks(&data.time, &features.valid, options.blocks, options.holdout_every);
         if split.train_points() <= fitted.len() + 10 || split.holdout_points() == 0 {
@@ -238,8 +239,9 @@ fn fit_baseline(data: &mut Recording, base: &ParameterSet, options: &DiagnoseOpt
         let label = format!("{} as given", describe(&options.spec));
         match refit::fit_and_score(label, options.spec, base.clone(), fitted.clone(), 0, &starts, data, &split, &options.fit) {
             Ok(b) => return Ok((b, split, fitted)),
-            Err(Error::Solver { t, reason }) if attempt == 0 && t > 0.0 => {
-                let t_cut = data.time[0] + t;
+            Err(Error::Solver { t, reason }) if attempt + 1 < ATTEMPTS && t > 0.0 => {
+                // Cut with a margin: the fit of the initial state explores around the start.
+                let t_cut = data.time[0] + 0.95 * t;
                 let keep = data.time.iter().position(|x| *x >= t_cut - 1e-9).unwrap_or(data.time.len());
                 notes.push(format!(
                     "The user's model broke down {t:.0} s into the recording ({reason}); the first {keep} of {} points (to {:.0} s) are diagnosed. A model that cannot follow the recording is itself evidence of a mismatch there.",

@@ -207,10 +207,15 @@ fn jacobian(problem: &FittingProblem, scale: &Scale, z: &[f64], bounds: &[(f64, 
             let (lo, hi) = bounds[i];
             let h = if problem.parameters[i].log { 1e-2 } else { 2e-3 };
             let h = if z[i] + h > hi { -h.min(z[i] - lo).max(h * 1e-3) } else { h };
-            let mut zi = z.to_vec();
-            zi[i] += h;
-            let v = problem.simulate(&scale.to_x(&zi))?;
-            Ok(residuals(problem, &v).iter().zip(r).map(|(a, b)| (a - b) / h).collect())
+            // Forward, or backward when the model fails on the forward side.
+            let column = |h: f64| -> Result<Vec<f64>, Error> {
+                let mut zi = z.to_vec();
+                zi[i] = (z[i] + h).clamp(lo, hi);
+                let h = zi[i] - z[i];
+                let v = problem.simulate(&scale.to_x(&zi))?;
+                Ok(residuals(problem, &v).iter().zip(r).map(|(a, b)| (a - b) / h).collect())
+            };
+            column(h).or_else(|_| column(-h))
         })
         .collect()
 }
