@@ -126,6 +126,9 @@ pub struct ResidualAnalysis {
     pub segments: Vec<Segment>,
 }
 
+/// Least temperature rise (K) the residual is regressed on: ten steps of a 0.1 K thermocouple.
+pub const MIN_TEMPERATURE_SPAN: f64 = 1.0;
+
 fn rms(v: &[f64]) -> f64 {
     if v.is_empty() { 0.0 } else { (v.iter().map(|x| x * x).sum::<f64>() / v.len() as f64).sqrt() }
 }
@@ -187,6 +190,9 @@ pub fn analyse(rec: &Recording, features: &Features, residual: &[f64], nominal_c
     } else {
         (0.0, 0.0)
     };
+    // A temperature that moves by less than a few thermocouple steps (0.1 K) carries no
+    // signal: regressing on it turns one step into millivolts per kelvin.
+    let resolved_rise = features.temperature_rise.as_ref().filter(|t| t.iter().fold(0.0f64, |m, v| m.max(v.abs())) >= MIN_TEMPERATURE_SPAN);
     let since = pick(&features.since_step);
     let mut windows = Vec::new();
     for load in [true, false] {
@@ -244,8 +250,8 @@ pub fn analyse(rec: &Recording, features: &Features, residual: &[f64], nominal_c
         structured,
         vs_current: regress(&current, &r),
         vs_capacity: regress(&capacity, &r),
-        vs_temperature: features.temperature_rise.as_ref().and_then(|t| regress(&pick(t), &r)),
-        vs_heating: features.temperature_rise.as_ref().and_then(|t| {
+        vs_temperature: resolved_rise.and_then(|t| regress(&pick(t), &r)),
+        vs_heating: resolved_rise.and_then(|t| {
             let heating: Vec<f64> = pick(t).iter().zip(&current).map(|(t, i)| t * i).collect();
             regress(&heating, &r)
         }),
