@@ -262,7 +262,15 @@ pub fn conclusion(rounds: &[Diagnosis]) -> String {
     if named.is_empty() {
         return format!("Conclusion: nothing named; the user's model stays at RMSE {} (noise {}).", mv(rounds[0].baseline.rmse_all), mv(rounds[0].noise));
     }
-    let kept: Vec<String> = named.iter().filter(|(k, _)| !last.superseded.iter().any(|s| s.round == *k)).map(|(_, c)| c.name.clone()).collect();
+    // A tied round is named by both candidates.
+    let name_of = |k: usize, c: &CandidateOutcome| match &rounds[k - 1].verdict {
+        Verdict::Tie { second, .. } => {
+            let other = rounds[k - 1].candidates.iter().find(|o| o.candidate == *second).map_or(second.name().to_string(), |o| o.name.clone());
+            format!("({} or {})", c.name, other)
+        }
+        _ => c.name.clone(),
+    };
+    let kept: Vec<String> = named.iter().filter(|(k, _)| !last.superseded.iter().any(|s| s.round == *k)).map(|(k, c)| name_of(*k, c)).collect();
     let dropped: Vec<String> = last.superseded.iter().map(|s| format!("{} (round {})", s.name, s.round)).collect();
     let final_rmse = last.best().filter(|_| last.found).and_then(|c| c.fit.as_ref()).map_or(last.baseline.rmse_all, |f| f.rmse_all);
     let rmse = last.superseded.iter().map(|s| s.rmse_without).fold(final_rmse, f64::min);
