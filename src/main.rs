@@ -257,7 +257,7 @@ fn run(cli: Cli) -> Result<(), Error> {
                 println!("{}# Round {} of {}\n\n{}", if k > 0 { "\n" } else { "" }, k + 1, rounds.len(), report::markdown(d, &[]));
             }
             println!("\n{}\n", report::conclusion(&rounds));
-            let written = report::write(&rounds, staged.path())?;
+            let written = cellstudio::report::diagnosis_files::write(&rounds, staged.path())?;
             for f in staged.commit(&written)? {
                 println!("wrote            {}", f.display());
             }

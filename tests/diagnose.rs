@@ -64,7 +64,7 @@ fn run(name: &str, rec: &Recording, user: ModelKind) -> Diagnosis {
     let d = diagnose(rec, &chen2020(), &DiagnoseOptions::new(ModelSpec::new(user, Submodels::default()))).unwrap();
     print_outcome(name, &d, t.elapsed().as_secs_f64());
     let dir = std::env::temp_dir().join("cellstudio_diagnose_tests").join(name);
-    let files = cellstudio::diagnose::report::write(std::slice::from_ref(&d), &dir).unwrap();
+    let files = cellstudio::report::diagnosis_files::write(std::slice::from_ref(&d), &dir).unwrap();
     assert!(files.iter().all(|f| f.exists()));
     d
 }
@@ -210,7 +210,7 @@ fn two_concealed_effects_are_named_in_successive_rounds() {
     }
     println!("two rounds: {:.1} s", t.elapsed().as_secs_f64());
     let dir = std::env::temp_dir().join("cellstudio_diagnose_tests").join("two_effects");
-    cellstudio::diagnose::report::write(&rounds, &dir).unwrap();
+    cellstudio::report::diagnosis_files::write(&rounds, &dir).unwrap();
     assert_eq!(rounds.len(), 2);
     assert_found(&rounds[0], Candidate::SeriesResistance);
     // The second effect is smaller (2.2 mV RMSE over 1 mV noise): it must bring the RMSE to
