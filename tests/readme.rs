@@ -10,7 +10,7 @@ const REPO: &str = env!("CARGO_MANIFEST_DIR");
 /// Commands not run here, by their first words, and why.
 const SKIPPED: [(&str, &str); 2] = [
     ("sample ", "about 60 s of MCMC; the samplers are checked in tests/samplers.rs"),
-    ("diagnose ", "about 30 s and needs the user's recording.csv; tests/diagnose.rs covers it"),
+    ("diagnose ", "reads a bench recording from tests/data; tests/diagnosis_bench.rs runs every bench case"),
 ];
 
 fn copy_dir(from: &Path, to: &Path) {
