@@ -199,10 +199,6 @@ impl Diagnosis {
     }
 }
 
-fn mv(v: f64) -> String {
-    format!("{:.2} mV", v * 1e3)
-}
-
 /// Fits one candidate on top of the baseline; `warm` holds the baseline's fitted parameters
 /// at their fitted values.
 fn refit_candidate(c: Candidate, aug: candidates::Augmentation, warm: &[FitParameter], options: &DiagnoseOptions, data: &Recording, split: &Split) -> (Option<FitOutcome>, Option<String>, Option<NextModel>) {
@@ -302,7 +298,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
         .take(options.max_refits)
         .map(|&c| {
             let aug = match c.not_identifiable(&data, &features) {
-                _ if no_room => Err(format!("not refitted: the user's model leaves {} RMS above the noise, less than the {} a named effect must remove", mv(room), mv(options.margins.size_floor(noise)))),
+                _ if no_room => Err(format!("not refitted: the user's model leaves {} RMS above the noise, less than the {} a named effect must remove", report::mv(room), report::mv(options.margins.size_floor(noise)))),
                 Some(why) => Err(format!("not identifiable from this recording: {why}")),
                 None => c.augment(&options.spec, base, &fitted_paths).ok_or_else(|| "not applicable to this model".to_string()),
             };

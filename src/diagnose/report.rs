@@ -32,7 +32,7 @@ pub fn format_parameter(path: &str, value: f64, std_error: f64) -> String {
 
 /// Millivolts with two decimals, or "none" for a value the recording does not give (e.g.
 /// the mean residual in rests after a charge when it has no charge).
-fn mv(v: f64) -> String {
+pub(super) fn mv(v: f64) -> String {
     if v.is_finite() { format!("{:.2} mV", v * 1e3) } else { "none".into() }
 }
 
