@@ -5,7 +5,7 @@ use std::time::Instant;
 
 use serde::Serialize;
 
-use super::fitting::FittingProblem;
+use super::fitting::{FittingProblem, Simulated};
 use crate::cost::{CostKind, CostValue};
 use crate::error::Error;
 use crate::optim::{Bounds, Objective, OptimOptions, Problem, StopReason, TraceEntry, TraceObserver, Transform, by_name};
@@ -44,7 +44,7 @@ impl FitObjective<'_> {
         let sim = self.problem.simulate_with_sensitivities(theta)?;
         let c = self.cost_of(theta, sigma, &sim.voltage);
         let mut g = vec![0.0; x.len()];
-        for (row, d) in sim.sensitivity.iter().zip(&c.d_residual) {
+        for (row, d) in sim.sensitivity_rows().zip(&c.d_residual) {
             for (gk, s) in g.iter_mut().zip(row) {
                 *gk += d * s;
             }
@@ -132,7 +132,7 @@ pub fn fit(problem: &FittingProblem, cost: CostKind, optimiser: &str, options: O
     }
     let theta = &result.x[..problem.dim()];
     let sim = problem.simulate_with_sensitivities(theta)?;
-    let id = identifiability(problem, &sim.voltage, &sim.sensitivity)?;
+    let id = identifiability(problem, &sim)?;
     Ok(FitResult {
         names,
         x: result.x.clone(),
@@ -160,9 +160,9 @@ pub struct Identifiability {
 
 /// Covariance `s² (Sᵀ W S)⁻¹` of least squares, with `s²` the weighted residual variance over
 /// `N - P` degrees of freedom; a direction the data do not inform has an infinite error.
-pub fn identifiability(problem: &FittingProblem, voltage: &[f64], sensitivity: &[Vec<f64>]) -> Result<Identifiability, Error> {
+pub fn identifiability(problem: &FittingProblem, sim: &Simulated) -> Result<Identifiability, Error> {
     let p = problem.dim();
-    let r = problem.residuals(voltage);
+    let r = problem.residuals(&sim.voltage);
     let w = &problem.weights;
     let weight: f64 = w.iter().sum();
     let sse: f64 = r.iter().zip(w).map(|(r, w)| w * r * r).sum();
@@ -174,7 +174,7 @@ pub fn identifiability(problem: &FittingProblem, voltage: &[f64], sensitivity: &
     // Fisher information in relative units (θ_k ∂V/∂θ_k) keeps the eigenproblem well scaled.
     let scale: Vec<f64> = (0..p).map(|k| problem.parameters[k].initial.abs().max(f64::MIN_POSITIVE)).collect();
     let mut fisher = vec![0.0; p * p];
-    for (row, &wi) in sensitivity.iter().zip(w) {
+    for (row, &wi) in sim.sensitivity_rows().zip(w) {
         for a in 0..p {
             for b in 0..p {
                 fisher[a * p + b] += wi * row[a] * scale[a] * row[b] * scale[b];
