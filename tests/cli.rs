@@ -328,3 +328,27 @@ fn a_sweep_with_no_valid_design_fails_and_writes_nothing() {
     fails_with(&run(&s.0, &["sweep", study.to_str().unwrap()]), &["no valid design", "3 store less than 0.001 of the baseline's energy"]);
     assert_eq!(s.entries(), vec!["design.toml"]);
 }
+
+#[test]
+fn a_fit_pinned_on_a_bound_fails_and_a_truncated_fit_says_so() {
+    let s = Scratch::new("pinned");
+    // The seed recording has R = 10 mOhm; a search range that ends at 2 mOhm pins the fit there.
+    let study = fit_study(&s, "[cost]\nkind = \"sse\"\n");
+    let text = std::fs::read_to_string(&study).unwrap().replace("initial = 0.005\n", "initial = 0.001\n").replace("upper = 0.1\n", "upper = 0.002\n");
+    std::fs::write(&study, text).unwrap();
+    let o = run(&s.0, &["fit", study.to_str().unwrap()]);
+    fails_with(&o, &["parameters.cell.contact_resistance", "ended on a bound", "no estimate"]);
+    // Written for inspection, with the bound named in the report.
+    let report = std::fs::read_to_string(s.path("out/report.md")).unwrap();
+    assert!(report.contains("cell.contact_resistance = 0.002 at its upper bound"), "{report}");
+
+    // One iteration from a start 2x away: a result, but the report says the search was cut short.
+    let study = fit_study(&s, "[cost]\nkind = \"sse\"\n");
+    let text = std::fs::read_to_string(&study).unwrap().replace("seed = 1\n", "seed = 1\nmax_iterations = 1\n");
+    std::fs::write(&study, text).unwrap();
+    let o = run(&s.0, &["fit", study.to_str().unwrap()]);
+    succeeds(&o);
+    assert!(stderr(&o).contains("warning: the fit stopped on its iteration cap (1 iterations"), "{}", stderr(&o));
+    let report = std::fs::read_to_string(s.path("out/report.md")).unwrap();
+    assert!(report.contains("raise [optimiser] max_iterations"), "{report}");
+}

@@ -8,7 +8,7 @@ use serde::Serialize;
 use super::fitting::{FittingProblem, Simulated};
 use crate::cost::{CostKind, CostValue};
 use crate::error::Error;
-use crate::optim::{Bounds, Objective, OptimOptions, Problem, StopReason, TraceEntry, TraceObserver, Transform, by_name};
+use crate::optim::{Bounds, Objective, OptimOptions, Problem, ProgressObserver, StopReason, TraceEntry, Transform, by_name};
 
 /// Bounds and start of the noise level when it is fitted (V).
 pub const SIGMA_BOUNDS: (f64, f64) = (1e-5, 0.5);
@@ -123,9 +123,10 @@ pub fn fit(problem: &FittingProblem, cost: CostKind, optimiser: &str, options: O
         names.push("sigma".into());
     }
     let search = Problem::new(&objective, Bounds::new(lower, upper)?)?.with_transforms(transforms)?;
-    let mut trace = TraceObserver::default();
+    let mut progress = ProgressObserver::new("fit", options.max_iterations, |f| format!("cost {f:.4e}"));
     let start = Instant::now();
-    let result = by_name(optimiser, options)?.minimise(&search, &x0, &mut trace)?;
+    let result = by_name(optimiser, options)?.minimise(&search, &x0, &mut progress)?;
+    let trace = progress.finish();
     let seconds = start.elapsed().as_secs_f64();
     if !result.f.is_finite() {
         return Err(Error::Solver { t: 0.0, reason: "every simulation of the fit failed".into() });

@@ -8,6 +8,7 @@ use std::path::{Path, PathBuf};
 
 use rand::SeedableRng;
 use rand_distr::{Distribution, Normal};
+use indicatif::ParallelProgressIterator;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
@@ -193,9 +194,12 @@ pub struct FitOutcome {
     /// RMS residual at the initial parameters (V).
     pub initial_rmse: f64,
     pub files: Vec<PathBuf>,
-    /// Notes (synthetic noise) and warnings (parameters at a bound), also in the report.
+    /// Notes (synthetic noise) and warnings (parameters at a bound, a truncated search), also
+    /// in the report.
     pub notes: Vec<String>,
     pub warnings: Vec<String>,
+    /// Fitted parameters that ended on a bound of their search range: no estimate of them.
+    pub at_bound: Vec<String>,
 }
 
 /// Fits the study's problem, then writes `report.md`, `fit.json`, `fit_voltage.svg`,
@@ -218,7 +222,9 @@ pub(crate) fn fit_into(study: &FitStudy, data: Option<&Path>, dir: &Path) -> Res
     let names: Vec<String> = problem.parameters.iter().map(|p| p.path.clone()).collect();
     let lower: Vec<f64> = problem.parameters.iter().map(|p| p.lower).collect();
     let upper: Vec<f64> = problem.parameters.iter().map(|p| p.upper).collect();
-    let warnings = super::at_bound_warnings("the fit", &names, &result.x, &lower, &upper);
+    let mut warnings = super::at_bound_warnings("the fit", &names, &result.x, &lower, &upper);
+    let at_bound: Vec<String> = super::on_bounds(&result.x, &lower, &upper).into_iter().map(|(k, _)| names[k].clone()).collect();
+    warnings.extend(super::truncation_warning("the fit", &result.stop, result.iterations, result.evaluations));
     let mut files = Vec::new();
     let t = &problem.data.time;
     let path = dir.join("fit_voltage.svg");
@@ -259,7 +265,7 @@ pub(crate) fn fit_into(study: &FitStudy, data: Option<&Path>, dir: &Path) -> Res
         let _ = writeln!(md, "\n**Warning:** {w}.");
     }
     write_output(dir, "report.md", md, &mut files)?;
-    Ok(FitOutcome { result, initial_rmse, files, notes, warnings })
+    Ok(FitOutcome { result, initial_rmse, files, notes, warnings, at_bound })
 }
 
 fn rms(r: &[f64], w: &[f64]) -> f64 {
@@ -282,8 +288,13 @@ fn landscape(problem: &FittingProblem, cost: CostKind, result: &FitResult, point
     };
     let (xs, ys) = (axis(0), axis(1));
     let cells: Vec<(usize, usize)> = (0..points).flat_map(|i| (0..points).map(move |j| (i, j))).collect();
+    let bar = indicatif::ProgressBar::new(cells.len() as u64);
+    if let Ok(style) = indicatif::ProgressStyle::with_template("landscape {bar:30} {pos}/{len} points [{elapsed}, eta {eta}]") {
+        bar.set_style(style);
+    }
     let values: Vec<f64> = cells
         .par_iter()
+        .progress_with(bar.clone())
         .map(|&(i, j)| {
             let mut x = result.x.clone();
             x[0] = xs[i];
@@ -292,6 +303,7 @@ fn landscape(problem: &FittingProblem, cost: CostKind, result: &FitResult, point
             objective.evaluate(&x)
         })
         .collect();
+    bar.finish_and_clear();
     let shown = |k: usize, v: f64| if problem.parameters[k].log { v.log10() } else { v };
     let fmin = values.iter().copied().filter(|v| v.is_finite()).fold(f64::INFINITY, f64::min).min(result.cost);
     let spread = values.iter().copied().filter(|v| v.is_finite()).fold(0.0f64, |m, v| m.max(v - fmin));
