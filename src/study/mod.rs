@@ -62,6 +62,12 @@ impl CellChoice {
     pub fn load(&self) -> Result<ParameterSet, Error> {
         let mut p = match self.parameter_set.as_str() {
             "chen2020" => chen2020(),
+            path if !Path::new(path).is_file() => {
+                return Err(Error::InvalidSetting {
+                    field: "cell.parameter_set".into(),
+                    reason: format!("`{path}` is neither a built-in set (chen2020) nor a parameter file"),
+                });
+            }
             path => ParameterSet::from_file(Path::new(path))?,
         };
         apply_overrides(&mut p, &self.overrides)?;
