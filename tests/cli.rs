@@ -352,3 +352,27 @@ fn a_fit_pinned_on_a_bound_fails_and_a_truncated_fit_says_so() {
     let report = std::fs::read_to_string(s.path("out/report.md")).unwrap();
     assert!(report.contains("raise [optimiser] max_iterations"), "{report}");
 }
+
+#[test]
+fn fit_names_a_recording_in_minutes_or_milliamps_before_any_work() {
+    let s = Scratch::new("units");
+    let study = fit_study(&s, "[cost]\nkind = \"sse\"\n");
+    let seed = std::fs::read_to_string(Path::new(REPO).join("tests/data/spm_contact_resistance_seed.csv")).unwrap();
+    let rescaled = |column: usize, factor: f64| -> String {
+        let mut lines = seed.lines();
+        let mut out = format!("{}\n", lines.next().unwrap());
+        for line in lines {
+            let mut cells: Vec<String> = line.split(',').map(str::to_string).collect();
+            cells[column] = (cells[column].parse::<f64>().unwrap() * factor).to_string();
+            out += &format!("{}\n", cells.join(","));
+        }
+        out
+    };
+    let minutes = s.write("minutes.csv", &rescaled(0, 1.0 / 60.0));
+    let o = run(&s.0, &["fit", study.to_str().unwrap(), "--data", minutes.to_str().unwrap()]);
+    fails_with(&o, &["minutes.csv", "likely unit error", "time_unit = \"min\""]);
+    let milliamps = s.write("milliamps.csv", &rescaled(1, 1e3));
+    let o = run(&s.0, &["fit", study.to_str().unwrap(), "--data", milliamps.to_str().unwrap()]);
+    fails_with(&o, &["milliamps.csv", "likely unit error", "current_unit = \"mA\""]);
+    assert!(!s.path("out").exists());
+}

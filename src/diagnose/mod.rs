@@ -254,12 +254,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
     let start = std::time::Instant::now();
     options.validate()?;
     let mut notes = Vec::new();
-    let window = base.cell.upper_cutoff - base.cell.lower_cutoff;
-    let findings = data.check_against_cell(base.cell.nominal_capacity, window);
-    if let Some(f) = findings.iter().find(|f| f.unit_error) {
-        return Err(Error::InvalidSetting { field: "data".into(), reason: format!("likely unit error: {}", f.message) });
-    }
-    notes.extend(findings.into_iter().map(|f| format!("Recording check: {}.", f.message)));
+    notes.extend(data.refuse_unit_errors("the recording", base.cell.nominal_capacity, (base.cell.lower_cutoff, base.cell.upper_cutoff))?);
     let mut data = data.clone();
     // The cell's temperature is part of the recording: an isothermal model runs at the
     // first recorded temperature, a thermal one starts there.

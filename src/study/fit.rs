@@ -183,8 +183,19 @@ impl FitStudy {
 
     /// The fitting problem of the study.
     pub fn problem(&self, data: Option<&Path>) -> Result<FittingProblem, Error> {
-        let problem = FittingProblem::new(self.model, self.cell.load()?, self.parameters.clone(), self.recording(data)?)?;
-        if self.data.start_at_rest_voltage { problem.starting_at_rest() } else { Ok(problem) }
+        self.problem_and_notes(data).map(|(problem, _)| problem)
+    }
+
+    /// [`problem`](Self::problem), and the recording checks' notes; a likely unit error in the
+    /// recording (minutes read as seconds, mA as A) is an error before any fit.
+    pub fn problem_and_notes(&self, data: Option<&Path>) -> Result<(FittingProblem, Vec<String>), Error> {
+        let cell = self.cell.load()?;
+        let recording = self.recording(data)?;
+        let file = data.unwrap_or(&self.data.file).display().to_string();
+        let notes = recording.refuse_unit_errors(&file, cell.cell.nominal_capacity, (cell.cell.lower_cutoff, cell.cell.upper_cutoff))?;
+        let problem = FittingProblem::new(self.model, cell, self.parameters.clone(), recording)?;
+        let problem = if self.data.start_at_rest_voltage { problem.starting_at_rest()? } else { problem };
+        Ok((problem, notes))
     }
 }
 
@@ -213,12 +224,12 @@ pub fn run_fit(study: &FitStudy, data: Option<&Path>) -> Result<FitOutcome, Erro
 
 /// [`run_fit`] writing into `dir` (a staged output folder).
 pub(crate) fn fit_into(study: &FitStudy, data: Option<&Path>, dir: &Path) -> Result<FitOutcome, Error> {
-    let problem = study.problem(data)?;
+    let (problem, checks) = study.problem_and_notes(data)?;
     let (method, options) = study.optimiser()?;
     let initial_voltage = problem.simulate(&problem.initial())?;
     let initial_rmse = rms(&problem.residuals(&initial_voltage), &problem.weights);
     let result = fit(&problem, study.cost, &method, options)?;
-    let notes: Vec<String> = study.noise_note(data).into_iter().collect();
+    let notes: Vec<String> = study.noise_note(data).into_iter().chain(checks).collect();
     let names: Vec<String> = problem.parameters.iter().map(|p| p.path.clone()).collect();
     let lower: Vec<f64> = problem.parameters.iter().map(|p| p.lower).collect();
     let upper: Vec<f64> = problem.parameters.iter().map(|p| p.upper).collect();
