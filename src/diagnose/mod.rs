@@ -352,9 +352,15 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
         })
         .collect();
     progress.finish_and_clear();
+    // Named candidates first, compared with one another at common effective points; the
+    // others by their gain over the user's model.
+    let n_common = select::common_effective_points(outcomes.iter().filter(|c| c.named).map(|c| &c.comparison));
     outcomes.sort_by(|a, b| {
         let key = |c: &CandidateOutcome| (c.named, c.fit.is_some());
-        key(b).cmp(&key(a)).then_with(|| b.comparison.delta_bic.total_cmp(&a.comparison.delta_bic))
+        key(b).cmp(&key(a)).then_with(|| match a.named && b.named {
+            true => a.comparison.bic_at(n_common).total_cmp(&b.comparison.bic_at(n_common)),
+            false => b.comparison.delta_bic.total_cmp(&a.comparison.delta_bic),
+        })
     });
     // Structure: the whiteness tests reject noise, or the residual is twice the noise level,
     // and what lies above the noise exceeds the size floor.
