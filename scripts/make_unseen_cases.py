@@ -98,6 +98,22 @@ def main(root):
                {"effect": "lithium_inventory_loss", "candidate_model": "spme", "accept": ["inventory", "stoichiometr", "capacity"],
                 "note": "8 % less lithium in the negative electrode, C/2 GITT"}, seed=6)
 
+    # Second batch, made after the first had been judged and the selection fixed (6/6 at the
+    # first run).
+    p = scaled(chen(), "Positive particle diffusivity [m2.s-1]", 0.3)
+    write_case(root, "v1_diffusivity_positive_1C", lion.DFN(), p, discharge("1C"), {"effect": "solid_diffusivity", "candidate_model": "dfn", "accept": ["diffusiv"], "note": "positive particle diffusivity x0.3"}, seed=11)
+    p = chen()
+    for side in ["Negative", "Positive"]:
+        p = scaled(p, f"{side} electrode exchange-current density [A.m-2]", 0.3)
+    write_case(root, "v2_kinetics_1C", lion.DFN(), p, discharge("1C"), {"effect": "kinetics", "candidate_model": "dfn", "accept": ["kinetic", "charge transfer", "exchange"], "note": "exchange currents x0.3, 1C"}, seed=12)
+    p = chen(); p.update({"Total heat transfer coefficient [W.m-2.K-1]": 10.0})
+    write_case(root, "v3_thermal_1p5C", lion.DFN(options={"thermal": "lumped"}), p, discharge("1.5C"), {"effect": "thermal", "candidate_model": "dfn", "accept": ["thermal", "heat"], "note": "lumped self-heating h = 10, 1.5C"}, temperature=True, seed=13)
+    write_case(root, "v4_control_cycle", lion.SPMe(), chen(), ["Discharge at C/3 for 90 minutes", "Rest for 20 minutes", "Charge at C/3 for 60 minutes", "Rest for 20 minutes"], {"effect": "none", "candidate_model": "spme", "accept": ["no missing"], "note": "negative control, C/3 partial cycle"}, seed=14)
+    p = chen(); p.update({"Contact resistance [Ohm]": 0.02}, check_already_exists=False)
+    write_case(root, "v5_contact_two_rates", lion.SPM(options={"contact resistance": "true"}), p, ["Discharge at 1C for 60 seconds", "Rest for 10 minutes", "Discharge at 2C for 60 seconds", "Rest for 10 minutes"] * 4, {"effect": "contact_resistance", "candidate_model": "spm", "accept": ["contact", "series resistance"], "note": "20 mOhm, pulses at 1C and 2C"}, seed=15)
+    p = scaled(chen(), "Initial concentration in negative electrode [mol.m-3]", 0.95)
+    write_case(root, "v6_inventory_dfn_C5", lion.DFN(), p, discharge("C/5"), {"effect": "lithium_inventory_loss", "candidate_model": "dfn", "accept": ["inventory", "stoichiometr", "capacity"], "note": "5 % less negative lithium, C/5"}, seed=16)
+
 
 if __name__ == "__main__":
     main(sys.argv[1] if len(sys.argv) > 1 else "out/unseen-cases")

@@ -12,7 +12,10 @@
 //! check that it is not fitted to the bench: negative particle diffusivity, negative LAM,
 //! electrolyte conductivity, a DFN control of pulses, contact resistance at 10 degC, and
 //! lithium loss under GITT. Their first run named 5 of 6; the sixth (contact resistance vs
-//! electrolyte conductivity, indistinguishable at one rate) is now an honest tie.
+//! electrolyte conductivity, indistinguishable at one rate) is now an honest tie. A second
+//! batch (v1-v6: positive diffusivity, kinetics at 1C, self-heating at 1.5C, a C/3 control
+//! cycle, resistance from pulses at two rates, lithium loss at C/5 with the DFN) was made
+//! after that fix and named 6 of 6 at its first run.
 
 use std::path::{Path, PathBuf};
 
@@ -156,4 +159,34 @@ fn u5_contact_resistance_at_10_degc_spme() {
 #[test]
 fn u6_lithium_inventory_gitt_spme() {
     run_case("diagnosis-extra/u6_inventory_gitt");
+}
+
+#[test]
+fn v1_positive_diffusivity_dfn() {
+    run_case("diagnosis-extra/v1_diffusivity_positive_1C");
+}
+
+#[test]
+fn v2_kinetics_constant_current_dfn() {
+    run_case("diagnosis-extra/v2_kinetics_1C");
+}
+
+#[test]
+fn v3_self_heating_dfn() {
+    run_case("diagnosis-extra/v3_thermal_1p5C");
+}
+
+#[test]
+fn v4_negative_control_cycle_spme() {
+    run_case("diagnosis-extra/v4_control_cycle");
+}
+
+#[test]
+fn v5_contact_resistance_two_rates_spm() {
+    run_case("diagnosis-extra/v5_contact_two_rates");
+}
+
+#[test]
+fn v6_lithium_inventory_dfn() {
+    run_case("diagnosis-extra/v6_inventory_dfn_C5");
 }
