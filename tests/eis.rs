@@ -74,7 +74,8 @@ mod impedance {
                 "{kind} f = {f} Hz: |Z| {mag_fd:.6e} vs {mag_td:.6e} ohm (rel {e_mag:.1e}), phase {ph_fd:.6e} vs {ph_td:.6e} rad (rel {e_ph:.1e}), {} steps",
                 td.stats.steps
             );
-            assert!(e_mag < 0.01 && e_ph < 0.01, "{kind} at {f} Hz");
+            // Achieved at most 2.3e-4 (magnitude) and 2.8e-4 (phase).
+            assert!(e_mag < 1e-3 && e_ph < 1e-3, "{kind} at {f} Hz");
         }
     }
 

@@ -60,7 +60,8 @@ fn sensitivities_match_finite_differences() {
             size = size.max(fd.abs());
         }
         println!("parameter {k}: max |dV/dθ| = {size:.4e}, max |sens - fd| = {worst:.3e}");
-        assert!(worst < 1e-3 * size, "parameter {k}: {worst} vs {size}");
+        // Achieved 1.4e-4 (D_n) and 1e-7 (R) of the largest sensitivity.
+        assert!(worst < 5e-4 * size, "parameter {k}: {worst} vs {size}");
     }
 }
 

@@ -118,6 +118,11 @@ impl SparseSystem {
         }
     }
 
+    /// Whether the last factorisation fell back to partial pivoting (a tiny static pivot).
+    pub fn pivoted(&self) -> bool {
+        self.state == Factorised::Pivoting
+    }
+
     /// Entries of the triangular factors of the unpivoted LU, fill included.
     pub fn factor_nnz(&self) -> usize {
         self.lu.nnz()
