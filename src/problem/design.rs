@@ -7,7 +7,7 @@ use serde::{Deserialize, Serialize};
 use crate::error::Error;
 use crate::geometry::{BuilderPool, MeshSizes, ModelBuilder};
 use crate::models::{ModelKind, Submodels};
-use crate::params::{FARADAY, ParameterSet};
+use crate::params::{CellFormat, FARADAY, MassBasis, ParameterSet};
 use crate::protocol::{Protocol, Step};
 use crate::simulation::{SimOptions, simulate};
 
@@ -67,6 +67,13 @@ pub struct DesignMetrics {
     pub volume: f64,
     /// Mean discharge current (A).
     pub current: f64,
+    /// Theoretical capacity of the design (A h), see [`theoretical_capacity`].
+    pub theoretical_capacity: f64,
+    /// Delivered over theoretical capacity (-): far below the baseline's when the discharge
+    /// stops early (a design limited by transport at this rate).
+    pub utilisation: f64,
+    /// Sandwich area (m^2): fixed for a free-area cell, from the format otherwise.
+    pub area: f64,
     pub gravimetric_energy_density: f64,
     pub volumetric_energy_density: f64,
     pub gravimetric_power_density: f64,
@@ -122,6 +129,8 @@ pub struct DesignProblem {
     pub rate_from_theoretical_capacity: bool,
     /// Constant discharge power (W) instead of the C-rate, when set.
     pub power: Option<f64>,
+    /// Cell format: sizes the electrode area from the stack thickness (free area keeps it).
+    pub format: CellFormat,
     /// Builders re-used across evaluations (one per concurrent evaluation).
     pool: BuilderPool,
 }
@@ -151,6 +160,7 @@ impl DesignProblem {
             c_rate,
             rate_from_theoretical_capacity,
             power: None,
+            format: CellFormat::FreeArea,
             pool: BuilderPool::default(),
         })
     }
@@ -162,6 +172,18 @@ impl DesignProblem {
         }
         self.power = Some(power);
         Ok(self)
+    }
+
+    /// Puts the stack into a cell format; the base set must fit it.
+    pub fn with_format(mut self, format: CellFormat) -> Result<Self, Error> {
+        format.apply(&mut self.base.clone())?;
+        self.format = format;
+        Ok(self)
+    }
+
+    /// Mass basis of a candidate's (sized) parameter set in the problem's format.
+    pub fn mass_basis(&self, p: &ParameterSet) -> Result<MassBasis, Error> {
+        self.format.mass_basis(p)
     }
 
     /// The discharge protocol of a candidate's parameter set: constant current at the C-rate
@@ -195,6 +217,7 @@ impl DesignProblem {
             p.set(&tie.target, value)?;
         }
         p.validate()?;
+        self.format.apply(&mut p)?;
         Ok(p)
     }
 
@@ -207,7 +230,7 @@ impl DesignProblem {
     fn discharge(&self, builder: &mut ModelBuilder, p: &ParameterSet) -> Result<DesignMetrics, Error> {
         let built = builder.build(p)?;
         let sol = simulate(built.model.as_ref(), &mut built.workspace, &self.protocol(p), &SimOptions::for_cell(p), None)?;
-        let budget = p.budget();
+        let budget = self.mass_basis(p)?;
         let energy = sol.final_energy();
         let duration = sol.time.last().copied().unwrap_or(0.0);
         let power = if duration > 0.0 { energy * 3600.0 / duration } else { 0.0 };
@@ -219,6 +242,9 @@ impl DesignProblem {
             mass: budget.mass,
             volume: budget.volume,
             current,
+            theoretical_capacity: theoretical_capacity(p),
+            utilisation: sol.final_capacity() / theoretical_capacity(p),
+            area: p.cell.area(),
             gravimetric_energy_density: energy / budget.mass,
             volumetric_energy_density: energy / (budget.volume * 1e3),
             gravimetric_power_density: power / budget.mass,

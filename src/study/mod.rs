@@ -14,7 +14,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::error::Error;
 use crate::models::ModelKind;
-use crate::params::{Override, ParameterSet, apply_overrides, chen2020};
+use crate::params::{CellFormat, Cylindrical, FormatName, Override, ParameterSet, Pouch, apply_overrides, chen2020};
 use crate::problem::design::{DesignProblem, Metric, Tie};
 
 /// A design study as written in `designs/*.toml`.
@@ -52,6 +52,14 @@ pub struct Study {
 pub struct CellChoice {
     /// `chen2020` (embedded) or a path to a parameter-set TOML file.
     pub parameter_set: String,
+    /// Cell format: `free_area` (default: the set's plate area, fixed), `cylindrical_21700`
+    /// or `pouch`; in a format the electrode area follows from the stack thickness.
+    #[serde(default)]
+    pub format: FormatName,
+    /// Can dimensions of a cylindrical format (`[cell.can]`; defaults: a 21700).
+    pub can: Option<Cylindrical>,
+    /// Pouch dimensions (`[cell.pouch]`), needed by the pouch format.
+    pub pouch: Option<Pouch>,
     /// Overrides from the command line (`--set path=value`), applied after loading.
     #[serde(skip)]
     pub overrides: Vec<Override>,
@@ -68,6 +76,34 @@ impl CellChoice {
         Ok(p)
     }
 
+    /// The cell format with its dimensions; a dimension table that does not belong to the
+    /// format, or a pouch without dimensions, is an error.
+    pub fn cell_format(&self) -> Result<CellFormat, Error> {
+        let stray = |table: &str| Error::InvalidSetting {
+            field: format!("cell.{table}"),
+            reason: format!("does not apply to cell.format = {}", serde_json::to_string(&self.format).unwrap_or_default()),
+        };
+        match self.format {
+            FormatName::FreeArea if self.can.is_some() => Err(stray("can")),
+            FormatName::FreeArea | FormatName::Cylindrical21700 if self.pouch.is_some() => Err(stray("pouch")),
+            FormatName::Pouch if self.can.is_some() => Err(stray("can")),
+            FormatName::FreeArea => Ok(CellFormat::FreeArea),
+            FormatName::Cylindrical21700 => {
+                let can = self.can.unwrap_or_default();
+                can.validate()?;
+                Ok(CellFormat::Cylindrical(can))
+            }
+            FormatName::Pouch => {
+                let pouch = self.pouch.ok_or_else(|| Error::InvalidSetting {
+                    field: "cell.pouch".into(),
+                    reason: "cell.format = \"pouch\" needs a [cell.pouch] table with length, width and thickness (m)".into(),
+                })?;
+                pouch.validate()?;
+                Ok(CellFormat::Pouch(pouch))
+            }
+        }
+    }
+
     /// The parameter-set file, when the set is not the embedded one.
     pub fn file(&self) -> Option<&Path> {
         (self.parameter_set != "chen2020").then(|| Path::new(&self.parameter_set))
@@ -76,7 +112,7 @@ impl CellChoice {
 
 impl Default for CellChoice {
     fn default() -> Self {
-        Self { parameter_set: "chen2020".into(), overrides: Vec::new() }
+        Self { parameter_set: "chen2020".into(), format: FormatName::FreeArea, can: None, pouch: None, overrides: Vec::new() }
     }
 }
 
@@ -386,7 +422,8 @@ impl Study {
             self.model.kind,
             self.operating.c_rate.unwrap_or(1.0),
             self.operating.rate_from_theoretical_capacity,
-        )?;
+        )?
+        .with_format(self.cell.cell_format()?)?;
         match self.operating.power {
             Some(power) => problem.with_power(power),
             None => Ok(problem),
