@@ -93,6 +93,12 @@ impl Metric {
 }
 
 impl DesignMetrics {
+    /// Whether the discharge stopped early: it delivered less than `min_utilisation` of the
+    /// design's theoretical capacity.
+    pub fn stopped_early(&self, min_utilisation: f64) -> bool {
+        !(self.utilisation >= min_utilisation)
+    }
+
     pub fn get(&self, m: Metric) -> f64 {
         match m {
             Metric::GravimetricEnergyDensity => self.gravimetric_energy_density,

@@ -138,6 +138,12 @@ pub fn run_design(study: &Study) -> Result<DesignOutcome, Error> {
     let upper: Vec<f64> = study.variables.iter().map(|v| v.upper).collect();
     let mut warnings = study.warnings();
     warnings.extend(super::at_bound_warnings("the optimum", &names, &result.x, &lower, &upper));
+    let min_u = study.operating.min_utilisation();
+    for (what, m) in [("the baseline", &initial), ("the optimum", &optimised)] {
+        if m.stopped_early(min_u) {
+            warnings.push(format!("{what}'s discharge stops early: it delivers {:.1} % of its theoretical capacity (threshold {:.0} %)", 100.0 * m.utilisation, 100.0 * min_u));
+        }
+    }
     let mut outcome =
         DesignOutcome { metric, initial_x, initial, result, optimised, rebuilds: problem.rebuild_count(), seconds, files: Vec::new(), warnings };
     write_outputs(study, &problem, &mut outcome, &method, dir.path())?;
@@ -151,6 +157,8 @@ fn write_outputs(study: &Study, problem: &DesignProblem, out: &mut DesignOutcome
         "study": study.name, "variables": names, "method": method,
         "initial": { "x": out.initial_x, "metrics": out.initial },
         "optimised": { "x": out.result.x, "metrics": out.optimised },
+        "format": problem.format.label(),
+        "mass_basis": { "initial": problem.mass_basis(&problem.parameters(&out.initial_x)?)?, "optimised": problem.mass_basis(&problem.parameters(&out.result.x)?)? },
         "result": out.result, "rebuilds": out.rebuilds, "seconds": out.seconds, "warnings": out.warnings,
     });
     write_output(dir, "design.json", serde_json::to_string_pretty(&json).unwrap_or_default(), &mut out.files)?;
@@ -173,19 +181,21 @@ fn write_outputs(study: &Study, problem: &DesignProblem, out: &mut DesignOutcome
     let _ = writeln!(md, "# {}\n", study.name);
     let _ = writeln!(md, "Maximised {} with {method} ({:?} after {} iterations, {} evaluations, {} model builds, {:.2} s).\n",
         out.metric.label(), out.result.stop, out.result.iterations, out.result.evaluations, out.rebuilds, out.seconds);
-    let _ = writeln!(md, "| | {} | energy (W h) | mass (g) | volume (cm^3) | W h/kg | W h/L | W/kg | W/L |", names.join(" | "));
-    let _ = writeln!(md, "|---|{}---|---|---|---|---|---|---|---|", "---|".repeat(names.len()));
+    let _ = writeln!(md, "| | {} | energy (W h) | capacity (A h) | area (m^2) | mass (g) | volume (cm^3) | W h/kg | W h/L | W/kg | W/L |", names.join(" | "));
+    let _ = writeln!(md, "|---|{}{}", "---|".repeat(names.len()), "---|".repeat(9));
     for (label, x, m) in [("initial", &out.initial_x, &out.initial), ("optimised", &out.result.x, &out.optimised)] {
         let xs: Vec<String> = x.iter().map(|v| format!("{v:.4e}")).collect();
-        let _ = writeln!(md, "| {label} | {} | {:.3} | {:.2} | {:.3} | {:.1} | {:.1} | {:.1} | {:.1} |", xs.join(" | "),
-            m.energy, m.mass * 1e3, m.volume * 1e6, m.gravimetric_energy_density, m.volumetric_energy_density,
+        let _ = writeln!(md, "| {label} | {} | {:.3} | {:.3} | {:.4} | {:.2} | {:.3} | {:.1} | {:.1} | {:.1} | {:.1} |", xs.join(" | "),
+            m.energy, m.capacity, m.area, m.mass * 1e3, m.volume * 1e6, m.gravimetric_energy_density, m.volumetric_energy_density,
             m.gravimetric_power_density, m.volumetric_power_density);
     }
     let _ = writeln!(md, "\nImprovement: {:+.2} %.\n", out.improvement());
     for w in &out.warnings {
         let _ = writeln!(md, "**Warning:** {w}\n");
     }
-    let _ = writeln!(md, "![voltage](design_voltage.svg)");
+    let _ = writeln!(md, "{}\n", super::basis::power_definition(problem, study.operating.min_utilisation()));
+    let _ = writeln!(md, "![voltage](design_voltage.svg)\n");
+    md.push_str(&super::basis::mass_basis_section(problem, &[("initial", &out.initial_x), ("optimised", &out.result.x)])?);
     write_output(dir, "report.md", md, &mut out.files)?;
     Ok(())
 }

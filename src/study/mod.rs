@@ -1,6 +1,7 @@
 //! Design study files (TOML): cell, model, operating point, decision variables, ties,
 //! objectives, optimiser and outputs. Unknown keys are errors naming the key and line.
 
+pub mod basis;
 pub mod design;
 pub mod eis;
 pub mod fit;
@@ -146,6 +147,19 @@ pub struct Operating {
     pub lower_cutoff: Option<f64>,
     /// Upper voltage cut-off (V); the parameter set's when absent.
     pub upper_cutoff: Option<f64>,
+    /// Smallest delivered / theoretical capacity (-) of a discharge that does not stop early
+    /// (default 0.5); designs below it are flagged and kept out of fronts and bests.
+    pub min_utilisation: Option<f64>,
+}
+
+/// Default of [`Operating::min_utilisation`].
+pub const DEFAULT_MIN_UTILISATION: f64 = 0.5;
+
+impl Operating {
+    /// The early-stop threshold (-).
+    pub fn min_utilisation(&self) -> f64 {
+        self.min_utilisation.unwrap_or(DEFAULT_MIN_UTILISATION)
+    }
 }
 
 /// A decision variable.
@@ -310,6 +324,9 @@ impl Study {
                 });
             }
             _ => {}
+        }
+        if let Some(u) = self.operating.min_utilisation {
+            crate::params::check::check("operating.min_utilisation", u, u > 0.0 && u < 1.0, "must lie strictly between 0 and 1")?;
         }
         if self.objective.maximise.is_empty() {
             return Err(Error::InvalidSetting { field: "objective.maximise".into(), reason: "is empty".into() });
