@@ -9,7 +9,7 @@ use std::time::Instant;
 use super::Study;
 use crate::error::Error;
 use crate::optim::{
-    Bounds, LinearConstraints, Objective, Observer, OptimOptions, OptimResult, Problem, TraceObserver, by_name,
+    Bounds, Objective, Observer, OptimOptions, OptimResult, Problem, TraceObserver, by_name,
 };
 use crate::problem::design::{DesignMetrics, DesignProblem, Metric};
 use crate::report::plot::{Series, line_plot};
@@ -66,24 +66,6 @@ impl DesignOutcome {
     }
 }
 
-/// Linear constraints of the study in the optimiser's form.
-fn constraints(study: &Study) -> LinearConstraints {
-    let mut out = LinearConstraints::new();
-    for c in &study.constraints {
-        let a: Vec<f64> = study.variables.iter().map(|v| c.terms.get(&v.path).copied().unwrap_or(0.0)).collect();
-        if let Some(u) = c.upper {
-            out = out.inequality(a.clone(), u);
-        }
-        if let Some(l) = c.lower {
-            out = out.inequality(a.iter().map(|v| -v).collect(), -l);
-        }
-        if let Some(e) = c.equals {
-            out = out.equality(a.clone(), e);
-        }
-    }
-    out
-}
-
 /// Runs the study's optimiser on its first objective from the baseline design.
 pub fn run_design(study: &Study) -> Result<DesignOutcome, Error> {
     if study.objective.maximise.len() != 1 {
@@ -111,7 +93,7 @@ pub fn run_design(study: &Study) -> Result<DesignOutcome, Error> {
         study.variables.iter().map(|v| v.upper).collect(),
     )?;
     let transforms = study.variables.iter().map(|v| v.transform()).collect();
-    let opt_problem = Problem::new(&objective, bounds)?.with_constraints(constraints(study))?.with_transforms(transforms)?;
+    let opt_problem = Problem::new(&objective, bounds)?.with_constraints(super::constraints::linear_constraints(study))?.with_transforms(transforms)?;
     let start = Instant::now();
     let initial_x = study.baseline()?;
     let initial = problem.evaluate(&initial_x)?;

@@ -2,6 +2,7 @@
 //! objectives, optimiser and outputs. Unknown keys are errors naming the key and line.
 
 pub mod basis;
+pub mod constraints;
 pub mod design;
 pub mod eis;
 pub mod fit;
