@@ -154,30 +154,45 @@ pub fn run_sweep(study: &Study) -> Result<SweepOutcome, Error> {
     let value = |p: &SweepPoint, grav: bool| {
         p.metrics.map_or(f64::NAN, |m| if grav { m.gravimetric_energy_density } else { m.volumetric_energy_density })
     };
+    let axes: Vec<(f64, String)> = names.iter().map(|n| axis(n)).collect();
     for (grav, stem, unit) in [(true, "gravimetric_energy_density", "W h/kg"), (false, "volumetric_energy_density", "W h/L")] {
         let path = dir.join(format!("sweep_{stem}.svg"));
         let title = format!("{} ({unit})", stem.replace('_', " "));
         match (sweep.design, sweep.points.len()) {
             (SweepDesign::Grid, 1) => {
-                let x: Vec<f64> = points.iter().map(|p| p.x[0]).collect();
+                let x: Vec<f64> = points.iter().map(|p| p.x[0] * axes[0].0).collect();
                 let y: Vec<f64> = points.iter().map(|p| value(p, grav)).collect();
-                line_plot(&path, &title, names[0], unit, &[Series { label: stem.into(), x: &x, y: &y }])?;
+                line_plot(&path, &title, &axes[0].1, unit, &[Series { label: stem.into(), x: &x, y: &y }])?;
             }
             (SweepDesign::Grid, 2) => {
                 let (n0, n1) = (sweep.points[0], sweep.points[1]);
-                let x: Vec<f64> = (0..n0).map(|i| points[i * n1].x[0]).collect();
-                let y: Vec<f64> = (0..n1).map(|j| points[j].x[1]).collect();
+                let x: Vec<f64> = (0..n0).map(|i| points[i * n1].x[0] * axes[0].0).collect();
+                let y: Vec<f64> = (0..n1).map(|j| points[j].x[1] * axes[1].0).collect();
                 let z: Vec<Vec<f64>> = (0..n0).map(|i| (0..n1).map(|j| value(&points[i * n1 + j], grav)).collect()).collect();
-                heat_map(&path, &title, (names[0], names[1]), &x, &y, &z, Some(("baseline".into(), (baseline_x[0], baseline_x[1]))), &[])?;
+                let mark = (baseline_x[0] * axes[0].0, baseline_x[1] * axes[1].0);
+                heat_map(&path, &title, (&axes[0].1, &axes[1].1), &x, &y, &z, Some(("baseline".into(), mark)), &[])?;
             }
             _ => {
                 // Scattered samples: density against the first variable.
-                let pts: Vec<(f64, f64)> = points.iter().map(|p| (p.x[0], value(p, grav))).collect();
-                crate::report::plot::scatter_plot(&path, &title, (names[0], unit), &[(stem.into(), pts)], None)?;
+                let pts: Vec<(f64, f64)> = points.iter().map(|p| (p.x[0] * axes[0].0, value(p, grav))).collect();
+                crate::report::plot::scatter_plot(&path, &title, (&axes[0].1, unit), &[(stem.into(), pts)], None)?;
             }
         }
         files.push(path);
     }
     let files = out.commit(&files)?;
     Ok(SweepOutcome { points, baseline, rebuilds: problem.rebuild_count(), seconds, files, warnings })
+}
+
+/// Plot scale and axis label of a decision variable: lengths in micrometres, volume fractions
+/// in per cent, anything else as it is (SI).
+fn axis(path: &str) -> (f64, String) {
+    let name = path.rsplit('.').next().unwrap_or(path);
+    if name.ends_with("thickness") || name.ends_with("radius") {
+        (1e6, format!("{path} (µm)"))
+    } else if name.ends_with("fraction") || name == "porosity" {
+        (100.0, format!("{path} (%)"))
+    } else {
+        (1.0, path.to_string())
+    }
 }
