@@ -11,7 +11,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::check::{non_negative, positive};
-use super::mass::{MassBasis, MassComponent, Part, StackAreas};
+use super::mass::{MassBasis, MassComponent, Part, StackAreas, component};
 use super::set::ParameterSet;
 use crate::error::Error;
 
@@ -192,14 +192,8 @@ impl Cylindrical {
         let (outer, inner) = (0.5 * self.diameter, self.roll_radius());
         let pi = std::f64::consts::PI;
         let steel = pi * (outer * outer - inner * inner) * self.height + pi * inner * inner * self.wall;
-        components.push(MassComponent {
-            name: "can (side wall and bottom)".into(),
-            part: Part::Packaging,
-            density: Some(self.can_density),
-            volume: Some(steel),
-            mass: steel * self.can_density,
-            source: format!("{:.2} mm wall (cell.can.wall)", self.wall * 1e3),
-        });
+        let wall = format!("{:.2} mm wall (cell.can.wall)", self.wall * 1e3);
+        components.push(component("can (side wall and bottom)", Part::Packaging, self.can_density, steel, &wall));
         components.push(allowance("top cap, vent, insulators and tabs", self.extra_mass, "cell.can.extra_mass"));
         MassBasis::new(
             format!(
@@ -264,14 +258,8 @@ impl Pouch {
         let areas = StackAreas { coating: s.area, separator: 2.0 * n * f, negative_collector: (n + 1.0) * f, positive_collector: n * f };
         let mut components = p.stack_components(areas);
         let laminate = 2.0 * self.length * self.width * self.wall;
-        components.push(MassComponent {
-            name: "pouch laminate (two sheets)".into(),
-            part: Part::Packaging,
-            density: Some(self.laminate_density),
-            volume: Some(laminate),
-            mass: laminate * self.laminate_density,
-            source: format!("{:.0} um per sheet (cell.pouch.wall)", self.wall * 1e6),
-        });
+        let wall = format!("{:.0} um per sheet (cell.pouch.wall)", self.wall * 1e6);
+        components.push(component("pouch laminate (two sheets)", Part::Packaging, self.laminate_density, laminate, &wall));
         components.push(allowance("tabs", self.tab_mass, "cell.pouch.tab_mass"));
         MassBasis::new(
             format!(

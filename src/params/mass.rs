@@ -101,7 +101,8 @@ impl StackAreas {
     }
 }
 
-fn component(name: &str, part: Part, density: f64, volume: f64, source: &str) -> MassComponent {
+/// A material of `density` (kg/m^3) and `volume` (m^3).
+pub(crate) fn component(name: &str, part: Part, density: f64, volume: f64, source: &str) -> MassComponent {
     MassComponent { name: name.into(), part, density: Some(density), volume: Some(volume), mass: density * volume, source: source.into() }
 }
 
