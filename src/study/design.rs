@@ -15,11 +15,12 @@ use crate::problem::design::{DesignMetrics, DesignProblem, Metric};
 use crate::report::plot::{Series, line_plot};
 use crate::simulation::{SimOptions, simulate};
 
-/// Minimises minus the chosen metric; a failed simulation is penalised (+inf) and the
-/// search goes on.
+/// Minimises minus the chosen metric; a failed simulation or a discharge that stops early
+/// (below `min_utilisation`) is penalised (+inf) and the search goes on.
 struct MaximiseMetric<'a> {
     problem: &'a DesignProblem,
     metric: Metric,
+    min_utilisation: f64,
 }
 
 impl Objective for MaximiseMetric<'_> {
@@ -27,7 +28,10 @@ impl Objective for MaximiseMetric<'_> {
         self.problem.variables.len()
     }
     fn evaluate(&self, x: &[f64]) -> f64 {
-        self.problem.evaluate(x).map_or(f64::INFINITY, |m| -m.get(self.metric))
+        match self.problem.evaluate(x) {
+            Ok(m) if !m.stopped_early(self.min_utilisation) => -m.get(self.metric),
+            _ => f64::INFINITY,
+        }
     }
 }
 
@@ -87,7 +91,7 @@ pub fn run_design(study: &Study) -> Result<DesignOutcome, Error> {
         .map_err(|e: toml::de::Error| Error::InvalidSetting { field: "optimiser".into(), reason: e.to_string() })?;
     let mut optimiser = by_name(&method, options.clone())?;
     let dir = study.output_dir()?;
-    let objective = MaximiseMetric { problem: &problem, metric };
+    let objective = MaximiseMetric { problem: &problem, metric, min_utilisation: study.operating.min_utilisation() };
     let bounds = Bounds::new(
         study.variables.iter().map(|v| v.lower).collect(),
         study.variables.iter().map(|v| v.upper).collect(),

@@ -31,12 +31,17 @@ impl SweepOutcome {
 
     /// The valid point (feasible, evaluated, not stopped early) with the largest `metric`.
     pub fn best(&self, metric: Metric) -> Option<(&SweepPoint, DesignMetrics)> {
-        self.points
-            .iter()
-            .filter(|p| p.status == Status::Valid)
-            .filter_map(|p| p.metrics.map(|m| (p, m)))
-            .max_by(|a, b| a.1.get(metric).total_cmp(&b.1.get(metric)))
+        best(&self.points, metric)
     }
+}
+
+/// The valid point of `points` with the largest `metric`.
+fn best(points: &[SweepPoint], metric: Metric) -> Option<(&SweepPoint, DesignMetrics)> {
+    points
+        .iter()
+        .filter(|p| p.status == Status::Valid)
+        .filter_map(|p| p.metrics.map(|m| (p, m)))
+        .max_by(|a, b| a.1.get(metric).total_cmp(&b.1.get(metric)))
 }
 
 /// The sweep's candidate points.
@@ -115,6 +120,11 @@ pub fn run_sweep(study: &Study) -> Result<SweepOutcome, Error> {
     }
     if infeasible > 0 {
         warnings.push(format!("{infeasible} of {n} designs violate the linear constraints and were skipped (blank in the plots)"));
+    }
+    if let Some((p, _)) = best(&points, study.objective.maximise[0]) {
+        let names: Vec<String> = study.variables.iter().map(|v| v.path.clone()).collect();
+        let (lower, upper): (Vec<f64>, Vec<f64>) = study.variables.iter().map(|v| (v.lower, v.upper)).unzip();
+        warnings.extend(super::at_bound_warnings("the sweep's best design", &names, &p.x, &lower, &upper));
     }
     let dir = out.path();
     let mut files = Vec::new();
