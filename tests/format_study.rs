@@ -59,3 +59,20 @@ fn bad_format_input_names_the_field_and_value() {
     let e = Study::from_toml(&t, "bad.toml").unwrap_err().to_string();
     assert!(e.contains("cell.pouch.thickness") && e.contains("3e-4"), "{e}");
 }
+
+#[test]
+fn pybop_mass_basis_reproduces_pybops_convention_and_needs_free_area() {
+    let seed = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/designs/gravimetric_chen2020.toml")).unwrap();
+    let t = seed.replace("parameter_set = \"chen2020\"", "parameter_set = \"chen2020\"\nmass_basis = \"pybop\"");
+    let study = Study::from_toml(&t, "pybop.toml").unwrap();
+    let problem = study.problem().unwrap();
+    let m = problem.evaluate(&study.baseline().unwrap()).unwrap();
+    // Same discharge as the default basis; only the mass (45.6 g instead of 68.0 g) changes.
+    let own = Study::from_toml(&seed, "seed.toml").unwrap().problem().unwrap().evaluate(&study.baseline().unwrap()).unwrap();
+    assert_eq!(m.energy, own.energy);
+    assert!((m.mass * 1e3 - 45.59).abs() < 0.01 && (own.mass * 1e3 - 67.98).abs() < 0.01, "{} {}", m.mass, own.mass);
+    let e = Study::from_toml(&text().replace("format = \"cylindrical_21700\"", "format = \"cylindrical_21700\"\nmass_basis = \"pybop\""), "bad.toml").unwrap_err().to_string();
+    assert!(e.contains("cell.mass_basis") && e.contains("free_area"), "{e}");
+    let e = Study::from_toml(&seed.replace("[model]", "[cell.pybop]\nseparator = -1.0\n\n[model]"), "bad.toml").unwrap_err().to_string();
+    assert!(e.contains("cell.pybop"), "{e}");
+}

@@ -7,7 +7,7 @@ use serde::{Deserialize, Serialize};
 use crate::error::Error;
 use crate::geometry::{BuilderPool, MeshSizes, ModelBuilder};
 use crate::models::{ModelKind, Submodels};
-use crate::params::{CellFormat, FARADAY, MassBasis, ParameterSet};
+use crate::params::{CellFormat, FARADAY, MassBasis, MassConvention, ParameterSet};
 use crate::protocol::{Protocol, Step};
 use crate::simulation::{SimOptions, simulate};
 
@@ -137,6 +137,8 @@ pub struct DesignProblem {
     pub power: Option<f64>,
     /// Cell format: sizes the electrode area from the stack thickness (free area keeps it).
     pub format: CellFormat,
+    /// Which components count in the mass and volume.
+    pub mass_convention: MassConvention,
     /// Builders re-used across evaluations (one per concurrent evaluation).
     pool: BuilderPool,
 }
@@ -167,6 +169,7 @@ impl DesignProblem {
             rate_from_theoretical_capacity,
             power: None,
             format: CellFormat::FreeArea,
+            mass_convention: MassConvention::Cellstudio,
             pool: BuilderPool::default(),
         })
     }
@@ -187,9 +190,22 @@ impl DesignProblem {
         Ok(self)
     }
 
-    /// Mass basis of a candidate's (sized) parameter set in the problem's format.
+    /// Counts mass and volume in `convention` (PyBOP's needs the free-area format).
+    pub fn with_mass_convention(mut self, convention: MassConvention) -> Result<Self, Error> {
+        if convention != MassConvention::Cellstudio && self.format != CellFormat::FreeArea {
+            return Err(Error::InvalidSetting { field: "cell.mass_basis".into(), reason: "PyBOP's convention needs the free-area format".into() });
+        }
+        self.mass_convention = convention;
+        Ok(self)
+    }
+
+    /// Mass basis of a candidate's (sized) parameter set in the problem's format and
+    /// convention.
     pub fn mass_basis(&self, p: &ParameterSet) -> Result<MassBasis, Error> {
-        self.format.mass_basis(p)
+        match self.mass_convention {
+            MassConvention::Pybop(d) => Ok(p.pybop_mass_basis(&d)),
+            MassConvention::Cellstudio => self.format.mass_basis(p),
+        }
     }
 
     /// The discharge protocol of a candidate's parameter set: constant current at the C-rate

@@ -2,6 +2,7 @@
 //! objectives, optimiser and outputs. Unknown keys are errors naming the key and line.
 
 pub mod basis;
+pub mod cell;
 pub mod constraints;
 pub mod design;
 pub mod eis;
@@ -16,7 +17,8 @@ use serde::{Deserialize, Serialize};
 
 use crate::error::Error;
 use crate::models::ModelKind;
-use crate::params::{CellFormat, Cylindrical, FormatName, Override, ParameterSet, Pouch, apply_overrides, chen2020};
+pub use cell::CellChoice;
+use crate::params::{Override, ParameterSet};
 use crate::problem::design::{DesignProblem, Metric, Tie};
 
 /// A design study as written in `designs/*.toml`.
@@ -46,76 +48,6 @@ pub struct Study {
     pub sweep: Option<Sweep>,
     #[serde(default)]
     pub output: Output,
-}
-
-/// Which parameter set to start from.
-#[derive(Clone, Debug, Deserialize, Serialize)]
-#[serde(deny_unknown_fields)]
-pub struct CellChoice {
-    /// `chen2020` (embedded) or a path to a parameter-set TOML file.
-    pub parameter_set: String,
-    /// Cell format: `free_area` (default: the set's plate area, fixed), `cylindrical_21700`
-    /// or `pouch`; in a format the electrode area follows from the stack thickness.
-    #[serde(default)]
-    pub format: FormatName,
-    /// Can dimensions of a cylindrical format (`[cell.can]`; defaults: a 21700).
-    pub can: Option<Cylindrical>,
-    /// Pouch dimensions (`[cell.pouch]`), needed by the pouch format.
-    pub pouch: Option<Pouch>,
-    /// Overrides from the command line (`--set path=value`), applied after loading.
-    #[serde(skip)]
-    pub overrides: Vec<Override>,
-}
-
-impl CellChoice {
-    /// The parameter set: embedded Chen 2020 or a TOML file, with the overrides applied.
-    pub fn load(&self) -> Result<ParameterSet, Error> {
-        let mut p = match self.parameter_set.as_str() {
-            "chen2020" => chen2020(),
-            path => ParameterSet::from_file(Path::new(path))?,
-        };
-        apply_overrides(&mut p, &self.overrides)?;
-        Ok(p)
-    }
-
-    /// The cell format with its dimensions; a dimension table that does not belong to the
-    /// format, or a pouch without dimensions, is an error.
-    pub fn cell_format(&self) -> Result<CellFormat, Error> {
-        let stray = |table: &str| Error::InvalidSetting {
-            field: format!("cell.{table}"),
-            reason: format!("does not apply to cell.format = {}", serde_json::to_string(&self.format).unwrap_or_default()),
-        };
-        match self.format {
-            FormatName::FreeArea if self.can.is_some() => Err(stray("can")),
-            FormatName::FreeArea | FormatName::Cylindrical21700 if self.pouch.is_some() => Err(stray("pouch")),
-            FormatName::Pouch if self.can.is_some() => Err(stray("can")),
-            FormatName::FreeArea => Ok(CellFormat::FreeArea),
-            FormatName::Cylindrical21700 => {
-                let can = self.can.unwrap_or_default();
-                can.validate()?;
-                Ok(CellFormat::Cylindrical(can))
-            }
-            FormatName::Pouch => {
-                let pouch = self.pouch.ok_or_else(|| Error::InvalidSetting {
-                    field: "cell.pouch".into(),
-                    reason: "cell.format = \"pouch\" needs a [cell.pouch] table with length, width and thickness (m)".into(),
-                })?;
-                pouch.validate()?;
-                Ok(CellFormat::Pouch(pouch))
-            }
-        }
-    }
-
-    /// The parameter-set file, when the set is not the embedded one.
-    pub fn file(&self) -> Option<&Path> {
-        (self.parameter_set != "chen2020").then(|| Path::new(&self.parameter_set))
-    }
-}
-
-impl Default for CellChoice {
-    fn default() -> Self {
-        Self { parameter_set: "chen2020".into(), format: FormatName::FreeArea, can: None, pouch: None, overrides: Vec::new() }
-    }
 }
 
 #[derive(Clone, Debug, Deserialize, Serialize)]
@@ -441,7 +373,8 @@ impl Study {
             self.operating.c_rate.unwrap_or(1.0),
             self.operating.rate_from_theoretical_capacity,
         )?
-        .with_format(self.cell.cell_format()?)?;
+        .with_format(self.cell.cell_format()?)?
+        .with_mass_convention(self.cell.mass_convention()?)?;
         match self.operating.power {
             Some(power) => problem.with_power(power),
             None => Ok(problem),
