@@ -40,6 +40,7 @@ fn bad_format_input_names_the_field_and_value() {
         (text().replace("format = \"cylindrical_21700\"", "format = \"cylindrical_18650\""), "cylindrical_18650"),
         (text().replace("headspace = 6.0e-3", "headspac = 6.0e-3"), "headspac"),
         (text().replace("mandrel_diameter = 2.5e-3", "mandrel_diameter = 21e-3"), "cell.can.mandrel_diameter"),
+        (text().replace("path = \"positive.active_fraction\"", "path = \"cell.electrode_width\""), "variables[1].path"),
         (text().replace("format = \"cylindrical_21700\"", "format = \"pouch\""), "cell.can"),
         (text().replace("format = \"cylindrical_21700\"", "format = \"pouch\"").replace("[cell.can]", "[cell.pouch]\nlength = 0.1\nwidth = 0.05\nthickness = 0.2e-3\n[cell.unused]"), "cell.unused"),
     ];

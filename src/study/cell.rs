@@ -83,6 +83,15 @@ impl CellChoice {
         }
     }
 
+    /// Paths a cell format sets from the stack (so a variable, tie or `--set` on them would be
+    /// overwritten); none for free area.
+    pub fn format_outputs(&self) -> &'static [&'static str] {
+        match self.format {
+            FormatName::FreeArea => &[],
+            _ => &["cell.electrode_height", "cell.electrode_width", "thermal.cell_volume"],
+        }
+    }
+
     /// The mass convention; `pybop` needs the free-area format.
     pub fn mass_convention(&self) -> Result<MassConvention, Error> {
         match (self.mass_basis, self.format) {

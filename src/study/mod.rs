@@ -220,6 +220,16 @@ impl Study {
     /// Checks bounds, paths and settings against the base parameter set.
     pub fn validate(&self) -> Result<(), Error> {
         let base = self.base_parameters()?;
+        let fixed = self.cell.format_outputs();
+        let mut set_paths: Vec<(String, &str)> = self.variables.iter().enumerate().map(|(k, v)| (format!("variables[{k}].path"), v.path.as_str())).collect();
+        set_paths.extend(self.ties.iter().enumerate().map(|(k, t)| (format!("ties[{k}].target"), t.target.as_str())));
+        set_paths.extend(self.cell.overrides.iter().map(|o| (format!("--set {}", o.path), o.path.as_str())));
+        if let Some((field, path)) = set_paths.iter().find(|(_, p)| fixed.contains(p)) {
+            return Err(Error::InvalidSetting {
+                field: field.clone(),
+                reason: format!("`{path}` follows from the stack in cell.format = {}; change the format's dimensions instead", serde_json::to_string(&self.cell.format).unwrap_or_default()),
+            });
+        }
         if self.variables.is_empty() {
             return Err(Error::InvalidSetting { field: "variables".into(), reason: "at least one is needed".into() });
         }
