@@ -69,10 +69,15 @@ pub fn run_pareto(study: &Study) -> Result<ParetoOutcome, Error> {
     let upper: Vec<f64> = study.variables.iter().map(|v| v.upper).collect();
     let min_u = study.operating.min_utilisation();
     let (failed, early, repaired) = (AtomicUsize::new(0), AtomicUsize::new(0), AtomicUsize::new(0));
+    // Objectives of the designs that stopped early, for the plot only.
+    let truncated = std::sync::Mutex::new(Vec::new());
     let excluded = vec![f64::NEG_INFINITY; metrics.len()];
     let evaluate = |x: &[f64]| match problem.evaluate(x) {
         Ok(m) if m.stopped_early(min_u) => {
             early.fetch_add(1, Ordering::Relaxed);
+            if let Ok(mut t) = truncated.lock() {
+                t.push((m.get(metrics[0]), m.get(metrics[1])));
+            }
             excluded.clone()
         }
         Ok(m) if feasibility.is_feasible(x) => metrics.iter().map(|&k| m.get(k)).collect(),
@@ -140,7 +145,11 @@ pub fn run_pareto(study: &Study) -> Result<ParetoOutcome, Error> {
         &plot,
         &study.name,
         (metrics[0].label(), metrics[1].label()),
-        &[("evaluated designs".into(), pts(&archive)), ("non-dominated front".into(), pts(&sorted))],
+        &[
+            ("stopped early (excluded)".into(), truncated.into_inner().unwrap_or_default()),
+            ("evaluated designs".into(), pts(&archive)),
+            ("non-dominated front".into(), pts(&sorted)),
+        ],
         Some(("baseline".into(), (baseline[0], baseline[1]))),
     )?;
     files.push(plot);
