@@ -64,9 +64,10 @@ pub fn line_plot(path: &Path, title: &str, x_label: &str, y_label: &str, series:
     root.present().map_err(|e| err(e.to_string()))
 }
 
-/// A heat map of `z[i][j]` over the grid `x[i]`, `y[j]` (NaN cells are left blank), with the
-/// point `mark` (e.g. the baseline design) drawn as a cross and an optional `trace` (e.g. an
-/// optimiser's path) drawn as a white line with dots.
+/// A heat map of `z[i][j]` over the grid `x[i]`, `y[j]` (NaN cells are left blank) with a
+/// colour bar, the points `marks` (the first, e.g. the baseline, as a red cross; the others,
+/// e.g. the best design, as black rings) and an optional `trace` (e.g. an optimiser's path)
+/// drawn as a white line with dots.
 #[allow(clippy::too_many_arguments)]
 pub fn heat_map(
     path: &Path,
@@ -75,7 +76,7 @@ pub fn heat_map(
     x: &[f64],
     y: &[f64],
     z: &[Vec<f64>],
-    mark: Option<(String, (f64, f64))>,
+    marks: &[(String, (f64, f64))],
     trace: &[(f64, f64)],
 ) -> Result<(), Error> {
     let err = |e: String| Error::Plot { path: path.display().to_string(), message: e };
@@ -115,14 +116,22 @@ pub fn heat_map(
             .draw_series(trace.iter().map(|&p| Circle::new(p, 3, WHITE.filled())))
             .map_err(|e| err(e.to_string()))?;
     }
-    let legend = mark.is_some() || !trace.is_empty();
-    let corner = legend_corner(&[], mark.as_ref().map(|m| m.1), (x[0] - hx, x[x.len() - 1] + hx), (y[0] - hy, y[y.len() - 1] + hy));
-    if let Some((label, (mx, my))) = mark {
-        chart
-            .draw_series(std::iter::once(Cross::new((mx, my), 8, RED.stroke_width(3))))
-            .map_err(|e| err(e.to_string()))?
-            .label(label)
-            .legend(|(x, y)| Cross::new((x, y), 6, RED.stroke_width(2)));
+    let legend = !marks.is_empty() || !trace.is_empty();
+    let corner = legend_corner(&[], &marks.iter().map(|m| m.1).collect::<Vec<_>>(), (x[0] - hx, x[x.len() - 1] + hx), (y[0] - hy, y[y.len() - 1] + hy));
+    for (k, (label, p)) in marks.iter().enumerate() {
+        if k == 0 {
+            chart
+                .draw_series(std::iter::once(Cross::new(*p, 8, RED.stroke_width(3))))
+                .map_err(|e| err(e.to_string()))?
+                .label(label.clone())
+                .legend(|(x, y)| Cross::new((x, y), 6, RED.stroke_width(2)));
+        } else {
+            chart
+                .draw_series(std::iter::once(Circle::new(*p, 8, BLACK.stroke_width(3))))
+                .map_err(|e| err(e.to_string()))?
+                .label(label.clone())
+                .legend(|(x, y)| Circle::new((x, y), 5, BLACK.stroke_width(2)));
+        }
     }
     if legend {
         chart.configure_series_labels().position(corner).background_style(WHITE.mix(0.8)).border_style(BLACK).draw().map_err(|e| err(e.to_string()))?;
@@ -142,8 +151,8 @@ fn colour_bar<DB: DrawingBackend>(area: &DrawingArea<DB, plotters::coord::Shift>
     Ok(())
 }
 
-/// The corner for a legend: the one with the fewest points (and not the mark) nearby.
-fn legend_corner(points: &[(f64, f64)], mark: Option<(f64, f64)>, (x0, x1): (f64, f64), (y0, y1): (f64, f64)) -> SeriesLabelPosition {
+/// The corner for a legend: the one with the fewest points (and none of the marks) nearby.
+fn legend_corner(points: &[(f64, f64)], marks: &[(f64, f64)], (x0, x1): (f64, f64), (y0, y1): (f64, f64)) -> SeriesLabelPosition {
     let corners = [
         (SeriesLabelPosition::UpperRight, 1.0, 1.0),
         (SeriesLabelPosition::UpperLeft, 0.0, 1.0),
@@ -154,7 +163,7 @@ fn legend_corner(points: &[(f64, f64)], mark: Option<(f64, f64)>, (x0, x1): (f64
         let (u, v) = ((u - x0) / (x1 - x0), (v - y0) / (y1 - y0));
         (u - cx).abs() < 0.35 && (v - cy).abs() < 0.3
     };
-    let cost = |c: (f64, f64)| points.iter().filter(|&&p| near(p, c)).count() + mark.map_or(0, |m| if near(m, c) { 1_000_000 } else { 0 });
+    let cost = |c: (f64, f64)| points.iter().filter(|&&p| near(p, c)).count() + 1_000_000 * marks.iter().filter(|&&m| near(m, c)).count();
     corners.iter().min_by_key(|(_, cx, cy)| cost((*cx, *cy))).map_or(SeriesLabelPosition::UpperRight, |c| c.0.clone())
 }
 
@@ -198,7 +207,7 @@ pub fn scatter_plot(
             .legend(|(x, y)| Cross::new((x, y), 6, BLACK.stroke_width(2)));
     }
     let finite: Vec<(f64, f64)> = sets.iter().flat_map(|s| s.1.iter().copied()).filter(|p| p.0.is_finite() && p.1.is_finite()).collect();
-    let corner = legend_corner(&finite, mark_point, (x0, x1), (y0, y1));
+    let corner = legend_corner(&finite, mark_point.as_slice(), (x0, x1), (y0, y1));
     chart.configure_series_labels().position(corner).background_style(WHITE.mix(0.8)).border_style(BLACK).draw().map_err(|e| err(e.to_string()))?;
     root.present().map_err(|e| err(e.to_string()))
 }

@@ -179,8 +179,13 @@ pub fn run_sweep(study: &Study) -> Result<SweepOutcome, Error> {
                 let x: Vec<f64> = (0..n0).map(|i| points[i * n1].x[0] * axes[0].0).collect();
                 let y: Vec<f64> = (0..n1).map(|j| points[j].x[1] * axes[1].0).collect();
                 let z: Vec<Vec<f64>> = (0..n0).map(|i| (0..n1).map(|j| value(&points[i * n1 + j], grav)).collect()).collect();
-                let mark = (baseline_x[0] * axes[0].0, baseline_x[1] * axes[1].0);
-                heat_map(&path, &title, (&axes[0].1, &axes[1].1), &x, &y, &z, Some(("baseline".into(), mark)), &[])?;
+                let shown = |p: &[f64]| (p[0] * axes[0].0, p[1] * axes[1].0);
+                let mut marks = vec![("baseline".to_string(), shown(&baseline_x))];
+                let metric = if grav { Metric::GravimetricEnergyDensity } else { Metric::VolumetricEnergyDensity };
+                if let Some((p, _)) = best(&points, metric) {
+                    marks.push(("best valid design".to_string(), shown(&p.x)));
+                }
+                heat_map(&path, &title, (&axes[0].1, &axes[1].1), &x, &y, &z, &marks, &[])?;
             }
             _ => {
                 // Scattered samples: density against the first variable.
