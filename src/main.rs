@@ -21,6 +21,7 @@ use cellstudio::study::sample::run_sample;
 use cellstudio::study::eis;
 use cellstudio::study::pareto::run_pareto;
 use cellstudio::study::sweep::run_sweep;
+use cellstudio::problem::design::Metric;
 
 #[derive(Parser)]
 #[command(name = "cellstudio", about = "Battery design optimisation and parameterisation studio")]
@@ -359,7 +360,10 @@ fn run(cli: Cli) -> Result<(), Error> {
             let out = run_pareto(&study)?;
             warn(&out.warnings);
             println!("study            {}", study.name);
-            println!("designs          {} evaluated ({} failed) in {:.2} s, {} model builds", out.evaluated, out.failed, out.seconds, out.rebuilds);
+            println!(
+                "designs          {} evaluated ({} failed, {} stopped early: off the front; {} projected onto the constraints) in {:.2} s, {} model builds",
+                out.evaluated, out.failed, out.stopped_early, out.repaired, out.seconds, out.rebuilds
+            );
             println!("baseline         {:?}", out.baseline);
             println!("front            {} non-dominated designs", out.front.len());
             for ind in &out.front {
@@ -374,14 +378,21 @@ fn run(cli: Cli) -> Result<(), Error> {
             let study = Study::from_file(&study)?.with_overrides(overrides.set)?;
             let out = run_sweep(&study)?;
             warn(&out.warnings);
-            let ok: Vec<_> = out.points.iter().filter_map(|p| p.metrics.map(|m| (p, m))).filter(|(_, m)| !cellstudio::study::degenerate(m, &out.baseline)).collect();
-            let failed = out.points.iter().filter(|p| p.metrics.is_none()).count();
+            use cellstudio::problem::sweep::Status;
             println!("study            {}", study.name);
-            println!("designs          {} evaluated ({failed} failed) in {:.2} s, {:.0} designs/s, {} model builds", out.points.len(), out.seconds, out.points.len() as f64 / out.seconds, out.rebuilds);
+            println!(
+                "designs          {} points: {} evaluated ({} failed, {} stopped early), {} infeasible skipped, in {:.2} s, {} model builds",
+                out.points.len(),
+                out.points.len() - out.count(Status::Infeasible),
+                out.count(Status::Failed),
+                out.count(Status::StoppedEarly),
+                out.count(Status::Infeasible),
+                out.seconds,
+                out.rebuilds
+            );
             println!("baseline         {:.1} W h/kg, {:.1} W h/L", out.baseline.gravimetric_energy_density, out.baseline.volumetric_energy_density);
-            for (label, pick) in [("best W h/kg", true), ("best W h/L", false)] {
-                let key = |m: &cellstudio::problem::design::DesignMetrics| if pick { m.gravimetric_energy_density } else { m.volumetric_energy_density };
-                if let Some((p, m)) = ok.iter().max_by(|a, b| key(&a.1).total_cmp(&key(&b.1))) {
+            for (label, metric) in [("best W h/kg", Metric::GravimetricEnergyDensity), ("best W h/L", Metric::VolumetricEnergyDensity)] {
+                if let Some((p, m)) = out.best(metric) {
                     println!("{label:16} {:.1} W h/kg, {:.1} W h/L at {:?}", m.gravimetric_energy_density, m.volumetric_energy_density, p.x);
                 }
             }

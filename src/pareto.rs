@@ -106,11 +106,29 @@ pub fn nsga2(
     evaluate: &(dyn Fn(&[f64]) -> Vec<f64> + Sync),
     progress: &mut dyn FnMut(usize),
 ) -> (Vec<Individual>, Vec<Individual>) {
+    nsga2_repaired(lower, upper, opts, evaluate, &|x: &[f64]| x.to_vec(), progress)
+}
+
+/// [`nsga2`] with every candidate (initial or child) passed through `repair` before it is
+/// evaluated and stored, e.g. a projection onto linear constraints.
+pub fn nsga2_repaired(
+    lower: &[f64],
+    upper: &[f64],
+    opts: &Nsga2Options,
+    evaluate: &(dyn Fn(&[f64]) -> Vec<f64> + Sync),
+    repair: &(dyn Fn(&[f64]) -> Vec<f64> + Sync),
+    progress: &mut dyn FnMut(usize),
+) -> (Vec<Individual>, Vec<Individual>) {
     let dim = lower.len();
     let pop_size = opts.population.max(4) & !1;
     let mut rng = StdRng::seed_from_u64(opts.seed);
     let eval_all = |xs: Vec<Vec<f64>>| -> Vec<Individual> {
-        xs.into_par_iter().map(|x| Individual { f: evaluate(&x), x }).collect()
+        xs.into_par_iter()
+            .map(|x| {
+                let x = repair(&x);
+                Individual { f: evaluate(&x), x }
+            })
+            .collect()
     };
     let initial: Vec<Vec<f64>> = (0..pop_size)
         .map(|_| (0..dim).map(|k| lower[k] + rng.random::<f64>() * (upper[k] - lower[k])).collect())

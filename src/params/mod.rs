@@ -1,11 +1,13 @@
 //! Parameter sets: typed structs in SI units, the embedded Chen 2020 default, BPX exchange,
-//! and the cell's mass and volume budget.
+//! the cell's mass and volume budget, and cell formats (can or pouch) that size the stack.
 
 pub(crate) mod check;
 mod chen2020;
 pub mod bpx;
+pub mod format;
 pub mod function;
 pub mod mass;
+pub mod pybop_mass;
 mod initial_state;
 mod load;
 mod overrides;
@@ -14,7 +16,9 @@ pub mod soc;
 
 pub use chen2020::chen2020;
 pub use function::Function1D;
-pub use mass::CellBudget;
+pub use format::{CellFormat, Cylindrical, FormatName, Pouch, Sizing};
+pub use pybop_mass::{MassConvention, PybopDensities};
+pub use mass::{CellBudget, MassBasis, MassComponent, Part, StackAreas};
 pub use overrides::{Override, apply_overrides, from_base_table};
 pub use soc::{StoichiometryWindow, set_initial_soc, stoichiometry_window};
 pub use set::{Cell, Electrode, Electrolyte, FARADAY, GAS_CONSTANT, ParameterSet, Separator, Thermal};

@@ -7,7 +7,7 @@ use serde::{Deserialize, Serialize};
 use crate::error::Error;
 use crate::geometry::{BuilderPool, MeshSizes, ModelBuilder};
 use crate::models::{ModelKind, Submodels};
-use crate::params::{FARADAY, ParameterSet};
+use crate::params::{CellFormat, FARADAY, MassBasis, MassConvention, ParameterSet};
 use crate::protocol::{Protocol, Step};
 use crate::simulation::{SimOptions, simulate};
 
@@ -67,6 +67,13 @@ pub struct DesignMetrics {
     pub volume: f64,
     /// Mean discharge current (A).
     pub current: f64,
+    /// Theoretical capacity of the design (A h), see [`theoretical_capacity`].
+    pub theoretical_capacity: f64,
+    /// Delivered over theoretical capacity (-): far below the baseline's when the discharge
+    /// stops early (a design limited by transport at this rate).
+    pub utilisation: f64,
+    /// Sandwich area (m^2): fixed for a free-area cell, from the format otherwise.
+    pub area: f64,
     pub gravimetric_energy_density: f64,
     pub volumetric_energy_density: f64,
     pub gravimetric_power_density: f64,
@@ -86,6 +93,12 @@ impl Metric {
 }
 
 impl DesignMetrics {
+    /// Whether the discharge stopped early: it delivered less than `min_utilisation` of the
+    /// design's theoretical capacity.
+    pub fn stopped_early(&self, min_utilisation: f64) -> bool {
+        !(self.utilisation >= min_utilisation)
+    }
+
     pub fn get(&self, m: Metric) -> f64 {
         match m {
             Metric::GravimetricEnergyDensity => self.gravimetric_energy_density,
@@ -122,6 +135,10 @@ pub struct DesignProblem {
     pub rate_from_theoretical_capacity: bool,
     /// Constant discharge power (W) instead of the C-rate, when set.
     pub power: Option<f64>,
+    /// Cell format: sizes the electrode area from the stack thickness (free area keeps it).
+    pub format: CellFormat,
+    /// Which components count in the mass and volume.
+    pub mass_convention: MassConvention,
     /// Builders re-used across evaluations (one per concurrent evaluation).
     pool: BuilderPool,
 }
@@ -151,6 +168,8 @@ impl DesignProblem {
             c_rate,
             rate_from_theoretical_capacity,
             power: None,
+            format: CellFormat::FreeArea,
+            mass_convention: MassConvention::Cellstudio,
             pool: BuilderPool::default(),
         })
     }
@@ -162,6 +181,31 @@ impl DesignProblem {
         }
         self.power = Some(power);
         Ok(self)
+    }
+
+    /// Puts the stack into a cell format; the base set must fit it.
+    pub fn with_format(mut self, format: CellFormat) -> Result<Self, Error> {
+        format.apply(&mut self.base.clone())?;
+        self.format = format;
+        Ok(self)
+    }
+
+    /// Counts mass and volume in `convention` (PyBOP's needs the free-area format).
+    pub fn with_mass_convention(mut self, convention: MassConvention) -> Result<Self, Error> {
+        if convention != MassConvention::Cellstudio && self.format != CellFormat::FreeArea {
+            return Err(Error::InvalidSetting { field: "cell.mass_basis".into(), reason: "PyBOP's convention needs the free-area format".into() });
+        }
+        self.mass_convention = convention;
+        Ok(self)
+    }
+
+    /// Mass basis of a candidate's (sized) parameter set in the problem's format and
+    /// convention.
+    pub fn mass_basis(&self, p: &ParameterSet) -> Result<MassBasis, Error> {
+        match self.mass_convention {
+            MassConvention::Pybop(d) => Ok(p.pybop_mass_basis(&d)),
+            MassConvention::Cellstudio => self.format.mass_basis(p),
+        }
     }
 
     /// The discharge protocol of a candidate's parameter set: constant current at the C-rate
@@ -195,6 +239,7 @@ impl DesignProblem {
             p.set(&tie.target, value)?;
         }
         p.validate()?;
+        self.format.apply(&mut p)?;
         Ok(p)
     }
 
@@ -207,7 +252,7 @@ impl DesignProblem {
     fn discharge(&self, builder: &mut ModelBuilder, p: &ParameterSet) -> Result<DesignMetrics, Error> {
         let built = builder.build(p)?;
         let sol = simulate(built.model.as_ref(), &mut built.workspace, &self.protocol(p), &SimOptions::for_cell(p), None)?;
-        let budget = p.budget();
+        let budget = self.mass_basis(p)?;
         let energy = sol.final_energy();
         let duration = sol.time.last().copied().unwrap_or(0.0);
         let power = if duration > 0.0 { energy * 3600.0 / duration } else { 0.0 };
@@ -219,6 +264,9 @@ impl DesignProblem {
             mass: budget.mass,
             volume: budget.volume,
             current,
+            theoretical_capacity: theoretical_capacity(p),
+            utilisation: sol.final_capacity() / theoretical_capacity(p),
+            area: p.cell.area(),
             gravimetric_energy_density: energy / budget.mass,
             volumetric_energy_density: energy / (budget.volume * 1e3),
             gravimetric_power_density: power / budget.mass,

@@ -6,12 +6,45 @@ use serde::Serialize;
 
 use super::design::{DesignMetrics, DesignProblem};
 
-/// One evaluated candidate; `metrics` is `None` when its simulation failed (with the reason).
+/// One candidate; `metrics` is `None` when its simulation failed (with the reason) or it
+/// was not evaluated (infeasible).
 #[derive(Clone, Debug, Serialize)]
 pub struct SweepPoint {
     pub x: Vec<f64>,
     pub metrics: Option<DesignMetrics>,
     pub error: Option<String>,
+    pub status: Status,
+}
+
+/// What became of a sweep point.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Status {
+    /// Evaluated, a result.
+    #[default]
+    Valid,
+    /// The simulation failed.
+    Failed,
+    /// Stores practically nothing (see `study::degenerate`).
+    Degenerate,
+    /// The discharge delivered less than the study's `min_utilisation` of the theoretical
+    /// capacity.
+    StoppedEarly,
+    /// Outside the linear constraints: skipped, not evaluated.
+    Infeasible,
+}
+
+impl Status {
+    /// Name in CSV files.
+    pub fn name(self) -> &'static str {
+        match self {
+            Status::Valid => "valid",
+            Status::Failed => "failed",
+            Status::Degenerate => "degenerate",
+            Status::StoppedEarly => "stopped_early",
+            Status::Infeasible => "infeasible",
+        }
+    }
 }
 
 /// A full tensor grid with `points[k]` evenly spaced values in `[lower[k], upper[k]]`,
@@ -68,8 +101,8 @@ pub fn evaluate_all(problem: &DesignProblem, candidates: &[Vec<f64>]) -> Vec<Swe
         .par_iter()
         .progress_with(bar.clone())
         .map(|x| match problem.evaluate(x) {
-            Ok(m) => SweepPoint { x: x.clone(), metrics: Some(m), error: None },
-            Err(e) => SweepPoint { x: x.clone(), metrics: None, error: Some(e.to_string()) },
+            Ok(m) => SweepPoint { x: x.clone(), metrics: Some(m), error: None, status: Status::Valid },
+            Err(e) => SweepPoint { x: x.clone(), metrics: None, error: Some(e.to_string()), status: Status::Failed },
         })
         .collect();
     bar.finish_and_clear();

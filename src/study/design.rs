@@ -9,17 +9,18 @@ use std::time::Instant;
 use super::Study;
 use crate::error::Error;
 use crate::optim::{
-    Bounds, LinearConstraints, Objective, OptimOptions, OptimResult, Problem, ProgressObserver, by_name,
+    Bounds, Objective, OptimOptions, OptimResult, Problem, ProgressObserver, by_name,
 };
 use crate::problem::design::{DesignMetrics, DesignProblem, Metric};
 use crate::report::plot::{Series, line_plot};
 use crate::simulation::{SimOptions, simulate};
 
-/// Minimises minus the chosen metric; a failed simulation is penalised (+inf) and the
-/// search goes on.
+/// Minimises minus the chosen metric; a failed simulation or a discharge that stops early
+/// (below `min_utilisation`) is penalised (+inf) and the search goes on.
 struct MaximiseMetric<'a> {
     problem: &'a DesignProblem,
     metric: Metric,
+    min_utilisation: f64,
 }
 
 impl Objective for MaximiseMetric<'_> {
@@ -27,7 +28,10 @@ impl Objective for MaximiseMetric<'_> {
         self.problem.variables.len()
     }
     fn evaluate(&self, x: &[f64]) -> f64 {
-        self.problem.evaluate(x).map_or(f64::INFINITY, |m| -m.get(self.metric))
+        match self.problem.evaluate(x) {
+            Ok(m) if !m.stopped_early(self.min_utilisation) => -m.get(self.metric),
+            _ => f64::INFINITY,
+        }
     }
 }
 
@@ -52,24 +56,6 @@ impl DesignOutcome {
     }
 }
 
-/// Linear constraints of the study in the optimiser's form.
-fn constraints(study: &Study) -> LinearConstraints {
-    let mut out = LinearConstraints::new();
-    for c in &study.constraints {
-        let a: Vec<f64> = study.variables.iter().map(|v| c.terms.get(&v.path).copied().unwrap_or(0.0)).collect();
-        if let Some(u) = c.upper {
-            out = out.inequality(a.clone(), u);
-        }
-        if let Some(l) = c.lower {
-            out = out.inequality(a.iter().map(|v| -v).collect(), -l);
-        }
-        if let Some(e) = c.equals {
-            out = out.equality(a.clone(), e);
-        }
-    }
-    out
-}
-
 /// Runs the study's optimiser on its first objective from the baseline design.
 pub fn run_design(study: &Study) -> Result<DesignOutcome, Error> {
     if study.objective.maximise.len() != 1 {
@@ -91,13 +77,13 @@ pub fn run_design(study: &Study) -> Result<DesignOutcome, Error> {
         .map_err(|e: toml::de::Error| Error::InvalidSetting { field: "optimiser".into(), reason: e.to_string() })?;
     let mut optimiser = by_name(&method, options.clone())?;
     let dir = study.output_dir()?;
-    let objective = MaximiseMetric { problem: &problem, metric };
+    let objective = MaximiseMetric { problem: &problem, metric, min_utilisation: study.operating.min_utilisation() };
     let bounds = Bounds::new(
         study.variables.iter().map(|v| v.lower).collect(),
         study.variables.iter().map(|v| v.upper).collect(),
     )?;
     let transforms = study.variables.iter().map(|v| v.transform()).collect();
-    let opt_problem = Problem::new(&objective, bounds)?.with_constraints(constraints(study))?.with_transforms(transforms)?;
+    let opt_problem = Problem::new(&objective, bounds)?.with_constraints(super::constraints::linear_constraints(study))?.with_transforms(transforms)?;
     let start = Instant::now();
     let initial_x = study.baseline()?;
     let initial = problem.evaluate(&initial_x)?;
@@ -124,6 +110,12 @@ pub fn run_design(study: &Study) -> Result<DesignOutcome, Error> {
     let mut warnings = study.warnings();
     warnings.extend(super::at_bound_warnings("the optimum", &names, &result.x, &lower, &upper));
     warnings.extend(super::truncation_warning("the design search", &result.stop, result.iterations, result.evaluations));
+    let min_u = study.operating.min_utilisation();
+    for (what, m) in [("the baseline", &initial), ("the optimum", &optimised)] {
+        if m.stopped_early(min_u) {
+            warnings.push(format!("{what}'s discharge stops early: it delivers {:.1} % of its theoretical capacity (threshold {:.0} %)", 100.0 * m.utilisation, 100.0 * min_u));
+        }
+    }
     let mut outcome =
         DesignOutcome { metric, initial_x, initial, result, optimised, rebuilds: problem.rebuild_count(), seconds, files: Vec::new(), warnings };
     write_outputs(study, &problem, &mut outcome, &method, dir.path())?;
@@ -137,6 +129,8 @@ fn write_outputs(study: &Study, problem: &DesignProblem, out: &mut DesignOutcome
         "study": study.name, "variables": names, "method": method,
         "initial": { "x": out.initial_x, "metrics": out.initial },
         "optimised": { "x": out.result.x, "metrics": out.optimised },
+        "format": problem.format.label(),
+        "mass_basis": { "initial": problem.mass_basis(&problem.parameters(&out.initial_x)?)?, "optimised": problem.mass_basis(&problem.parameters(&out.result.x)?)? },
         "result": out.result, "rebuilds": out.rebuilds, "seconds": out.seconds, "warnings": out.warnings,
     });
     write_output(dir, "design.json", serde_json::to_string_pretty(&json).unwrap_or_default(), &mut out.files)?;
@@ -159,19 +153,21 @@ fn write_outputs(study: &Study, problem: &DesignProblem, out: &mut DesignOutcome
     let _ = writeln!(md, "# {}\n", study.name);
     let _ = writeln!(md, "Maximised {} with {method} ({:?} after {} iterations, {} evaluations, {} model builds, {:.2} s).\n",
         out.metric.label(), out.result.stop, out.result.iterations, out.result.evaluations, out.rebuilds, out.seconds);
-    let _ = writeln!(md, "| | {} | energy (W h) | mass (g) | volume (cm^3) | W h/kg | W h/L | W/kg | W/L |", names.join(" | "));
-    let _ = writeln!(md, "|---|{}---|---|---|---|---|---|---|---|", "---|".repeat(names.len()));
+    let _ = writeln!(md, "| | {} | energy (W h) | capacity (A h) | area (m^2) | mass (g) | volume (cm^3) | W h/kg | W h/L | W/kg | W/L |", names.join(" | "));
+    let _ = writeln!(md, "|---|{}{}", "---|".repeat(names.len()), "---|".repeat(9));
     for (label, x, m) in [("initial", &out.initial_x, &out.initial), ("optimised", &out.result.x, &out.optimised)] {
         let xs: Vec<String> = x.iter().map(|v| format!("{v:.4e}")).collect();
-        let _ = writeln!(md, "| {label} | {} | {:.3} | {:.2} | {:.3} | {:.1} | {:.1} | {:.1} | {:.1} |", xs.join(" | "),
-            m.energy, m.mass * 1e3, m.volume * 1e6, m.gravimetric_energy_density, m.volumetric_energy_density,
+        let _ = writeln!(md, "| {label} | {} | {:.3} | {:.3} | {:.4} | {:.2} | {:.3} | {:.1} | {:.1} | {:.1} | {:.1} |", xs.join(" | "),
+            m.energy, m.capacity, m.area, m.mass * 1e3, m.volume * 1e6, m.gravimetric_energy_density, m.volumetric_energy_density,
             m.gravimetric_power_density, m.volumetric_power_density);
     }
     let _ = writeln!(md, "\nImprovement: {:+.2} %.\n", out.improvement());
     for w in &out.warnings {
         let _ = writeln!(md, "**Warning:** {w}\n");
     }
-    let _ = writeln!(md, "![voltage](design_voltage.svg)");
+    let _ = writeln!(md, "{}\n", super::basis::power_definition(problem, study.operating.min_utilisation()));
+    let _ = writeln!(md, "![voltage](design_voltage.svg)\n");
+    md.push_str(&super::basis::mass_basis_section(problem, &[("initial", &out.initial_x), ("optimised", &out.result.x)])?);
     write_output(dir, "report.md", md, &mut out.files)?;
     Ok(())
 }

@@ -338,7 +338,7 @@ fn landscape(problem: &FittingProblem, cost: CostKind, result: &FitResult, point
         &xs.iter().map(|&v| shown(0, v)).collect::<Vec<_>>(),
         &ys.iter().map(|&v| shown(1, v)).collect::<Vec<_>>(),
         &z,
-        Some(("optimum".into(), (shown(0, result.x[0]), shown(1, result.x[1])))),
+        &[("optimum".into(), (shown(0, result.x[0]), shown(1, result.x[1])))],
         &trace,
     )
 }

@@ -1,6 +1,9 @@
 //! Design study files (TOML): cell, model, operating point, decision variables, ties,
 //! objectives, optimiser and outputs. Unknown keys are errors naming the key and line.
 
+pub mod basis;
+pub mod cell;
+pub mod constraints;
 pub mod design;
 pub mod eis;
 pub mod fit;
@@ -14,7 +17,8 @@ use serde::{Deserialize, Serialize};
 
 use crate::error::Error;
 use crate::models::ModelKind;
-use crate::params::{Override, ParameterSet, apply_overrides, chen2020};
+pub use cell::CellChoice;
+use crate::params::{Override, ParameterSet};
 use crate::problem::design::{DesignProblem, Metric, Tie};
 
 /// A design study as written in `designs/*.toml`.
@@ -44,46 +48,6 @@ pub struct Study {
     pub sweep: Option<Sweep>,
     #[serde(default)]
     pub output: Output,
-}
-
-/// Which parameter set to start from.
-#[derive(Clone, Debug, Deserialize, Serialize)]
-#[serde(deny_unknown_fields)]
-pub struct CellChoice {
-    /// `chen2020` (embedded) or a path to a parameter-set TOML file.
-    pub parameter_set: String,
-    /// Overrides from the command line (`--set path=value`), applied after loading.
-    #[serde(skip)]
-    pub overrides: Vec<Override>,
-}
-
-impl CellChoice {
-    /// The parameter set: embedded Chen 2020 or a TOML file, with the overrides applied.
-    pub fn load(&self) -> Result<ParameterSet, Error> {
-        let mut p = match self.parameter_set.as_str() {
-            "chen2020" => chen2020(),
-            path if !Path::new(path).is_file() => {
-                return Err(Error::InvalidSetting {
-                    field: "cell.parameter_set".into(),
-                    reason: format!("`{path}` is neither a built-in set (chen2020) nor a parameter file"),
-                });
-            }
-            path => ParameterSet::from_file(Path::new(path))?,
-        };
-        apply_overrides(&mut p, &self.overrides)?;
-        Ok(p)
-    }
-
-    /// The parameter-set file, when the set is not the embedded one.
-    pub fn file(&self) -> Option<&Path> {
-        (self.parameter_set != "chen2020").then(|| Path::new(&self.parameter_set))
-    }
-}
-
-impl Default for CellChoice {
-    fn default() -> Self {
-        Self { parameter_set: "chen2020".into(), overrides: Vec::new() }
-    }
 }
 
 #[derive(Clone, Debug, Deserialize, Serialize)]
@@ -116,6 +80,19 @@ pub struct Operating {
     pub lower_cutoff: Option<f64>,
     /// Upper voltage cut-off (V); the parameter set's when absent.
     pub upper_cutoff: Option<f64>,
+    /// Smallest delivered / theoretical capacity (-) of a discharge that does not stop early
+    /// (default 0.5); designs below it are flagged and kept out of fronts and bests.
+    pub min_utilisation: Option<f64>,
+}
+
+/// Default of [`Operating::min_utilisation`].
+pub const DEFAULT_MIN_UTILISATION: f64 = 0.5;
+
+impl Operating {
+    /// The early-stop threshold (-).
+    pub fn min_utilisation(&self) -> f64 {
+        self.min_utilisation.unwrap_or(DEFAULT_MIN_UTILISATION)
+    }
 }
 
 /// A decision variable.
@@ -243,6 +220,16 @@ impl Study {
     /// Checks bounds, paths and settings against the base parameter set.
     pub fn validate(&self) -> Result<(), Error> {
         let base = self.base_parameters()?;
+        let fixed = self.cell.format_outputs();
+        let mut set_paths: Vec<(String, &str)> = self.variables.iter().enumerate().map(|(k, v)| (format!("variables[{k}].path"), v.path.as_str())).collect();
+        set_paths.extend(self.ties.iter().enumerate().map(|(k, t)| (format!("ties[{k}].target"), t.target.as_str())));
+        set_paths.extend(self.cell.overrides.iter().map(|o| (format!("--set {}", o.path), o.path.as_str())));
+        if let Some((field, path)) = set_paths.iter().find(|(_, p)| fixed.contains(p)) {
+            return Err(Error::InvalidSetting {
+                field: field.clone(),
+                reason: format!("`{path}` follows from the stack in cell.format = {}; change the format's dimensions instead", serde_json::to_string(&self.cell.format).unwrap_or_default()),
+            });
+        }
         if self.variables.is_empty() {
             return Err(Error::InvalidSetting { field: "variables".into(), reason: "at least one is needed".into() });
         }
@@ -280,6 +267,9 @@ impl Study {
                 });
             }
             _ => {}
+        }
+        if let Some(u) = self.operating.min_utilisation {
+            crate::params::check::check("operating.min_utilisation", u, u > 0.0 && u < 1.0, "must lie strictly between 0 and 1")?;
         }
         if self.objective.maximise.is_empty() {
             return Err(Error::InvalidSetting { field: "objective.maximise".into(), reason: "is empty".into() });
@@ -392,7 +382,9 @@ impl Study {
             self.model.kind,
             self.operating.c_rate.unwrap_or(1.0),
             self.operating.rate_from_theoretical_capacity,
-        )?;
+        )?
+        .with_format(self.cell.cell_format()?)?
+        .with_mass_convention(self.cell.mass_convention()?)?;
         match self.operating.power {
             Some(power) => problem.with_power(power),
             None => Ok(problem),

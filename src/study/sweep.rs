@@ -6,9 +6,9 @@ use std::time::Instant;
 
 use super::Study;
 use crate::error::Error;
-use crate::problem::design::DesignMetrics;
+use crate::problem::design::{DesignMetrics, Metric};
 use super::SweepDesign;
-use crate::problem::sweep::{SweepPoint, evaluate_all, grid, latin_hypercube};
+use crate::problem::sweep::{Status, SweepPoint, evaluate_all, grid, latin_hypercube};
 use crate::report::plot::{Series, heat_map, line_plot};
 
 /// What a sweep produced.
@@ -18,22 +18,37 @@ pub struct SweepOutcome {
     pub rebuilds: usize,
     pub seconds: f64,
     pub files: Vec<PathBuf>,
-    /// Warnings also written into `sweep.json` (designs that failed).
+    /// Warnings also written into `sweep.json` (designs that failed, stopped early or were
+    /// skipped as infeasible).
     pub warnings: Vec<String>,
 }
 
+impl SweepOutcome {
+    /// Points with a given status.
+    pub fn count(&self, status: Status) -> usize {
+        self.points.iter().filter(|p| p.status == status).count()
+    }
 
-/// Evaluates the study's grid in parallel and writes `sweep.csv`, `sweep.json` and plots of
-/// gravimetric and volumetric energy density into the output folder.
-pub fn run_sweep(study: &Study) -> Result<SweepOutcome, Error> {
-    let sweep = study.sweep.as_ref().ok_or_else(|| Error::InvalidSetting {
-        field: "sweep".into(),
-        reason: "the study has no [sweep] table".into(),
-    })?;
-    let problem = study.problem()?;
+    /// The valid point (feasible, evaluated, not stopped early) with the largest `metric`.
+    pub fn best(&self, metric: Metric) -> Option<(&SweepPoint, DesignMetrics)> {
+        best(&self.points, metric)
+    }
+}
+
+/// The valid point of `points` with the largest `metric`.
+fn best(points: &[SweepPoint], metric: Metric) -> Option<(&SweepPoint, DesignMetrics)> {
+    points
+        .iter()
+        .filter(|p| p.status == Status::Valid)
+        .filter_map(|p| p.metrics.map(|m| (p, m)))
+        .max_by(|a, b| a.1.get(metric).total_cmp(&b.1.get(metric)))
+}
+
+/// The sweep's candidate points.
+fn candidates(study: &Study, sweep: &super::Sweep) -> Result<Vec<Vec<f64>>, Error> {
     let lower: Vec<f64> = study.variables.iter().map(|v| v.lower).collect();
     let upper: Vec<f64> = study.variables.iter().map(|v| v.upper).collect();
-    let candidates = match sweep.design {
+    Ok(match sweep.design {
         SweepDesign::Grid => grid(&lower, &upper, &sweep.points),
         SweepDesign::LatinHypercube => {
             let n = sweep.samples.ok_or_else(|| Error::InvalidSetting {
@@ -42,41 +57,81 @@ pub fn run_sweep(study: &Study) -> Result<SweepOutcome, Error> {
             })?;
             latin_hypercube(&lower, &upper, n, sweep.seed)
         }
-    };
+    })
+}
+
+/// Evaluates the study's feasible grid points in parallel (points outside the linear
+/// constraints are skipped) and writes `sweep.csv`, `sweep.json` and plots of gravimetric and
+/// volumetric energy density into the output folder.
+pub fn run_sweep(study: &Study) -> Result<SweepOutcome, Error> {
+    let sweep = study.sweep.as_ref().ok_or_else(|| Error::InvalidSetting {
+        field: "sweep".into(),
+        reason: "the study has no [sweep] table".into(),
+    })?;
+    let problem = study.problem()?;
+    let feasibility = super::constraints::Feasibility::of(study)?;
+    let candidates = candidates(study, sweep)?;
     let out = study.output_dir()?;
     let start = Instant::now();
     let baseline_x = study.baseline()?;
     let baseline = problem.evaluate(&baseline_x)?;
-    let points = evaluate_all(&problem, &candidates);
+    let feasible: Vec<Vec<f64>> = candidates.iter().filter(|x| feasibility.is_feasible(x)).cloned().collect();
+    let mut evaluated = evaluate_all(&problem, &feasible).into_iter();
+    let min_u = study.operating.min_utilisation();
+    let points: Vec<SweepPoint> = candidates
+        .into_iter()
+        .map(|x| {
+            if !feasibility.is_feasible(&x) {
+                return SweepPoint { x, metrics: None, error: None, status: Status::Infeasible };
+            }
+            let mut p = evaluated.next().expect("one result per feasible point");
+            p.status = match p.metrics {
+                None => Status::Failed,
+                Some(m) if super::degenerate(&m, &baseline) => Status::Degenerate,
+                Some(m) if m.stopped_early(min_u) => Status::StoppedEarly,
+                Some(_) => Status::Valid,
+            };
+            p
+        })
+        .collect();
     let seconds = start.elapsed().as_secs_f64();
-    // A design that failed, or stores no energy, is no result.
-    let valid = |p: &SweepPoint| p.metrics.is_some_and(|m| !super::degenerate(&m, &baseline));
-    let failed = points.iter().filter(|p| p.metrics.is_none()).count();
-    let degenerate = points.iter().filter(|p| p.metrics.is_some() && !valid(p)).count();
-    if !points.iter().any(valid) {
+    let n = points.len();
+    let count = |s: Status| points.iter().filter(|p| p.status == s).count();
+    let (failed, degenerate, early, infeasible) = (count(Status::Failed), count(Status::Degenerate), count(Status::StoppedEarly), count(Status::Infeasible));
+    if count(Status::Valid) == 0 {
         let reason = points.iter().find_map(|p| p.error.as_ref().map(|e| format!("; the first failure, at {:?}: {e}", p.x))).unwrap_or_default();
         return Err(Error::InvalidSetting {
             field: "sweep".into(),
             reason: format!(
-                "no valid design (nothing written): {failed} of {} designs failed and {degenerate} store less than {} of the baseline's energy{reason}",
-                points.len(),
+                "no valid design (nothing written): {failed} of {n} designs failed, {degenerate} store less than {} of the baseline's energy, {early} stopped early and {infeasible} violate the constraints{reason}",
                 super::DEGENERATE_ENERGY_FRACTION
             ),
         });
     }
     let mut warnings = study.warnings();
     if failed > 0 {
-        warnings.push(format!("{failed} of {} designs failed (error column of sweep.csv; blank in the plots)", points.len()));
+        warnings.push(format!("{failed} of {n} designs failed (error column of sweep.csv; blank in the plots)"));
     }
     if degenerate > 0 {
-        warnings.push(format!("{degenerate} of {} designs store less than {} of the baseline's energy (degenerate)", points.len(), super::DEGENERATE_ENERGY_FRACTION));
+        warnings.push(format!("{degenerate} of {n} designs store less than {} of the baseline's energy (degenerate)", super::DEGENERATE_ENERGY_FRACTION));
+    }
+    if early > 0 {
+        warnings.push(format!("{early} of {n} designs stopped early (delivered less than {:.0} % of their theoretical capacity; not a best design)", 100.0 * min_u));
+    }
+    if infeasible > 0 {
+        warnings.push(format!("{infeasible} of {n} designs violate the linear constraints and were skipped (blank in the plots)"));
+    }
+    if let Some((p, _)) = best(&points, study.objective.maximise[0]) {
+        let names: Vec<String> = study.variables.iter().map(|v| v.path.clone()).collect();
+        let (lower, upper): (Vec<f64>, Vec<f64>) = study.variables.iter().map(|v| (v.lower, v.upper)).unzip();
+        warnings.extend(super::at_bound_warnings("the sweep's best design", &names, &p.x, &lower, &upper));
     }
     let dir = out.path();
     let mut files = Vec::new();
 
     let names: Vec<&str> = study.variables.iter().map(|v| v.path.as_str()).collect();
     let mut csv = names.join(",");
-    csv.push_str(",energy_Wh,mass_kg,volume_m3,gravimetric_energy_density_Wh_kg,volumetric_energy_density_Wh_L,gravimetric_power_density_W_kg,volumetric_power_density_W_L,error\n");
+    csv.push_str(",energy_Wh,mass_kg,volume_m3,gravimetric_energy_density_Wh_kg,volumetric_energy_density_Wh_L,gravimetric_power_density_W_kg,volumetric_power_density_W_L,utilisation,status,error\n");
     for p in &points {
         let xs: Vec<String> = p.x.iter().map(|v| format!("{v:e}")).collect();
         let m = p.metrics.unwrap_or_default();
@@ -84,7 +139,7 @@ pub fn run_sweep(study: &Study) -> Result<SweepOutcome, Error> {
         let f = |v: f64| if nan { "nan".to_string() } else { format!("{v}") };
         let _ = writeln!(
             csv,
-            "{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{},{},{},{}",
             xs.join(","),
             f(m.energy),
             f(m.mass),
@@ -93,6 +148,8 @@ pub fn run_sweep(study: &Study) -> Result<SweepOutcome, Error> {
             f(m.volumetric_energy_density),
             f(m.gravimetric_power_density),
             f(m.volumetric_power_density),
+            f(m.utilisation),
+            p.status.name(),
             p.error.clone().unwrap_or_default().replace(',', ";")
         );
     }
@@ -107,30 +164,50 @@ pub fn run_sweep(study: &Study) -> Result<SweepOutcome, Error> {
     let value = |p: &SweepPoint, grav: bool| {
         p.metrics.map_or(f64::NAN, |m| if grav { m.gravimetric_energy_density } else { m.volumetric_energy_density })
     };
+    let axes: Vec<(f64, String)> = names.iter().map(|n| axis(n)).collect();
     for (grav, stem, unit) in [(true, "gravimetric_energy_density", "W h/kg"), (false, "volumetric_energy_density", "W h/L")] {
         let path = dir.join(format!("sweep_{stem}.svg"));
         let title = format!("{} ({unit})", stem.replace('_', " "));
         match (sweep.design, sweep.points.len()) {
             (SweepDesign::Grid, 1) => {
-                let x: Vec<f64> = points.iter().map(|p| p.x[0]).collect();
+                let x: Vec<f64> = points.iter().map(|p| p.x[0] * axes[0].0).collect();
                 let y: Vec<f64> = points.iter().map(|p| value(p, grav)).collect();
-                line_plot(&path, &title, names[0], unit, &[Series { label: stem.into(), x: &x, y: &y }])?;
+                line_plot(&path, &title, &axes[0].1, unit, &[Series { label: stem.into(), x: &x, y: &y }])?;
             }
             (SweepDesign::Grid, 2) => {
                 let (n0, n1) = (sweep.points[0], sweep.points[1]);
-                let x: Vec<f64> = (0..n0).map(|i| points[i * n1].x[0]).collect();
-                let y: Vec<f64> = (0..n1).map(|j| points[j].x[1]).collect();
+                let x: Vec<f64> = (0..n0).map(|i| points[i * n1].x[0] * axes[0].0).collect();
+                let y: Vec<f64> = (0..n1).map(|j| points[j].x[1] * axes[1].0).collect();
                 let z: Vec<Vec<f64>> = (0..n0).map(|i| (0..n1).map(|j| value(&points[i * n1 + j], grav)).collect()).collect();
-                heat_map(&path, &title, (names[0], names[1]), &x, &y, &z, Some(("baseline".into(), (baseline_x[0], baseline_x[1]))), &[])?;
+                let shown = |p: &[f64]| (p[0] * axes[0].0, p[1] * axes[1].0);
+                let mut marks = vec![("baseline".to_string(), shown(&baseline_x))];
+                let metric = if grav { Metric::GravimetricEnergyDensity } else { Metric::VolumetricEnergyDensity };
+                if let Some((p, _)) = best(&points, metric) {
+                    marks.push(("best valid design".to_string(), shown(&p.x)));
+                }
+                heat_map(&path, &title, (&axes[0].1, &axes[1].1), &x, &y, &z, &marks, &[])?;
             }
             _ => {
                 // Scattered samples: density against the first variable.
-                let pts: Vec<(f64, f64)> = points.iter().map(|p| (p.x[0], value(p, grav))).collect();
-                crate::report::plot::scatter_plot(&path, &title, (names[0], unit), &[(stem.into(), pts)], None)?;
+                let pts: Vec<(f64, f64)> = points.iter().map(|p| (p.x[0] * axes[0].0, value(p, grav))).collect();
+                crate::report::plot::scatter_plot(&path, &title, (&axes[0].1, unit), &[(stem.into(), pts)], None)?;
             }
         }
         files.push(path);
     }
     let files = out.commit(&files)?;
     Ok(SweepOutcome { points, baseline, rebuilds: problem.rebuild_count(), seconds, files, warnings })
+}
+
+/// Plot scale and axis label of a decision variable: lengths in micrometres, volume fractions
+/// in per cent, anything else as it is (SI).
+fn axis(path: &str) -> (f64, String) {
+    let name = path.rsplit('.').next().unwrap_or(path);
+    if name.ends_with("thickness") || name.ends_with("radius") {
+        (1e6, format!("{path} (µm)"))
+    } else if name.ends_with("fraction") || name == "porosity" {
+        (100.0, format!("{path} (%)"))
+    } else {
+        (1.0, path.to_string())
+    }
 }

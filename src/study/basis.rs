@@ -1,0 +1,36 @@
+//! Report text shared by `design`, `sweep` and `pareto`: the mass and volume basis of chosen
+//! designs (component, density, volume, mass) and the definition of power and of a discharge
+//! that stops early.
+
+use std::fmt::Write as _;
+
+use crate::error::Error;
+use crate::problem::design::DesignProblem;
+
+/// A "Mass and volume basis" Markdown section with one table per labelled design `x`.
+pub fn mass_basis_section(problem: &DesignProblem, designs: &[(&str, &[f64])]) -> Result<String, Error> {
+    let mut md = format!("## Mass and volume basis\n\nCell format: {}. Only the components listed count in the mass; \
+        densities are those of the parameter set and the format, so absolute W h/kg compare with another tool only on the same basis.\n\n",
+        problem.format.label());
+    for (label, x) in designs {
+        let p = problem.parameters(x)?;
+        let _ = writeln!(md, "### {label}\n\n{}", problem.mass_basis(&p)?.markdown());
+    }
+    Ok(md)
+}
+
+/// How power and an early stop are defined, for the report.
+pub fn power_definition(problem: &DesignProblem, min_utilisation: f64) -> String {
+    let drive = match problem.power {
+        Some(w) => format!("a constant-power discharge at {w} W"),
+        None if problem.rate_from_theoretical_capacity => format!("a constant-current discharge at {} C of each design's theoretical capacity", problem.c_rate),
+        None => format!("a constant-current discharge at {} C of the nominal capacity", problem.c_rate),
+    };
+    format!(
+        "Power is the mean power of {drive} from full charge to the lower cut-off: delivered energy / discharge time. \
+         A discharge that delivers less than {:.0} % of the design's theoretical capacity (lithium the negative electrode can \
+         release or the positive accept) stops early (transport-limited at this rate): its mean power describes a truncated run, \
+         so it is flagged and kept out of fronts and of the best design, as is a design whose simulation fails.",
+        100.0 * min_utilisation
+    )
+}

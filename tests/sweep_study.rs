@@ -1,0 +1,27 @@
+//! `sweep` honours linear constraints: infeasible grid points are skipped and counted, the
+//! best design is chosen among feasible ones, and `design` agrees with it.
+
+use cellstudio::problem::design::Metric;
+use cellstudio::problem::sweep::Status;
+use cellstudio::study::Study;
+use cellstudio::study::sweep::run_sweep;
+
+#[test]
+fn sweep_skips_points_outside_the_constraints() {
+    let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/designs/gravimetric_chen2020.toml")).unwrap().replace(
+        "[objective]",
+        "[[constraints]]\nterms = { \"positive.active_fraction\" = 1.0 }\nupper = 0.6\n\n[objective]",
+    );
+    let mut study = Study::from_toml(&text, "constrained.toml").unwrap();
+    study.output.dir = std::env::temp_dir().join(format!("cellstudio-sweep-constrained-{}", std::process::id()));
+    let out = run_sweep(&study).unwrap();
+    // 13 x 13 grid, active fraction 0.500, 0.525, ..., 0.800: 5 of 13 columns are feasible.
+    assert_eq!(out.count(Status::Infeasible), 8 * 13);
+    assert!(out.points.iter().filter(|p| p.status == Status::Infeasible).all(|p| p.metrics.is_none() && p.x[1] > 0.6));
+    let (best, _) = out.best(Metric::GravimetricEnergyDensity).unwrap();
+    assert!(best.x[1] <= 0.6 + 1e-12, "best at active fraction {}", best.x[1]);
+    assert!(out.warnings.iter().any(|w| w.contains("104 of 169 designs violate")));
+    let csv = std::fs::read_to_string(study.output.dir.join("sweep.csv")).unwrap();
+    assert_eq!(csv.lines().filter(|l| l.contains(",infeasible,")).count(), 104);
+    let _ = std::fs::remove_dir_all(&study.output.dir);
+}
