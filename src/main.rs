@@ -381,13 +381,15 @@ fn run(cli: Cli) -> Result<(), Error> {
             use cellstudio::problem::sweep::Status;
             println!("study            {}", study.name);
             println!(
-                "designs          {} points: {} evaluated ({} failed, {} stopped early), {} infeasible skipped, in {:.2} s, {} model builds",
+                "designs          {} points: {} evaluated ({} failed, {} stopped early), {} infeasible skipped, in {:.2} s ({:.0} designs/s on {} threads), {} model builds",
                 out.points.len(),
                 out.points.len() - out.count(Status::Infeasible),
                 out.count(Status::Failed),
                 out.count(Status::StoppedEarly),
                 out.count(Status::Infeasible),
                 out.seconds,
+                (out.points.len() - out.count(Status::Infeasible)) as f64 / out.seconds,
+                rayon::current_num_threads(),
                 out.rebuilds
             );
             println!("baseline         {:.1} W h/kg, {:.1} W h/L", out.baseline.gravimetric_energy_density, out.baseline.volumetric_energy_density);

@@ -245,8 +245,25 @@ impl DesignProblem {
 
     /// Simulates the discharge of candidate `x` and measures it.
     pub fn evaluate(&self, x: &[f64]) -> Result<DesignMetrics, Error> {
+        self.with_builder(|builder| self.evaluate_with(builder, x))
+    }
+
+    /// Runs `f` with a builder from this problem's pool (its builds are counted).
+    pub fn with_builder<R>(&self, f: impl FnOnce(&mut ModelBuilder) -> R) -> R {
+        self.pool.with(|| ModelBuilder::new(self.kind, self.submodels, self.mesh), f)
+    }
+
+    /// [`evaluate`](Self::evaluate) with the given builder: candidates of one geometry in a
+    /// row share its build.
+    pub fn evaluate_with(&self, builder: &mut ModelBuilder, x: &[f64]) -> Result<DesignMetrics, Error> {
         let p = self.parameters(x)?;
-        self.pool.with(|| ModelBuilder::new(self.kind, self.submodels, self.mesh), |builder| self.discharge(builder, &p))
+        self.discharge(builder, &p)
+    }
+
+    /// The geometry candidate `x` builds (what decides whether a builder rebuilds), or `None`
+    /// when its parameters are invalid.
+    pub fn geometry(&self, x: &[f64]) -> Option<crate::geometry::Geometry> {
+        self.parameters(x).ok().map(|p| crate::geometry::Geometry::of(&p, self.mesh))
     }
 
     fn discharge(&self, builder: &mut ModelBuilder, p: &ParameterSet) -> Result<DesignMetrics, Error> {

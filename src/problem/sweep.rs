@@ -1,6 +1,6 @@
 //! Parameter sweeps: evaluate a design problem over a grid in parallel.
 
-use indicatif::{ParallelProgressIterator, ProgressBar, ProgressStyle};
+use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
 use serde::Serialize;
 
@@ -91,22 +91,76 @@ pub fn latin_hypercube(lower: &[f64], upper: &[f64], n: usize, seed: u64) -> Vec
 
 /// Evaluates every candidate in parallel, with a progress bar on a terminal. The order of
 /// the results is the order of `candidates`, whatever the thread count.
+///
+/// Work is split by geometry: candidates are ordered by the geometry they build and cut into
+/// runs of one geometry (split further only to keep every thread busy), and each run is
+/// evaluated in turn by one builder. So the number of model builds is about the number of
+/// distinct geometries plus a few per thread, not a number that grows with interleaving.
 pub fn evaluate_all(problem: &DesignProblem, candidates: &[Vec<f64>]) -> Vec<SweepPoint> {
     let bar = ProgressBar::new(candidates.len() as u64);
     bar.set_style(
         ProgressStyle::with_template("{bar:40} {pos}/{len} designs, {elapsed} elapsed, eta {eta}")
             .unwrap_or_else(|_| ProgressStyle::default_bar()),
     );
-    let points = candidates
+    let tasks = geometry_runs(problem, candidates, 4 * rayon::current_num_threads());
+    let mut results: Vec<(usize, SweepPoint)> = tasks
         .par_iter()
-        .progress_with(bar.clone())
-        .map(|x| match problem.evaluate(x) {
-            Ok(m) => SweepPoint { x: x.clone(), metrics: Some(m), error: None, status: Status::Valid },
-            Err(e) => SweepPoint { x: x.clone(), metrics: None, error: Some(e.to_string()), status: Status::Failed },
+        .flat_map_iter(|run| {
+            let evaluated: Vec<(usize, SweepPoint)> = problem.with_builder(|builder| {
+                run.iter()
+                    .map(|&k| {
+                        let x = &candidates[k];
+                        let point = match problem.evaluate_with(builder, x) {
+                            Ok(m) => SweepPoint { x: x.clone(), metrics: Some(m), error: None, status: Status::Valid },
+                            Err(e) => SweepPoint { x: x.clone(), metrics: None, error: Some(e.to_string()), status: Status::Failed },
+                        };
+                        bar.inc(1);
+                        (k, point)
+                    })
+                    .collect()
+            });
+            evaluated
         })
         .collect();
     bar.finish_and_clear();
-    points
+    results.sort_unstable_by_key(|(k, _)| *k);
+    results.into_iter().map(|(_, p)| p).collect()
+}
+
+/// Candidate indices grouped into runs that build one geometry, ordered by geometry; runs are
+/// cut to at most `ceil(n / min_tasks)` candidates so that there are at least about
+/// `min_tasks` of them.
+fn geometry_runs(problem: &DesignProblem, candidates: &[Vec<f64>], min_tasks: usize) -> Vec<Vec<usize>> {
+    let key = |x: &[f64]| -> Vec<f64> {
+        problem.geometry(x).map_or_else(Vec::new, |g| {
+            let s = g.sizes;
+            vec![
+                g.negative_thickness,
+                g.separator_thickness,
+                g.positive_thickness,
+                g.negative_radius,
+                g.positive_radius,
+                g.area,
+                s.x_n as f64,
+                s.x_s as f64,
+                s.x_p as f64,
+                s.r_n as f64,
+                s.r_p as f64,
+            ]
+        })
+    };
+    let keys: Vec<Vec<f64>> = candidates.par_iter().map(|x| key(x)).collect();
+    let mut order: Vec<usize> = (0..candidates.len()).collect();
+    order.sort_by(|&a, &b| keys[a].iter().zip(&keys[b]).map(|(u, v)| u.total_cmp(v)).find(|o| o.is_ne()).unwrap_or(keys[a].len().cmp(&keys[b].len())));
+    let longest = candidates.len().div_ceil(min_tasks.max(1)).max(1);
+    let mut runs: Vec<Vec<usize>> = Vec::new();
+    for k in order {
+        match runs.last_mut() {
+            Some(run) if run.len() < longest && !keys[k].is_empty() && keys[run[0]] == keys[k] => run.push(k),
+            _ => runs.push(vec![k]),
+        }
+    }
+    runs
 }
 
 #[cfg(test)]
