@@ -17,7 +17,7 @@ use crate::data::{CsvFormat, Recording};
 use crate::error::Error;
 use crate::optim::OptimOptions;
 use crate::problem::fit::{FitObjective, FitResult, fit};
-use crate::problem::fitting::{FitParameter, FittingProblem, ModelSpec};
+use crate::problem::fitting::{FitParameter, FittingProblem, INITIAL_SOC, ModelSpec};
 use crate::report::plot::{Series, heat_map, line_plot};
 
 /// A fitting study as written in `fits/*.toml`.
@@ -32,7 +32,11 @@ pub struct FitStudy {
     #[serde(default)]
     pub cell: CellChoice,
     pub model: ModelSpec,
-    pub data: DataChoice,
+    /// The recordings: one `[data]` table, or several `[[data]]` entries fitted jointly
+    /// (sharing `parameters`, each with its own file, protocol, temperature, initial state
+    /// and weight).
+    #[serde(deserialize_with = "one_or_many")]
+    pub data: Vec<DataChoice>,
     pub parameters: Vec<FitParameter>,
     #[serde(default)]
     pub cost: CostKind,
@@ -49,11 +53,15 @@ pub struct FitStudy {
     pub output: Output,
 }
 
-/// The recording to fit.
+/// A recording to fit, with what belongs to its experiment.
 #[derive(Clone, Debug, Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct DataChoice {
-    /// CSV file, relative to the working directory (the CLI's `--data` overrides it).
+    /// Label in reports (default `data1`, `data2`, ... in file order).
+    #[serde(default)]
+    pub name: Option<String>,
+    /// CSV file or raw cycler export, relative to the working directory (the CLI's `--data`
+    /// overrides it in a study with one entry).
     pub file: PathBuf,
     #[serde(default)]
     pub format: CsvFormat,
@@ -68,6 +76,85 @@ pub struct DataChoice {
     /// first recorded voltage instead of the parameter set's initial concentrations.
     #[serde(default)]
     pub start_at_rest_voltage: bool,
+    /// Weight (-) of this experiment's cost in the sum over experiments.
+    #[serde(default = "one")]
+    pub weight: f64,
+    /// Ambient and initial temperature (K) of the experiment; the parameter set's when absent.
+    #[serde(default)]
+    pub temperature: Option<f64>,
+    /// Initial state of charge (-): a number fixes it, a table `{ initial, lower, upper }`
+    /// fits it as this experiment's own (nuisance) parameter.
+    #[serde(default)]
+    pub initial_soc: Option<InitialSoc>,
+    /// Protocol file (TOML) driving the model instead of the recorded current; its duration
+    /// must cover the recording.
+    #[serde(default)]
+    pub protocol: Option<PathBuf>,
+}
+
+fn one() -> f64 {
+    1.0
+}
+
+/// The initial state of charge of one experiment.
+#[derive(Clone, Copy, Debug, Deserialize, Serialize)]
+#[serde(untagged)]
+pub enum InitialSoc {
+    Fixed(f64),
+    Fitted { initial: f64, lower: f64, upper: f64 },
+}
+
+/// `[data]` (one table) or `[[data]]` (an array of tables), with errors that name the entry.
+fn one_or_many<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Vec<DataChoice>, D::Error> {
+    use serde::de::Error as _;
+    let value = toml::Value::deserialize(d)?;
+    match value {
+        toml::Value::Array(entries) if entries.is_empty() => Err(D::Error::custom("[[data]] needs at least one entry")),
+        toml::Value::Array(entries) => entries
+            .into_iter()
+            .enumerate()
+            .map(|(k, e)| e.try_into().map_err(|e| D::Error::custom(format!("[[data]] entry {}: {e}", k + 1))))
+            .collect(),
+        toml::Value::Table(_) => value.try_into().map(|d| vec![d]).map_err(|e| D::Error::custom(format!("[data]: {e}"))),
+        _ => Err(D::Error::custom("`data` must be a table [data] or an array of tables [[data]]")),
+    }
+}
+
+impl DataChoice {
+    /// The experiment's label: `name`, or `data<k+1>`.
+    pub fn label(&self, k: usize) -> String {
+        self.name.clone().unwrap_or_else(|| format!("data{}", k + 1))
+    }
+
+    fn validate(&self, k: usize) -> Result<(), Error> {
+        let field = |f: &str| format!("data.{}.{f}", self.label(k));
+        if !(self.synthetic_noise >= 0.0 && self.synthetic_noise.is_finite()) {
+            return Err(Error::invalid(field("synthetic_noise"), self.synthetic_noise, "must be non-negative"));
+        }
+        if !(self.weight >= 0.0 && self.weight.is_finite()) {
+            return Err(Error::invalid(field("weight"), self.weight, "must be non-negative and finite"));
+        }
+        if let Some(t) = self.temperature {
+            if !(t > 0.0 && t < 1000.0) {
+                return Err(Error::invalid(field("temperature"), t, "must be a temperature in kelvin"));
+            }
+        }
+        match self.initial_soc {
+            Some(_) if self.start_at_rest_voltage => Err(Error::InvalidSetting {
+                field: field("initial_soc"),
+                reason: "give either initial_soc or start_at_rest_voltage = true, not both".into(),
+            }),
+            Some(InitialSoc::Fixed(v)) if !(0.0..=1.0).contains(&v) => Err(Error::invalid(field("initial_soc"), v, "must lie in [0, 1]")),
+            Some(InitialSoc::Fitted { initial, lower, upper }) => {
+                let p = FitParameter::linear(INITIAL_SOC, initial, lower, upper);
+                if !(0.0 <= lower && upper <= 1.0) {
+                    return Err(Error::invalid(field("initial_soc.upper"), upper, format!("bounds [{lower}, {upper}] must lie in [0, 1]")));
+                }
+                p.validate(&crate::params::chen2020()).map_err(|e| Error::InvalidSetting { field: field("initial_soc"), reason: e.to_string() })
+            }
+            _ => Ok(()),
+        }
+    }
 }
 
 /// A grid of the cost over the first two parameters (log-spaced for log parameters).
@@ -111,8 +198,11 @@ impl FitStudy {
                 return Err(Error::invalid("landscape.points", l.points as f64, "must lie in 2..=200"));
             }
         }
-        if !(self.data.synthetic_noise >= 0.0 && self.data.synthetic_noise.is_finite()) {
-            return Err(Error::invalid("data.synthetic_noise", self.data.synthetic_noise, "must be non-negative"));
+        for (k, d) in self.data.iter().enumerate() {
+            d.validate(k)?;
+            if self.data[..k].iter().enumerate().any(|(j, o)| o.label(j) == d.label(k)) {
+                return Err(Error::InvalidSetting { field: format!("data.{}.name", d.label(k)), reason: "two entries have this name".into() });
+            }
         }
         let (method, options) = self.optimiser()?;
         crate::optim::by_name(&method, options)?;
@@ -131,28 +221,54 @@ impl FitStudy {
         Ok(self)
     }
 
-    /// Files the run reads: the study, the parameter set and the recording.
+    /// Files the run reads: the study, the parameter set, the recordings and protocols.
     pub fn inputs<'a>(&'a self, data: Option<&'a Path>) -> Vec<&'a Path> {
-        self.source.as_deref().into_iter().chain(self.cell.file()).chain([data.unwrap_or(&self.data.file)]).collect()
+        let files = self.data.iter().enumerate().flat_map(|(k, d)| {
+            let file = if k == 0 { data.unwrap_or(&d.file) } else { &d.file };
+            std::iter::once(file).chain(d.protocol.as_deref())
+        });
+        self.source.as_deref().into_iter().chain(self.cell.file()).chain(files).collect()
+    }
+
+    /// Whether the study fits several experiments (or one with its own fitted parameters)
+    /// jointly ([`crate::problem::joint`]).
+    pub fn is_joint(&self) -> bool {
+        self.data.len() > 1 || self.data.iter().any(|d| matches!(d.initial_soc, Some(InitialSoc::Fitted { .. })))
+    }
+
+    /// Checks that `--data` replaces the file of a study with one `[data]`.
+    pub fn check_data_override(&self, data: Option<&Path>) -> Result<(), Error> {
+        match data {
+            Some(d) if self.data.len() > 1 => Err(Error::InvalidSetting {
+                field: "--data".into(),
+                reason: format!("`{}`: the study has {} [[data]] entries; --data replaces the file of a study with one", d.display(), self.data.len()),
+            }),
+            _ => Ok(()),
+        }
     }
 
     /// What the run does with `data.synthetic_noise`, when it is set: added to the study's own
     /// (synthetic) file, never to a recording given with `--data`.
-    pub fn noise_note(&self, data: Option<&Path>) -> Option<String> {
-        let sigma = self.data.synthetic_noise;
-        // In mV, rounded to the microvolt.
-        let mv = (sigma * 1e6).round() / 1e3;
-        (sigma > 0.0).then(|| match data {
-            None => format!(
-                "synthetic Gaussian noise of {mv} mV (seed {}) was added to the voltage of `{}` (`data.synthetic_noise`)",
-                self.data.noise_seed,
-                self.data.file.display()
-            ),
-            Some(d) => format!(
-                "the study's `data.synthetic_noise` ({mv} mV) was not applied: `{}` (--data) is fitted as recorded",
-                d.display()
-            ),
-        })
+    pub fn noise_note(&self, data: Option<&Path>) -> Vec<String> {
+        self.data
+            .iter()
+            .filter(|d| d.synthetic_noise > 0.0)
+            .map(|d| {
+                // In mV, rounded to the microvolt.
+                let mv = (d.synthetic_noise * 1e6).round() / 1e3;
+                match data {
+                    None => format!(
+                        "synthetic Gaussian noise of {mv} mV (seed {}) was added to the voltage of `{}` (`data.synthetic_noise`)",
+                        d.noise_seed,
+                        d.file.display()
+                    ),
+                    Some(f) => format!(
+                        "the study's `data.synthetic_noise` ({mv} mV) was not applied: `{}` (--data) is fitted as recorded",
+                        f.display()
+                    ),
+                }
+            })
+            .collect()
     }
 
     /// The optimiser's name and options.
@@ -166,13 +282,17 @@ impl FitStudy {
         Ok((method, options))
     }
 
-    /// Reads the recording: `data` as recorded, or the study's own file with its synthetic
-    /// noise added (when `data.synthetic_noise` is set).
-    pub fn recording(&self, data: Option<&Path>) -> Result<Recording, Error> {
-        let mut rec = Recording::from_csv_with(data.unwrap_or(&self.data.file), &self.data.format)?;
-        if data.is_none() && self.data.synthetic_noise > 0.0 {
-            let mut rng = rand::rngs::StdRng::seed_from_u64(self.data.noise_seed);
-            let noise = Normal::new(0.0, self.data.synthetic_noise).expect("checked non-negative");
+    /// Reads recording `k`: `data` as recorded (for the first entry), or the study's own file
+    /// with its synthetic noise added (when `synthetic_noise` is set). A raw cycler export
+    /// (Basytec, BioLogic, Maccor, Neware, Arbin) is detected and read when `[data.format]`
+    /// is the default.
+    pub fn recording(&self, k: usize, data: Option<&Path>) -> Result<Recording, Error> {
+        let d = &self.data[k];
+        let data = data.filter(|_| k == 0);
+        let mut rec = crate::data::cycler::read_recording(data.unwrap_or(&d.file), &d.format)?;
+        if data.is_none() && d.synthetic_noise > 0.0 {
+            let mut rng = rand::rngs::StdRng::seed_from_u64(d.noise_seed);
+            let noise = Normal::new(0.0, d.synthetic_noise).expect("checked non-negative");
             for v in &mut rec.voltage {
                 *v += noise.sample(&mut rng);
             }
@@ -180,10 +300,47 @@ impl FitStudy {
         Ok(rec)
     }
 
-    /// The fitting problem of the study.
+    /// The fitting problem of experiment `k` (its temperature, initial state and protocol)
+    /// and the number of its own parameters after the shared ones (1 with a fitted
+    /// `initial_soc`, else 0).
+    pub fn experiment_problem(&self, k: usize, data: Option<&Path>) -> Result<(FittingProblem, usize), Error> {
+        self.check_data_override(data)?;
+        let d = &self.data[k];
+        let mut base = self.cell.load()?;
+        if let Some(t) = d.temperature {
+            base.set("thermal.ambient_temperature", t)?;
+            base.set("thermal.initial_temperature", t)?;
+        }
+        let mut parameters = self.parameters.clone();
+        match d.initial_soc {
+            Some(InitialSoc::Fixed(v)) => {
+                crate::params::set_initial_soc(&mut base, v)?;
+            }
+            Some(InitialSoc::Fitted { initial, lower, upper }) => parameters.push(FitParameter::linear(INITIAL_SOC, initial, lower, upper)),
+            None => {}
+        }
+        let own = parameters.len() - self.parameters.len();
+        let mut problem = FittingProblem::new(self.model, base, parameters, self.recording(k, data)?)?;
+        if d.start_at_rest_voltage {
+            problem = problem.starting_at_rest()?;
+        }
+        if let Some(path) = &d.protocol {
+            let text = std::fs::read_to_string(path).map_err(Error::io(path))?;
+            let protocol = toml::from_str(&text).map_err(|e| Error::Parse { path: path.display().to_string(), message: e.to_string() })?;
+            problem = problem.with_protocol(protocol)?;
+        }
+        Ok((problem, own))
+    }
+
+    /// The fitting problem of a study with one experiment and no parameters of its own.
     pub fn problem(&self, data: Option<&Path>) -> Result<FittingProblem, Error> {
-        let problem = FittingProblem::new(self.model, self.cell.load()?, self.parameters.clone(), self.recording(data)?)?;
-        if self.data.start_at_rest_voltage { problem.starting_at_rest() } else { Ok(problem) }
+        if self.is_joint() {
+            return Err(Error::InvalidSetting {
+                field: "data".into(),
+                reason: format!("the study fits {} experiments jointly (or fits an initial_soc): this run takes one [data] without fitted initial_soc", self.data.len()),
+            });
+        }
+        Ok(self.experiment_problem(0, data)?.0)
     }
 }
 
@@ -196,6 +353,8 @@ pub struct FitOutcome {
     /// Notes (synthetic noise) and warnings (parameters at a bound), also in the report.
     pub notes: Vec<String>,
     pub warnings: Vec<String>,
+    /// Each experiment's share of a joint fit (empty for one experiment).
+    pub experiments: Vec<crate::problem::joint::ExperimentFit>,
 }
 
 /// Fits the study's problem, then writes `report.md`, `fit.json`, `fit_voltage.svg`,
@@ -209,12 +368,15 @@ pub fn run_fit(study: &FitStudy, data: Option<&Path>) -> Result<FitOutcome, Erro
 
 /// [`run_fit`] writing into `dir` (a staged output folder).
 pub(crate) fn fit_into(study: &FitStudy, data: Option<&Path>, dir: &Path) -> Result<FitOutcome, Error> {
+    if study.is_joint() {
+        return super::joint_fit::joint_fit_into(study, data, dir);
+    }
     let problem = study.problem(data)?;
     let (method, options) = study.optimiser()?;
     let initial_voltage = problem.simulate(&problem.initial())?;
-    let initial_rmse = rms(&problem.residuals(&initial_voltage), &problem.weights);
+    let initial_rmse = crate::problem::fit::weighted_rms(&problem.residuals(&initial_voltage), &problem.weights);
     let result = fit(&problem, study.cost, &method, options)?;
-    let notes: Vec<String> = study.noise_note(data).into_iter().collect();
+    let notes = study.noise_note(data);
     let names: Vec<String> = problem.parameters.iter().map(|p| p.path.clone()).collect();
     let lower: Vec<f64> = problem.parameters.iter().map(|p| p.lower).collect();
     let upper: Vec<f64> = problem.parameters.iter().map(|p| p.upper).collect();
@@ -259,12 +421,7 @@ pub(crate) fn fit_into(study: &FitStudy, data: Option<&Path>, dir: &Path) -> Res
         let _ = writeln!(md, "\n**Warning:** {w}.");
     }
     write_output(dir, "report.md", md, &mut files)?;
-    Ok(FitOutcome { result, initial_rmse, files, notes, warnings })
-}
-
-fn rms(r: &[f64], w: &[f64]) -> f64 {
-    let weight: f64 = w.iter().sum();
-    (r.iter().zip(w).map(|(r, w)| w * r * r).sum::<f64>() / weight).sqrt()
+    Ok(FitOutcome { result, initial_rmse, files, notes, warnings, experiments: Vec::new() })
 }
 
 /// The cost on a grid over the first two parameters (other parameters at the optimum), drawn

@@ -1,0 +1,126 @@
+//! The fit of a study with several `[[data]]` entries: the experiments' problems joined
+//! ([`crate::problem::joint`]), fitted together, and reported with each experiment's RMSE,
+//! its fit and residual plots, and the shared and per-experiment parameters with standard
+//! errors.
+
+use std::fmt::Write as _;
+use std::path::Path;
+
+use super::fit::{FitOutcome, FitStudy, parameter_table};
+use super::write_output;
+use crate::error::Error;
+use crate::problem::joint::{JointFit, JointProblem, fit_joint};
+use crate::report::plot::{Series, line_plot};
+
+/// The study's experiments joined into one problem.
+pub fn joint_problem(study: &FitStudy, data: Option<&Path>) -> Result<JointProblem, Error> {
+    let experiments = (0..study.data.len())
+        .map(|k| {
+            let (problem, own) = study.experiment_problem(k, data)?;
+            Ok((study.data[k].label(k), problem, study.data[k].weight, own))
+        })
+        .collect::<Result<Vec<_>, Error>>()?;
+    JointProblem::new(study.parameters.clone(), experiments)
+}
+
+/// Fits the experiments jointly and writes `report.md`, `fit.json` and, per experiment,
+/// `fit_voltage_<name>.svg` and `fit_residual_<name>.svg` into `dir`.
+pub(crate) fn joint_fit_into(study: &FitStudy, data: Option<&Path>, dir: &Path) -> Result<FitOutcome, Error> {
+    let problem = joint_problem(study, data)?;
+    let (method, options) = study.optimiser()?;
+    let fit = fit_joint(&problem, study.cost, &method, options)?;
+    let notes = study.noise_note(data);
+    let names: Vec<String> = problem.parameters.iter().map(|p| p.path.clone()).collect();
+    let lower: Vec<f64> = problem.parameters.iter().map(|p| p.lower).collect();
+    let upper: Vec<f64> = problem.parameters.iter().map(|p| p.upper).collect();
+    let warnings = super::at_bound_warnings("the joint fit", &names, &fit.result.x, &lower, &upper);
+    let mut files = Vec::new();
+    for (e, ef) in problem.experiments.iter().zip(&fit.experiments) {
+        let t = &e.problem.data.time;
+        let path = dir.join(format!("fit_voltage_{}.svg", ef.name));
+        line_plot(
+            &path,
+            &format!("{}: {} voltage", study.name, ef.name),
+            "time (s)",
+            "voltage (V)",
+            &[
+                Series { label: "data".into(), x: t, y: &e.problem.data.voltage },
+                Series { label: "initial".into(), x: t, y: &ef.initial_voltage },
+                Series { label: "fitted".into(), x: t, y: &ef.voltage },
+            ],
+        )?;
+        files.push(path);
+        let mv = |v: &[f64]| e.problem.residuals(v).iter().map(|r| 1e3 * r).collect::<Vec<_>>();
+        let path = dir.join(format!("fit_residual_{}.svg", ef.name));
+        line_plot(
+            &path,
+            &format!("{}: {} residual (model - data)", study.name, ef.name),
+            "time (s)",
+            "residual (mV)",
+            &[
+                Series { label: "initial".into(), x: t, y: &mv(&ef.initial_voltage) },
+                Series { label: "fitted".into(), x: t, y: &mv(&ef.voltage) },
+            ],
+        )?;
+        files.push(path);
+    }
+    write_output(dir, "fit.json", serde_json::to_string_pretty(&fit).expect("serialisable"), &mut files)?;
+    let mut md = report(study, &problem, &fit, &method);
+    for n in &notes {
+        let _ = writeln!(md, "\nNote: {n}.");
+    }
+    for w in &warnings {
+        let _ = writeln!(md, "\n**Warning:** {w}.");
+    }
+    write_output(dir, "report.md", md, &mut files)?;
+    let initial_rmse = combined_initial_rmse(&fit);
+    Ok(FitOutcome { result: fit.result, initial_rmse, files, notes, warnings, experiments: fit.experiments })
+}
+
+/// The RMS residual (V) at the initial parameters over every experiment's points, each
+/// weighted by its experiment's weight.
+fn combined_initial_rmse(fit: &JointFit) -> f64 {
+    let (sum, weight) = fit.experiments.iter().fold((0.0, 0.0), |(s, w), e| {
+        let n = e.weight * e.points as f64;
+        (s + n * e.initial_rmse * e.initial_rmse, w + n)
+    });
+    (sum / weight).sqrt()
+}
+
+fn report(study: &FitStudy, problem: &JointProblem, fit: &JointFit, method: &str) -> String {
+    let r = &fit.result;
+    let mut s = String::new();
+    let _ = writeln!(s, "# {}\n", study.name);
+    let _ = writeln!(
+        s,
+        "Fitted {} parameter(s) of the {} model jointly to {} experiments by {} with the {} optimiser: \
+         weighted RMSE {:.3} mV (initial {:.3} mV), {} evaluations and {} gradients in {:.2} s, stop: {:?}.\n",
+        problem.dim(),
+        study.model.kind,
+        problem.experiments.len(),
+        study.cost.name(),
+        method,
+        r.rmse * 1e3,
+        combined_initial_rmse(fit) * 1e3,
+        r.evaluations,
+        r.gradient_evaluations,
+        r.seconds,
+        r.stop
+    );
+    s.push_str("| experiment | file | weight | points | initial RMSE (mV) | fitted RMSE (mV) |\n|---|---|---|---|---|---|\n");
+    for (k, e) in fit.experiments.iter().enumerate() {
+        let _ = writeln!(
+            s,
+            "| {} | `{}` | {} | {} | {:.3} | {:.3} |",
+            e.name,
+            study.data[k].file.display(),
+            e.weight,
+            e.points,
+            e.initial_rmse * 1e3,
+            e.rmse * 1e3
+        );
+    }
+    s.push('\n');
+    s.push_str(&parameter_table(r));
+    s
+}
