@@ -334,6 +334,7 @@ impl FitStudy {
 
     /// The fitting problem of a study with one experiment and no parameters of its own.
     pub fn problem(&self, data: Option<&Path>) -> Result<FittingProblem, Error> {
+        self.check_data_override(data)?;
         if self.is_joint() {
             return Err(Error::InvalidSetting {
                 field: "data".into(),
