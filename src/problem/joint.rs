@@ -8,7 +8,7 @@
 use rayon::prelude::*;
 use serde::Serialize;
 
-use super::fit::{FitObjective, FitResult, covariance, minimise, weighted_rms};
+use super::fit::{FitObjective, FitResult, Identifiability, minimise, weighted_rms};
 use super::fitting::{FitParameter, FittingProblem};
 use crate::cost::CostKind;
 use crate::error::Error;
@@ -185,7 +185,7 @@ pub struct JointFit {
 }
 
 /// Minimises the weighted sum of the experiments' costs, then evaluates the standard errors
-/// from every experiment's sensitivities (rows weighted by the experiment's weight).
+/// from every experiment's sensitivities and residual variance ([`sandwich_covariance`]).
 pub fn fit_joint(problem: &JointProblem, cost: CostKind, optimiser: &str, options: OptimOptions) -> Result<JointFit, Error> {
     let objective = JointObjective { problem, cost };
     let initial = problem.initial();
@@ -196,20 +196,23 @@ pub fn fit_joint(problem: &JointProblem, cost: CostKind, optimiser: &str, option
         .par_iter()
         .map(|e| Ok((e.problem.simulate_with_sensitivities(&problem.local(e, &theta))?, e.problem.simulate(&problem.local(e, &initial))?)))
         .collect::<Result<_, Error>>()?;
-    let (mut r, mut w, mut rows, mut voltage) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+    let mut blocks = Vec::new();
+    let mut voltage = Vec::new();
     let mut experiments = Vec::new();
     for (e, (sim, v0)) in problem.experiments.iter().zip(sims) {
         let re = e.problem.residuals(&sim.voltage);
         let we = &e.problem.weights;
-        for (k, row) in sim.sensitivity.iter().enumerate() {
-            let mut joint = vec![0.0; problem.dim()];
-            for (&j, s) in e.index.iter().zip(row) {
-                joint[j] = *s;
-            }
-            rows.push(joint);
-            r.push(re[k]);
-            w.push(e.weight * we[k]);
-        }
+        let rows: Vec<Vec<f64>> = sim
+            .sensitivity
+            .iter()
+            .map(|row| {
+                let mut joint = vec![0.0; problem.dim()];
+                for (&j, s) in e.index.iter().zip(row) {
+                    joint[j] = *s;
+                }
+                joint
+            })
+            .collect();
         experiments.push(ExperimentFit {
             name: e.name.clone(),
             weight: e.weight,
@@ -219,9 +222,93 @@ pub fn fit_joint(problem: &JointProblem, cost: CostKind, optimiser: &str, option
             voltage: sim.voltage.clone(),
             initial_voltage: v0,
         });
+        blocks.push(Block { weight: e.weight, residuals: re, point_weights: we.clone(), rows });
         voltage.extend(sim.voltage);
     }
     let scale: Vec<f64> = problem.parameters.iter().map(|p| p.initial.abs().max(f64::MIN_POSITIVE)).collect();
-    let id = covariance(&r, &w, &rows, &scale)?;
+    let id = sandwich_covariance(&blocks, &scale)?;
     Ok(JointFit { result: search.into_result(id, voltage), experiments })
+}
+
+/// One experiment's residuals (V), point weights, sensitivity rows over the joint
+/// parameters (V per unit) and weight in the cost.
+struct Block {
+    weight: f64,
+    residuals: Vec<f64>,
+    point_weights: Vec<f64>,
+    rows: Vec<Vec<f64>>,
+}
+
+/// Covariance of a weighted least-squares fit whose experiment weights `w_e` are not their
+/// inverse noise variances: `A⁻¹ B A⁻¹` with `A = Σ w_e J_eᵀJ_e` and
+/// `B = Σ w_e² s_e² J_eᵀJ_e`, `s_e²` each experiment's residual variance (over `N - P`
+/// degrees of freedom in all). With one weight for all it is `s² A⁻¹`, the single-experiment
+/// [`super::fit::identifiability`]. Parameters along a direction the data do not inform
+/// (eigenvalue of `A` below 1e-12 of the largest) get an infinite error.
+fn sandwich_covariance(blocks: &[Block], scale: &[f64]) -> Result<Identifiability, Error> {
+    let p = scale.len();
+    let n: f64 = blocks.iter().map(|b| b.point_weights.iter().sum::<f64>()).sum();
+    let (mut a, mut b) = (vec![0.0; p * p], vec![0.0; p * p]);
+    let (mut sse, mut weight) = (0.0, 0.0);
+    for blk in blocks {
+        let ne: f64 = blk.point_weights.iter().sum();
+        let sse_e: f64 = blk.residuals.iter().zip(&blk.point_weights).map(|(r, w)| w * r * r).sum();
+        sse += blk.weight * sse_e;
+        weight += blk.weight * ne;
+        let s2 = sse_e / ne.max(1.0) * n / (n - p as f64).max(1.0);
+        for (row, &wi) in blk.rows.iter().zip(&blk.point_weights) {
+            for i in 0..p {
+                for j in 0..p {
+                    let f = wi * row[i] * scale[i] * row[j] * scale[j];
+                    a[i * p + j] += blk.weight * f;
+                    b[i * p + j] += blk.weight * blk.weight * s2 * f;
+                }
+            }
+        }
+    }
+    let rmse = (sse / weight).sqrt();
+    let (values, vectors) = crate::optim::linalg::sym_eigen(&a, p)?;
+    let largest = values.iter().fold(0.0f64, |m, v| m.max(*v));
+    let informed: Vec<bool> = values.iter().map(|v| *v > 1e-12 * largest).collect();
+    let mut pinv = vec![0.0; p * p];
+    for i in 0..p {
+        for j in 0..p {
+            pinv[i * p + j] = (0..p).filter(|&k| informed[k]).map(|k| vectors[i * p + k] * vectors[j * p + k] / values[k]).sum();
+        }
+    }
+    let product = |x: &[f64], y: &[f64]| -> Vec<f64> {
+        (0..p * p).map(|ij| (0..p).map(|k| x[(ij / p) * p + k] * y[k * p + ij % p]).sum()).collect()
+    };
+    let scaled = product(&product(&pinv, &b), &pinv);
+    let cov: Vec<f64> = (0..p * p).map(|ij| scaled[ij] * scale[ij / p] * scale[ij % p]).collect();
+    let uninformed = |i: usize| (0..p).any(|k| !informed[k] && vectors[i * p + k].abs() > 1e-8);
+    let std_errors: Vec<f64> = (0..p).map(|i| if uninformed(i) { f64::INFINITY } else { cov[i * p + i].sqrt() }).collect();
+    let correlation = (0..p).map(|i| (0..p).map(|j| cov[i * p + j] / (std_errors[i] * std_errors[j])).collect()).collect();
+    Ok(Identifiability { rmse, std_errors, correlation })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// With one experiment of weight 1 the sandwich is the plain least-squares covariance.
+    #[test]
+    fn sandwich_of_one_unit_weight_experiment_is_the_plain_covariance() {
+        let rows: Vec<Vec<f64>> = (0..50).map(|k| vec![1.0, (k as f64 * 0.37).sin(), 0.1 * k as f64]).collect();
+        let r: Vec<f64> = (0..50).map(|k| 1e-3 * ((k as f64 * 1.7).cos())).collect();
+        let w = vec![1.0; 50];
+        let scale = [2.0, 0.5, 1e-3];
+        let plain = super::super::fit::covariance(&r, &w, &rows, &scale).unwrap();
+        let blocks = [Block { weight: 1.0, residuals: r.clone(), point_weights: w.clone(), rows: rows.clone() }];
+        let s = sandwich_covariance(&blocks, &scale).unwrap();
+        for k in 0..3 {
+            assert!((s.std_errors[k] / plain.std_errors[k] - 1.0).abs() < 1e-9, "{:?} vs {:?}", s.std_errors, plain.std_errors);
+        }
+        assert!((s.rmse - plain.rmse).abs() < 1e-15);
+        // Weight 4 on the same data: the estimate's covariance does not change (A and B
+        // scale by 4 and 16).
+        let blocks = [Block { weight: 4.0, residuals: r, point_weights: w, rows }];
+        let s4 = sandwich_covariance(&blocks, &scale).unwrap();
+        assert!((s4.std_errors[1] / plain.std_errors[1] - 1.0).abs() < 1e-9);
+    }
 }
