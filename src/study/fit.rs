@@ -13,12 +13,14 @@ use serde::{Deserialize, Serialize};
 
 use super::{CellChoice, Output};
 use crate::cost::CostKind;
-use crate::data::{CsvFormat, Recording};
+use crate::data::Recording;
 use crate::error::Error;
 use crate::optim::OptimOptions;
 use crate::problem::fit::{FitObjective, FitResult, fit};
 use crate::problem::fitting::{FitParameter, FittingProblem, INITIAL_SOC, ModelSpec};
 use crate::report::plot::{Series, heat_map, line_plot};
+
+pub use super::fit_data::{DataChoice, InitialSoc};
 
 /// A fitting study as written in `fits/*.toml`.
 #[derive(Clone, Debug, Deserialize, Serialize)]
@@ -35,7 +37,7 @@ pub struct FitStudy {
     /// The recordings: one `[data]` table, or several `[[data]]` entries fitted jointly
     /// (sharing `parameters`, each with its own file, protocol, temperature, initial state
     /// and weight).
-    #[serde(deserialize_with = "one_or_many")]
+    #[serde(deserialize_with = "super::fit_data::one_or_many")]
     pub data: Vec<DataChoice>,
     pub parameters: Vec<FitParameter>,
     #[serde(default)]
@@ -51,110 +53,6 @@ pub struct FitStudy {
     pub landscape: Option<Landscape>,
     #[serde(default)]
     pub output: Output,
-}
-
-/// A recording to fit, with what belongs to its experiment.
-#[derive(Clone, Debug, Deserialize, Serialize)]
-#[serde(deny_unknown_fields)]
-pub struct DataChoice {
-    /// Label in reports (default `data1`, `data2`, ... in file order).
-    #[serde(default)]
-    pub name: Option<String>,
-    /// CSV file or raw cycler export, relative to the working directory (the CLI's `--data`
-    /// overrides it in a study with one entry).
-    pub file: PathBuf,
-    #[serde(default)]
-    pub format: CsvFormat,
-    /// For synthetic studies only: Gaussian noise (V) added to the voltage of the study's own
-    /// `file` (a simulated curve), seeded by `noise_seed`. Never added to a recording given
-    /// with `--data`; the report says when it was added.
-    #[serde(default)]
-    pub synthetic_noise: f64,
-    #[serde(default)]
-    pub noise_seed: u64,
-    /// The recording begins at rest: start from the state whose open-circuit voltage is the
-    /// first recorded voltage instead of the parameter set's initial concentrations.
-    #[serde(default)]
-    pub start_at_rest_voltage: bool,
-    /// Weight (-) of this experiment's cost in the sum over experiments.
-    #[serde(default = "one")]
-    pub weight: f64,
-    /// Ambient and initial temperature (K) of the experiment; the parameter set's when absent.
-    #[serde(default)]
-    pub temperature: Option<f64>,
-    /// Initial state of charge (-): a number fixes it, a table `{ initial, lower, upper }`
-    /// fits it as this experiment's own (nuisance) parameter.
-    #[serde(default)]
-    pub initial_soc: Option<InitialSoc>,
-    /// Protocol file (TOML) driving the model instead of the recorded current; its duration
-    /// must cover the recording.
-    #[serde(default)]
-    pub protocol: Option<PathBuf>,
-}
-
-fn one() -> f64 {
-    1.0
-}
-
-/// The initial state of charge of one experiment.
-#[derive(Clone, Copy, Debug, Deserialize, Serialize)]
-#[serde(untagged)]
-pub enum InitialSoc {
-    Fixed(f64),
-    Fitted { initial: f64, lower: f64, upper: f64 },
-}
-
-/// `[data]` (one table) or `[[data]]` (an array of tables), with errors that name the entry.
-fn one_or_many<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Vec<DataChoice>, D::Error> {
-    use serde::de::Error as _;
-    let value = toml::Value::deserialize(d)?;
-    match value {
-        toml::Value::Array(entries) if entries.is_empty() => Err(D::Error::custom("[[data]] needs at least one entry")),
-        toml::Value::Array(entries) => entries
-            .into_iter()
-            .enumerate()
-            .map(|(k, e)| e.try_into().map_err(|e| D::Error::custom(format!("[[data]] entry {}: {e}", k + 1))))
-            .collect(),
-        toml::Value::Table(_) => value.try_into().map(|d| vec![d]).map_err(|e| D::Error::custom(format!("[data]: {e}"))),
-        _ => Err(D::Error::custom("`data` must be a table [data] or an array of tables [[data]]")),
-    }
-}
-
-impl DataChoice {
-    /// The experiment's label: `name`, or `data<k+1>`.
-    pub fn label(&self, k: usize) -> String {
-        self.name.clone().unwrap_or_else(|| format!("data{}", k + 1))
-    }
-
-    fn validate(&self, k: usize) -> Result<(), Error> {
-        let field = |f: &str| format!("data.{}.{f}", self.label(k));
-        if !(self.synthetic_noise >= 0.0 && self.synthetic_noise.is_finite()) {
-            return Err(Error::invalid(field("synthetic_noise"), self.synthetic_noise, "must be non-negative"));
-        }
-        if !(self.weight >= 0.0 && self.weight.is_finite()) {
-            return Err(Error::invalid(field("weight"), self.weight, "must be non-negative and finite"));
-        }
-        if let Some(t) = self.temperature {
-            if !(t > 0.0 && t < 1000.0) {
-                return Err(Error::invalid(field("temperature"), t, "must be a temperature in kelvin"));
-            }
-        }
-        match self.initial_soc {
-            Some(_) if self.start_at_rest_voltage => Err(Error::InvalidSetting {
-                field: field("initial_soc"),
-                reason: "give either initial_soc or start_at_rest_voltage = true, not both".into(),
-            }),
-            Some(InitialSoc::Fixed(v)) if !(0.0..=1.0).contains(&v) => Err(Error::invalid(field("initial_soc"), v, "must lie in [0, 1]")),
-            Some(InitialSoc::Fitted { initial, lower, upper }) => {
-                let p = FitParameter::linear(INITIAL_SOC, initial, lower, upper);
-                if !(0.0 <= lower && upper <= 1.0) {
-                    return Err(Error::invalid(field("initial_soc.upper"), upper, format!("bounds [{lower}, {upper}] must lie in [0, 1]")));
-                }
-                p.validate(&crate::params::chen2020()).map_err(|e| Error::InvalidSetting { field: field("initial_soc"), reason: e.to_string() })
-            }
-            _ => Ok(()),
-        }
-    }
 }
 
 /// A grid of the cost over the first two parameters (log-spaced for log parameters).
@@ -382,47 +280,55 @@ pub(crate) fn fit_into(study: &FitStudy, data: Option<&Path>, dir: &Path) -> Res
     let lower: Vec<f64> = problem.parameters.iter().map(|p| p.lower).collect();
     let upper: Vec<f64> = problem.parameters.iter().map(|p| p.upper).collect();
     let warnings = super::at_bound_warnings("the fit", &names, &result.x, &lower, &upper);
-    let mut files = Vec::new();
-    let t = &problem.data.time;
-    let path = dir.join("fit_voltage.svg");
-    line_plot(
-        &path,
-        &format!("{}: voltage", study.name),
-        "time (s)",
-        "voltage (V)",
-        &[
-            Series { label: "data".into(), x: t, y: &problem.data.voltage },
-            Series { label: "initial".into(), x: t, y: &initial_voltage },
-            Series { label: "fitted".into(), x: t, y: &result.voltage },
-        ],
-    )?;
-    files.push(path);
-    let mv = |v: &[f64]| problem.residuals(v).iter().map(|r| 1e3 * r).collect::<Vec<_>>();
-    let (r0, r1) = (mv(&initial_voltage), mv(&result.voltage));
-    let path = dir.join("fit_residual.svg");
-    line_plot(
-        &path,
-        &format!("{}: residual (model - data)", study.name),
-        "time (s)",
-        "residual (mV)",
-        &[Series { label: "initial".into(), x: t, y: &r0 }, Series { label: "fitted".into(), x: t, y: &r1 }],
-    )?;
-    files.push(path);
+    let mut files = fit_plots(dir, &study.name, "", &problem, &initial_voltage, &result.voltage)?;
     if let (Some(l), true) = (&study.landscape, problem.dim() >= 2) {
         let path = dir.join("landscape.svg");
         landscape(&problem, study.cost, &result, l.points, &path)?;
         files.push(path);
     }
     write_output(dir, "fit.json", serde_json::to_string_pretty(&result).expect("serialisable"), &mut files)?;
-    let mut md = report(study, &problem, &result, initial_rmse);
-    for n in &notes {
+    let md = report(study, &problem, &result, initial_rmse);
+    write_output(dir, "report.md", with_notes(md, &notes, &warnings), &mut files)?;
+    Ok(FitOutcome { result, initial_rmse, files, notes, warnings, experiments: Vec::new() })
+}
+
+/// `fit_voltage<suffix>.svg` (data, initial and fitted voltage) and `fit_residual<suffix>.svg`
+/// (initial and fitted residual in mV) of one experiment, written into `dir`.
+pub(crate) fn fit_plots(dir: &Path, title: &str, suffix: &str, problem: &FittingProblem, initial: &[f64], fitted: &[f64]) -> Result<Vec<PathBuf>, Error> {
+    let t = &problem.data.time;
+    let voltage = dir.join(format!("fit_voltage{suffix}.svg"));
+    line_plot(
+        &voltage,
+        &format!("{title}: voltage"),
+        "time (s)",
+        "voltage (V)",
+        &[
+            Series { label: "data".into(), x: t, y: &problem.data.voltage },
+            Series { label: "initial".into(), x: t, y: initial },
+            Series { label: "fitted".into(), x: t, y: fitted },
+        ],
+    )?;
+    let mv = |v: &[f64]| problem.residuals(v).iter().map(|r| 1e3 * r).collect::<Vec<_>>();
+    let residual = dir.join(format!("fit_residual{suffix}.svg"));
+    line_plot(
+        &residual,
+        &format!("{title}: residual (model - data)"),
+        "time (s)",
+        "residual (mV)",
+        &[Series { label: "initial".into(), x: t, y: &mv(initial) }, Series { label: "fitted".into(), x: t, y: &mv(fitted) }],
+    )?;
+    Ok(vec![voltage, residual])
+}
+
+/// A report with its notes and warnings appended.
+pub(crate) fn with_notes(mut md: String, notes: &[String], warnings: &[String]) -> String {
+    for n in notes {
         let _ = writeln!(md, "\nNote: {n}.");
     }
-    for w in &warnings {
+    for w in warnings {
         let _ = writeln!(md, "\n**Warning:** {w}.");
     }
-    write_output(dir, "report.md", md, &mut files)?;
-    Ok(FitOutcome { result, initial_rmse, files, notes, warnings, experiments: Vec::new() })
+    md
 }
 
 /// The cost on a grid over the first two parameters (other parameters at the optimum), drawn

@@ -6,11 +6,10 @@
 use std::fmt::Write as _;
 use std::path::Path;
 
-use super::fit::{FitOutcome, FitStudy, parameter_table};
+use super::fit::{FitOutcome, FitStudy, fit_plots, parameter_table, with_notes};
 use super::write_output;
 use crate::error::Error;
 use crate::problem::joint::{JointFit, JointProblem, fit_joint};
-use crate::report::plot::{Series, line_plot};
 
 /// The study's experiments joined into one problem.
 pub fn joint_problem(study: &FitStudy, data: Option<&Path>) -> Result<JointProblem, Error> {
@@ -36,43 +35,12 @@ pub(crate) fn joint_fit_into(study: &FitStudy, data: Option<&Path>, dir: &Path) 
     let warnings = super::at_bound_warnings("the joint fit", &names, &fit.result.x, &lower, &upper);
     let mut files = Vec::new();
     for (e, ef) in problem.experiments.iter().zip(&fit.experiments) {
-        let t = &e.problem.data.time;
-        let path = dir.join(format!("fit_voltage_{}.svg", ef.name));
-        line_plot(
-            &path,
-            &format!("{}: {} voltage", study.name, ef.name),
-            "time (s)",
-            "voltage (V)",
-            &[
-                Series { label: "data".into(), x: t, y: &e.problem.data.voltage },
-                Series { label: "initial".into(), x: t, y: &ef.initial_voltage },
-                Series { label: "fitted".into(), x: t, y: &ef.voltage },
-            ],
-        )?;
-        files.push(path);
-        let mv = |v: &[f64]| e.problem.residuals(v).iter().map(|r| 1e3 * r).collect::<Vec<_>>();
-        let path = dir.join(format!("fit_residual_{}.svg", ef.name));
-        line_plot(
-            &path,
-            &format!("{}: {} residual (model - data)", study.name, ef.name),
-            "time (s)",
-            "residual (mV)",
-            &[
-                Series { label: "initial".into(), x: t, y: &mv(&ef.initial_voltage) },
-                Series { label: "fitted".into(), x: t, y: &mv(&ef.voltage) },
-            ],
-        )?;
-        files.push(path);
+        let title = format!("{}: {}", study.name, ef.name);
+        files.extend(fit_plots(dir, &title, &format!("_{}", ef.name), &e.problem, &ef.initial_voltage, &ef.voltage)?);
     }
     write_output(dir, "fit.json", serde_json::to_string_pretty(&fit).expect("serialisable"), &mut files)?;
-    let mut md = report(study, &problem, &fit, &method);
-    for n in &notes {
-        let _ = writeln!(md, "\nNote: {n}.");
-    }
-    for w in &warnings {
-        let _ = writeln!(md, "\n**Warning:** {w}.");
-    }
-    write_output(dir, "report.md", md, &mut files)?;
+    let md = report(study, &problem, &fit, &method);
+    write_output(dir, "report.md", with_notes(md, &notes, &warnings), &mut files)?;
     let initial_rmse = combined_initial_rmse(&fit);
     Ok(FitOutcome { result: fit.result, initial_rmse, files, notes, warnings, experiments: fit.experiments })
 }

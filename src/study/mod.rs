@@ -4,6 +4,7 @@
 pub mod design;
 pub mod eis;
 pub mod fit;
+mod fit_data;
 pub mod joint_fit;
 pub mod sample;
 pub mod pareto;
