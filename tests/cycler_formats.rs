@@ -46,6 +46,22 @@ fn raw_basytec_export_gives_the_converted_recording() {
     assert!((discharge.duration - (conv_end - 540.1)).abs() < 70.0, "{}", discharge.duration);
 }
 
+/// The CC-CV charge of the same cell, logged by the Basytec as one step (9): split into a CC
+/// step at C/3 up to 4.2 V and a CV step at 4.2 V whose current decays.
+#[test]
+fn real_cccv_charge_is_cc_then_cv() {
+    let d = read(&sample("basytec_lgm50_cell785_cccv_trimmed.csv")).unwrap();
+    let st = steps(&d.recording, d.step.as_deref());
+    let kinds: Vec<(Option<i64>, StepKind)> = st.iter().map(|s| (s.cycler_step, s.kind)).collect();
+    assert_eq!(kinds, [(Some(8), StepKind::Rest), (Some(9), StepKind::Cc), (Some(9), StepKind::Cv), (Some(10), StepKind::Rest)]);
+    let (cc, cv) = (&st[1], &st[2]);
+    assert!((cc.mean_current + 5.0 / 3.0).abs() < 0.01, "C/3 charge: {}", cc.mean_current);
+    assert!((cc.end_voltage - 4.2).abs() < 0.005 && (cv.start_voltage - 4.2).abs() < 0.005 && (cv.end_voltage - 4.2).abs() < 0.005);
+    let i = &d.recording.current;
+    // The CV decays from the C/3 level to the C/20 cut-off (0.25 A).
+    assert!(i[cv.first].abs() > 1.5 && (i[cv.last].abs() - 0.25).abs() < 0.01, "CV: {} -> {}", i[cv.first], i[cv.last]);
+}
+
 #[test]
 fn basytec_result_file() {
     let d = read(&sample("basytec_pyprobe_sample.txt")).unwrap();

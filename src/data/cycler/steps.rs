@@ -16,13 +16,19 @@ pub const PULSE_MAX_DURATION: f64 = 60.0;
 /// times a cycler's voltage noise, far below the voltage change of a CC step.
 pub const CV_TOLERANCE: f64 = 0.005;
 
+/// Least relative decay (-) of the current over a constant-voltage step: a CV phase takes
+/// the current from its CC value down to a cut-off of a few percent of it, while the settling
+/// of a cycler's current at the start of a CC step is about 1 %.
+pub const CV_MIN_DECAY: f64 = 0.1;
+
 /// What a step does.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 pub enum StepKind {
     Rest,
     /// Constant current.
     Cc,
-    /// Constant voltage (current changes while the voltage holds within [`CV_TOLERANCE`]).
+    /// Constant voltage (the current decays by at least [`CV_MIN_DECAY`] while the voltage holds
+    /// within [`CV_TOLERANCE`]).
     Cv,
     /// Constant current for at most [`PULSE_MAX_DURATION`].
     Pulse,
@@ -110,10 +116,10 @@ fn segment(t: &[f64], i: &[f64], v: &[f64], a: usize, end: usize, tol: f64) -> (
         return (extend(&|k| i[k].abs() <= tol), StepKind::Rest);
     }
     let sign = i[a].signum();
-    // Constant voltage with a current that changes by more than the tolerance.
-    let cv_end = extend(&|k| (v[k] - v[a]).abs() <= CV_TOLERANCE && i[k] * sign > tol);
-    let (lo, hi) = i[a..=cv_end].iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), x| (l.min(*x), h.max(*x)));
-    if cv_end > a && hi - lo > 2.0 * tol {
+    // Constant voltage: the current keeps its sign and does not grow (within the tolerance)
+    // while the voltage holds, and it decays by at least CV_MIN_DECAY over the run.
+    let cv_end = extend(&|k| (v[k] - v[a]).abs() <= CV_TOLERANCE && i[k] * sign > tol && i[k].abs() <= i[k - 1].abs() + tol);
+    if cv_end > a && i[cv_end].abs() < (1.0 - CV_MIN_DECAY) * i[a].abs() {
         return (cv_end, StepKind::Cv);
     }
     // Constant current: every row within the tolerance of the running mean.
