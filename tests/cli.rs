@@ -328,3 +328,15 @@ fn a_sweep_with_no_valid_design_fails_and_writes_nothing() {
     fails_with(&run(&s.0, &["sweep", study.to_str().unwrap()]), &["no valid design", "3 store less than 0.001 of the baseline's energy"]);
     assert_eq!(s.entries(), vec!["design.toml"]);
 }
+
+#[test]
+fn data_inspect_names_the_format_and_the_steps() {
+    let repo = Path::new(REPO);
+    let o = run(repo, &["data", "inspect", "tests/data/cycler/neware_documented_layout.csv"]);
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(out.contains("format           Neware") && out.contains("rows             9"), "{out}");
+    assert!(out.contains("| 2 | 2 | CC | 90.1 | 2.5000 | 4.1021 | 4.0530 |"), "{out}");
+    let o = run(repo, &["data", "inspect", "Cargo.toml"]);
+    fails_with(&o, &["Cargo.toml", "not a known cycler export", "`[package]`"]);
+}
