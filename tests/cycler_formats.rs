@@ -95,6 +95,16 @@ fn biologic_current_is_charge_positive_in_the_file() {
     assert_eq!(d.step, Some(vec![0, 1, 2]));
 }
 
+/// EC-Lab in a European locale: semicolons between fields, decimal commas.
+#[test]
+fn semicolon_exports_with_decimal_commas() {
+    let text = "time/s;Ecell/V;I/mA;Ns\n0,0;3,7012;0,0;0\n1,5;3,6020;2500,0;1\n";
+    let d = read_str("eu.csv", text).unwrap();
+    assert_eq!(d.recording.time, vec![0.0, 1.5]);
+    assert_eq!(d.recording.voltage, vec![3.7012, 3.602]);
+    assert_eq!(d.recording.current, vec![0.0, -2.5]);
+}
+
 #[test]
 fn maccor_signed_and_stated_currents() {
     let d = read(&sample("maccor_pyprobe_sample.csv")).unwrap();

@@ -177,3 +177,36 @@ fn measured_lgm50_half_c_and_one_c_jointly() {
     }
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// An experiment's `protocol` drives the model instead of the recorded current: the set
+/// points of the synthetic C/2 recording give the same voltage; a protocol shorter than the
+/// recording is refused.
+#[test]
+fn an_experiment_protocol_replaces_the_recorded_current() {
+    let dir = scratch("protocol");
+    let data = dir.join("half_c.csv");
+    synthetic(2.5, 3600.0, None).write_csv(&data).unwrap();
+    let protocol = |name: &str, rest: f64| {
+        let f = dir.join(name);
+        let text = format!("[[steps]]\nkind = \"current\"\ncurrent = 2.5\nduration = 3600.0\n[[steps]]\nkind = \"rest\"\nduration = {rest}\n");
+        std::fs::write(&f, text).unwrap();
+        f
+    };
+    let study = |protocol: Option<&Path>| {
+        let line = protocol.map(|p| format!("protocol = \"{}\"\n", p.display())).unwrap_or_default();
+        let text = format!(
+            "name = \"p\"\n[model]\nkind = \"spm\"\n[[data]]\nfile = \"{}\"\n{line}[[parameters]]\npath = \"negative.diffusivity\"\ninitial = 3.3e-14\nlower = 1e-15\nupper = 1e-12\n",
+            data.display()
+        );
+        let f = dir.join("s.toml");
+        std::fs::write(&f, text).unwrap();
+        FitStudy::from_file(&f).unwrap()
+    };
+    let recorded = study(None).problem(None).unwrap().simulate(&[3.3e-14]).unwrap();
+    let driven = study(Some(&protocol("set_points.toml", 600.0))).problem(None).unwrap().simulate(&[3.3e-14]).unwrap();
+    let largest = recorded.iter().zip(&driven).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
+    assert!(largest < 1e-6, "{largest} V");
+    let Err(e) = study(Some(&protocol("short.toml", 300.0))).problem(None) else { panic!("a short protocol was accepted") };
+    assert!(e.to_string().contains("lasts less than the recording"), "{e}");
+    std::fs::remove_dir_all(&dir).ok();
+}

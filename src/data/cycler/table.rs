@@ -44,6 +44,9 @@ pub struct Layout {
 pub struct Table<'a> {
     pub headers: Vec<String>,
     pub rows: Vec<(usize, Vec<&'a str>)>,
+    /// Numbers may be written with a decimal comma (`3,7012`, as exports in European locales
+    /// write them): only when the delimiter is a tab or a semicolon.
+    pub decimal_comma: bool,
 }
 
 /// The delimiter of a header line: tab, semicolon or comma, whichever splits it most.
@@ -82,7 +85,7 @@ pub fn table<'a>(lines: &[&'a str], header: usize, skip: usize) -> Table<'a> {
         .filter(|(_, l)| !l.trim().is_empty())
         .map(|(k, l)| (k + 1, split(l)))
         .collect();
-    Table { headers, rows }
+    Table { headers, rows, decimal_comma: d != ',' }
 }
 
 /// The column whose name is `name` followed by nothing or by a unit, written `name (u)`,
@@ -207,7 +210,8 @@ pub fn read_rows(table: &Table, layout: &Layout) -> Result<Rows, String> {
         let text = |col: usize| fields.get(col).copied().unwrap_or("");
         let number = |col: usize| -> Result<f64, String> {
             let s = text(col);
-            match s.parse::<f64>() {
+            let parsed = s.parse::<f64>().or_else(|e| if table.decimal_comma { s.replace(',', ".").parse() } else { Err(e) });
+            match parsed {
                 Ok(v) if v.is_finite() => Ok(v),
                 _ => Err(format!("line {line}: `{}` = `{s}` is not a finite number", h[col])),
             }
