@@ -39,7 +39,7 @@ pub(crate) fn joint_fit_into(study: &FitStudy, data: Option<&Path>, dir: &Path) 
         files.extend(fit_plots(dir, &title, &format!("_{}", ef.name), &e.problem, &ef.initial_voltage, &ef.voltage)?);
     }
     write_output(dir, "fit.json", serde_json::to_string_pretty(&fit).expect("serialisable"), &mut files)?;
-    let md = report(study, &problem, &fit, &method);
+    let md = report(study, data, &problem, &fit, &method);
     write_output(dir, "report.md", with_notes(md, &notes, &warnings), &mut files)?;
     let initial_rmse = combined_initial_rmse(&fit);
     Ok(FitOutcome { result: fit.result, initial_rmse, files, notes, warnings, experiments: fit.experiments })
@@ -55,7 +55,7 @@ fn combined_initial_rmse(fit: &JointFit) -> f64 {
     (sum / weight).sqrt()
 }
 
-fn report(study: &FitStudy, problem: &JointProblem, fit: &JointFit, method: &str) -> String {
+fn report(study: &FitStudy, data: Option<&Path>, problem: &JointProblem, fit: &JointFit, method: &str) -> String {
     let r = &fit.result;
     let mut s = String::new();
     let _ = writeln!(s, "# {}\n", study.name);
@@ -81,7 +81,7 @@ fn report(study: &FitStudy, problem: &JointProblem, fit: &JointFit, method: &str
             s,
             "| {} | `{}` | {} | {} | {:.3} | {:.3} |",
             e.name,
-            study.data[k].file.display(),
+            data.filter(|_| k == 0).unwrap_or(&study.data[k].file).display(),
             e.weight,
             e.points,
             e.initial_rmse * 1e3,
