@@ -71,7 +71,7 @@ pub fn table<'a>(lines: &[&'a str], header: usize, skip: usize) -> Table<'a> {
     let mut skip = skip;
     if let Some(units) = lines.get(header + 1 + skip).map(|l| split(l)) {
         let bracketed = |f: &&str| f.starts_with('[') && f.ends_with(']');
-        if units.iter().any(|f| !f.is_empty()) && units.iter().filter(|f| !f.is_empty()).all(|f| bracketed(f)) {
+        if units.iter().any(|f| !f.is_empty()) && units.iter().filter(|f| !f.is_empty()).all(bracketed) {
             for (h, u) in headers.iter_mut().zip(&units) {
                 h.push_str(u);
             }
@@ -101,10 +101,8 @@ pub fn column(headers: &[String], name: &str) -> Option<(usize, String)> {
             u
         } else if let Some(u) = rest.strip_prefix('[').and_then(|r| r.strip_suffix(']')) {
             u
-        } else if let Some(u) = rest.strip_prefix('/') {
-            u
         } else {
-            return None;
+            rest.strip_prefix('/')?
         };
         Some((k, unit.trim().to_string()))
     })
