@@ -340,3 +340,51 @@ fn data_inspect_names_the_format_and_the_steps() {
     let o = run(repo, &["data", "inspect", "Cargo.toml"]);
     fails_with(&o, &["Cargo.toml", "not a known cycler export", "`[package]`"]);
 }
+
+#[test]
+fn a_fit_pinned_on_a_bound_fails_and_a_truncated_fit_says_so() {
+    let s = Scratch::new("pinned");
+    // The seed recording has R = 10 mOhm; a search range that ends at 2 mOhm pins the fit there.
+    let study = fit_study(&s, "[cost]\nkind = \"sse\"\n");
+    let text = std::fs::read_to_string(&study).unwrap().replace("initial = 0.005\n", "initial = 0.001\n").replace("upper = 0.1\n", "upper = 0.002\n");
+    std::fs::write(&study, text).unwrap();
+    let o = run(&s.0, &["fit", study.to_str().unwrap()]);
+    fails_with(&o, &["parameters.cell.contact_resistance", "ended on a bound", "no estimate"]);
+    // Written for inspection, with the bound named in the report.
+    let report = std::fs::read_to_string(s.path("out/report.md")).unwrap();
+    assert!(report.contains("cell.contact_resistance = 0.002 at its upper bound"), "{report}");
+
+    // One iteration from a start 2x away: a result, but the report says the search was cut short.
+    let study = fit_study(&s, "[cost]\nkind = \"sse\"\n");
+    let text = std::fs::read_to_string(&study).unwrap().replace("seed = 1\n", "seed = 1\nmax_iterations = 1\n");
+    std::fs::write(&study, text).unwrap();
+    let o = run(&s.0, &["fit", study.to_str().unwrap()]);
+    succeeds(&o);
+    assert!(stderr(&o).contains("warning: the fit stopped on its iteration cap (1 iterations"), "{}", stderr(&o));
+    let report = std::fs::read_to_string(s.path("out/report.md")).unwrap();
+    assert!(report.contains("raise [optimiser] max_iterations"), "{report}");
+}
+
+#[test]
+fn fit_names_a_recording_in_minutes_or_milliamps_before_any_work() {
+    let s = Scratch::new("units");
+    let study = fit_study(&s, "[cost]\nkind = \"sse\"\n");
+    let seed = std::fs::read_to_string(Path::new(REPO).join("tests/data/spm_contact_resistance_seed.csv")).unwrap();
+    let rescaled = |column: usize, factor: f64| -> String {
+        let mut lines = seed.lines();
+        let mut out = format!("{}\n", lines.next().unwrap());
+        for line in lines {
+            let mut cells: Vec<String> = line.split(',').map(str::to_string).collect();
+            cells[column] = (cells[column].parse::<f64>().unwrap() * factor).to_string();
+            out += &format!("{}\n", cells.join(","));
+        }
+        out
+    };
+    let minutes = s.write("minutes.csv", &rescaled(0, 1.0 / 60.0));
+    let o = run(&s.0, &["fit", study.to_str().unwrap(), "--data", minutes.to_str().unwrap()]);
+    fails_with(&o, &["minutes.csv", "likely unit error", "time_unit = \"min\""]);
+    let milliamps = s.write("milliamps.csv", &rescaled(1, 1e3));
+    let o = run(&s.0, &["fit", study.to_str().unwrap(), "--data", milliamps.to_str().unwrap()]);
+    fails_with(&o, &["milliamps.csv", "likely unit error", "current_unit = \"mA\""]);
+    assert!(!s.path("out").exists());
+}

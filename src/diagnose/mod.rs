@@ -254,12 +254,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
     let start = std::time::Instant::now();
     options.validate()?;
     let mut notes = Vec::new();
-    let window = base.cell.upper_cutoff - base.cell.lower_cutoff;
-    let findings = data.check_against_cell(base.cell.nominal_capacity, window);
-    if let Some(f) = findings.iter().find(|f| f.unit_error) {
-        return Err(Error::InvalidSetting { field: "data".into(), reason: format!("likely unit error: {}", f.message) });
-    }
-    notes.extend(findings.into_iter().map(|f| format!("Recording check: {}.", f.message)));
+    notes.extend(data.refuse_unit_errors("the recording", base.cell.nominal_capacity, (base.cell.lower_cutoff, base.cell.upper_cutoff))?);
     let mut data = data.clone();
     // The cell's temperature is part of the recording: an isothermal model runs at the
     // first recorded temperature, a thermal one starts there.
@@ -357,9 +352,15 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
         })
         .collect();
     progress.finish_and_clear();
+    // Named candidates first, compared with one another at common effective points; the
+    // others by their gain over the user's model.
+    let n_common = select::common_effective_points(outcomes.iter().filter(|c| c.named).map(|c| &c.comparison));
     outcomes.sort_by(|a, b| {
         let key = |c: &CandidateOutcome| (c.named, c.fit.is_some());
-        key(b).cmp(&key(a)).then_with(|| b.comparison.delta_bic.total_cmp(&a.comparison.delta_bic))
+        key(b).cmp(&key(a)).then_with(|| match a.named && b.named {
+            true => a.comparison.bic_at(n_common).total_cmp(&b.comparison.bic_at(n_common)),
+            false => b.comparison.delta_bic.total_cmp(&a.comparison.delta_bic),
+        })
     });
     // Structure: the whiteness tests reject noise, or the residual is twice the noise level,
     // and what lies above the noise exceeds the size floor.

@@ -30,6 +30,26 @@ pub struct Comparison {
     pub explained: f64,
     /// Effective independent training points of the candidate's residual.
     pub effective_points: f64,
+    /// The candidate's training RMSE (V) and counted parameters, for comparisons between
+    /// candidates ([`Comparison::bic_at`]).
+    pub rmse_train: f64,
+    pub parameters: f64,
+}
+
+impl Comparison {
+    /// BIC of the candidate's training fit at `n_eff` effective points (lower is better, up to
+    /// a constant shared by all candidates). Candidates are compared with one another at one
+    /// common `n_eff` ([`common_effective_points`]): each one's own `n_eff` follows its
+    /// residual's autocorrelation and would let a 1 % difference in it outweigh the fits.
+    pub fn bic_at(&self, n_eff: f64) -> f64 {
+        n_eff * (self.rmse_train * self.rmse_train).ln() + self.parameters * n_eff.ln()
+    }
+}
+
+/// The effective points at which candidates are compared with one another: the fewest of any
+/// of them (the most cautious count, so a small difference in fit is not overstated).
+pub fn common_effective_points<'a>(comparisons: impl Iterator<Item = &'a Comparison>) -> f64 {
+    comparisons.map(|c| c.effective_points).fold(f64::INFINITY, f64::min)
 }
 
 /// Margins a candidate must clear to be named.
@@ -80,6 +100,8 @@ pub fn compare(baseline: &FitOutcome, candidate: &FitOutcome, n: usize) -> Compa
         holdout_gain: 1.0 - c / b,
         explained: (b * b - c * c).max(0.0).sqrt(),
         effective_points: n_eff,
+        rmse_train: candidate.rmse_train,
+        parameters: candidate.parameters as f64,
     }
 }
 
@@ -111,19 +133,49 @@ pub struct Standing {
     pub named: bool,
 }
 
-/// The verdict from candidates ranked best first (named ones first, by ΔBIC). `structured`:
-/// whether the user's residual is larger than noise and the size floor.
+/// The verdict from candidates ranked best first: named ones first, by [`Comparison::bic_at`]
+/// at their [`common_effective_points`]. Two named candidates within `min_delta_bic` of each
+/// other there are a tie. `structured`: whether the user's residual is larger than noise and
+/// the size floor.
 pub fn verdict(ranked: &[Standing], structured: bool, min_delta_bic: f64) -> Verdict {
     let named: Vec<&Standing> = ranked.iter().filter(|s| s.named).collect();
+    let n_eff = common_effective_points(named.iter().map(|s| &s.comparison));
     match named.as_slice() {
         [] if structured => Verdict::Unexplained,
         [] => Verdict::NoMissingPhysics,
-        [best, second, ..] if best.comparison.delta_bic - second.comparison.delta_bic < min_delta_bic => Verdict::Tie {
+        [best, second, ..] if second.comparison.bic_at(n_eff) - best.comparison.bic_at(n_eff) < min_delta_bic => Verdict::Tie {
             first: best.candidate,
             second: second.candidate,
             class: best.candidate.class(),
             experiment: best.candidate.separating_experiment(second.candidate).to_string(),
         },
         [best, ..] => Verdict::Found { candidate: best.candidate, class: best.candidate.class() },
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn standing(candidate: Candidate, rmse_train: f64, parameters: f64, effective_points: f64) -> Standing {
+        // Both far better than the user's model (46 mV), as in a contact-resistance case.
+        let delta_bic = effective_points * (0.046f64 / rmse_train).powi(2).ln() - parameters * effective_points.ln();
+        let comparison = Comparison { delta_bic, ln_bayes_factor: 1e3, holdout_gain: 0.97, explained: 0.044, effective_points, rmse_train, parameters };
+        Standing { candidate, comparison, named: true }
+    }
+
+    #[test]
+    fn candidates_that_fit_alike_tie_whatever_their_own_effective_points() {
+        // 0.07 % apart in RMSE; 0.1 % apart in lag-1 autocorrelation, which alone puts their
+        // ΔBIC against the user's model 70 apart.
+        let ranked = [
+            standing(Candidate::ElectrolyteTransport, 1.00731e-3, 3.0, 3745.0),
+            standing(Candidate::SeriesResistance, 1.00799e-3, 2.0, 3736.0),
+        ];
+        assert!(ranked[0].comparison.delta_bic - ranked[1].comparison.delta_bic > 10.0);
+        assert!(matches!(verdict(&ranked, true, 10.0), Verdict::Tie { .. }));
+        // A clearly better fit (10 % lower RMSE) is found, not tied.
+        let ranked = [standing(Candidate::Kinetics, 0.9e-3, 3.0, 3700.0), standing(Candidate::SeriesResistance, 1.0e-3, 2.0, 3700.0)];
+        assert!(matches!(verdict(&ranked, true, 10.0), Verdict::Found { candidate: Candidate::Kinetics, .. }));
     }
 }

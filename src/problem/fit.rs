@@ -5,10 +5,10 @@ use std::time::Instant;
 
 use serde::Serialize;
 
-use super::fitting::{FitParameter, FittingProblem};
+use super::fitting::{FitParameter, FittingProblem, Simulated};
 use crate::cost::CostKind;
 use crate::error::Error;
-use crate::optim::{Bounds, Objective, OptimOptions, Problem, StopReason, TraceEntry, TraceObserver, Transform, by_name};
+use crate::optim::{Bounds, Objective, OptimOptions, Problem, ProgressObserver, StopReason, TraceEntry, Transform, by_name};
 
 /// Bounds and start of the noise level when it is fitted (V).
 pub const SIGMA_BOUNDS: (f64, f64) = (1e-5, 0.5);
@@ -48,7 +48,7 @@ impl FitObjective<'_> {
         let r = self.problem.residuals(&sim.voltage);
         let c = self.cost.evaluate(&r, &self.problem.weights, sigma);
         let mut g = vec![0.0; theta.len() + usize::from(sigma.is_some())];
-        for (row, d) in sim.sensitivity.iter().zip(&c.d_residual) {
+        for (row, d) in sim.sensitivity_rows().zip(&c.d_residual) {
             for (gk, s) in g.iter_mut().zip(row) {
                 *gk += d * s;
             }
@@ -119,7 +119,7 @@ pub fn fit(problem: &FittingProblem, cost: CostKind, optimiser: &str, options: O
     let search = minimise(&objective, &problem.parameters, cost, optimiser, options)?;
     let theta = &search.result.x[..problem.dim()];
     let sim = problem.simulate_with_sensitivities(theta)?;
-    let id = identifiability(problem, &sim.voltage, &sim.sensitivity)?;
+    let id = identifiability(problem, &sim)?;
     Ok(search.into_result(id, sim.voltage))
 }
 
@@ -176,9 +176,10 @@ pub(crate) fn minimise(
         names.push("sigma".into());
     }
     let search = Problem::new(objective, Bounds::new(lower, upper)?)?.with_transforms(transforms)?;
-    let mut trace = TraceObserver::default();
+    let mut progress = ProgressObserver::new("fit", options.max_iterations, |f| format!("cost {f:.4e}"));
     let start = Instant::now();
-    let result = by_name(optimiser, options)?.minimise(&search, &x0, &mut trace)?;
+    let result = by_name(optimiser, options)?.minimise(&search, &x0, &mut progress)?;
+    let trace = progress.finish();
     let seconds = start.elapsed().as_secs_f64();
     if !result.f.is_finite() {
         return Err(Error::Solver { t: 0.0, reason: "every simulation of the fit failed".into() });
@@ -202,14 +203,14 @@ pub struct Identifiability {
 
 /// Covariance `s² (Sᵀ W S)⁻¹` of least squares, with `s²` the weighted residual variance over
 /// `N - P` degrees of freedom; a direction the data do not inform has an infinite error.
-pub fn identifiability(problem: &FittingProblem, voltage: &[f64], sensitivity: &[Vec<f64>]) -> Result<Identifiability, Error> {
+pub fn identifiability(problem: &FittingProblem, sim: &Simulated) -> Result<Identifiability, Error> {
     let scale: Vec<f64> = problem.parameters.iter().map(|p| p.initial.abs().max(f64::MIN_POSITIVE)).collect();
-    covariance(&problem.residuals(voltage), &problem.weights, sensitivity, &scale)
+    covariance(&problem.residuals(&sim.voltage), &problem.weights, sim.sensitivity_rows(), &scale)
 }
 
 /// [`identifiability`] from residuals `r` (V), point weights `w` and sensitivity rows
-/// (V per parameter unit), with `scale` the typical size of each parameter.
-pub fn covariance(r: &[f64], w: &[f64], sensitivity: &[Vec<f64>], scale: &[f64]) -> Result<Identifiability, Error> {
+/// (V per parameter unit, one per residual), with `scale` the typical size of each parameter.
+pub fn covariance<'a>(r: &[f64], w: &[f64], sensitivity: impl IntoIterator<Item = &'a [f64]>, scale: &[f64]) -> Result<Identifiability, Error> {
     let p = scale.len();
     let weight: f64 = w.iter().sum();
     let sse: f64 = r.iter().zip(w).map(|(r, w)| w * r * r).sum();
@@ -220,7 +221,7 @@ pub fn covariance(r: &[f64], w: &[f64], sensitivity: &[Vec<f64>], scale: &[f64])
     let s2 = sse / (weight - p as f64).max(1.0);
     // Fisher information in relative units (θ_k ∂V/∂θ_k) keeps the eigenproblem well scaled.
     let mut fisher = vec![0.0; p * p];
-    for (row, &wi) in sensitivity.iter().zip(w) {
+    for (row, &wi) in sensitivity.into_iter().zip(w) {
         for a in 0..p {
             for b in 0..p {
                 fisher[a * p + b] += wi * row[a] * scale[a] * row[b] * scale[b];

@@ -13,7 +13,7 @@ use crate::geometry::{MeshSizes, ModelBuilder};
 use crate::models::{Model, ModelKind, Submodels};
 use crate::params::ParameterSet;
 use crate::protocol::Protocol;
-use crate::simulation::{SimOptions, simulate};
+use crate::simulation::{SimOptions, Solution, simulate, simulate_observed};
 use crate::solver::{SolverOptions, Workspace};
 
 /// Which model to build.
@@ -110,13 +110,27 @@ impl FitParameter {
     }
 }
 
+/// Voltage window (V) of a replayed recording: no cell cut-off ends a replay, but a model
+/// whose voltage leaves this window has broken down.
+pub const REPLAY_WINDOW: (f64, f64) = (0.0, 100.0);
+
 /// Simulated voltage at the recorded points and, optionally, its sensitivities.
 #[derive(Clone, Debug, Default)]
 pub struct Simulated {
     /// Model voltage (V) at every recorded point.
     pub voltage: Vec<f64>,
-    /// `dV_i/dθ_k` (V per parameter unit), one row per recorded point, when requested.
-    pub sensitivity: Vec<Vec<f64>>,
+    /// `dV_i/dθ_k` (V per parameter unit) when requested: row-major, one row of
+    /// [`FittingProblem::dim`] values per recorded point (see [`Simulated::sensitivity_rows`]).
+    pub sensitivity: Vec<f64>,
+    /// Columns of [`Simulated::sensitivity`]: the number of fitted parameters (0 without).
+    pub columns: usize,
+}
+
+impl Simulated {
+    /// The rows `dV_i/dθ` of [`Simulated::sensitivity`], one per recorded point.
+    pub fn sensitivity_rows(&self) -> std::slice::ChunksExact<'_, f64> {
+        self.sensitivity.chunks_exact(self.columns.max(1))
+    }
 }
 
 /// Builders re-used across evaluations: the model at θ and one copy per parameter at θ + δ.
@@ -277,13 +291,13 @@ impl FittingProblem {
         self.run(x, true)
     }
 
-    fn options(&self, p: &ParameterSet, keep_states: bool) -> SimOptions {
+    fn options(&self, p: &ParameterSet) -> SimOptions {
         SimOptions {
             solver: self.solver.clone(),
             t_eval: Some(self.t_eval.clone()),
-            keep_states,
+            keep_states: false,
             // Recordings are replayed whole: cut-offs do not end them.
-            cutoffs: (0.0, 100.0),
+            cutoffs: REPLAY_WINDOW,
             capacity: p.cell.nominal_capacity,
             // Only the voltage at the recorded times is compared.
             charge_at_outputs: false,
@@ -303,9 +317,9 @@ impl FittingProblem {
 
     fn run_plain(&self, worker: &mut Worker, p: &ParameterSet) -> Result<Simulated, Error> {
         let built = worker.builders[0].build(p)?;
-        let sol = simulate(built.model.as_ref(), &mut built.workspace, &self.protocol, &self.options(p, false), None)?;
-        let voltage = self.at_points(&sol.time, &sol.voltage)?;
-        Ok(Simulated { voltage, sensitivity: Vec::new() })
+        let sol = simulate(built.model.as_ref(), &mut built.workspace, &self.protocol, &self.options(p), None)?;
+        let voltage = self.at_points(&sol)?;
+        Ok(Simulated { voltage, sensitivity: Vec::new(), columns: 0 })
     }
 
     fn run_sensitivities(&self, worker: &mut Worker, x: &[f64], p: &ParameterSet) -> Result<Simulated, Error> {
@@ -329,27 +343,32 @@ impl FittingProblem {
             Some(ws) => ws,
             slot => slot.insert(Workspace::new(model.len(), model.jacobian_pattern())?),
         };
-        let sol = simulate(&model, ws, &self.protocol, &self.options(p, true), Some(model.initial_state()))?;
-        let voltage = self.at_points(&sol.time, &sol.voltage)?;
-        let rows: Vec<Vec<f64>> = sol
-            .states
-            .iter()
-            .zip(&sol.current)
-            .map(|(z, &i)| model.voltage_sensitivities(z, i).iter().zip(&scales).map(|(d, s)| d / s).collect())
-            .collect();
-        let sensitivity = self.output_of_point.iter().map(|&k| rows[k].clone()).collect();
-        Ok(Simulated { voltage, sensitivity })
+        // Only dV/dθ at each output is kept, never the augmented state: memory stays flat for
+        // a 10^6-point recording.
+        let mut rows: Vec<f64> = Vec::with_capacity(self.t_eval.len() * scales.len());
+        let mut derive = |z: &[f64], i: f64| rows.extend(model.voltage_sensitivities(z, i).iter().zip(&scales).map(|(d, s)| d / s));
+        let sol = simulate_observed(&model, ws, &self.protocol, &self.options(p), Some(model.initial_state()), &mut derive)?;
+        let voltage = self.at_points(&sol)?;
+        let dim = scales.len();
+        let sensitivity = self.output_of_point.iter().flat_map(|&k| rows[k * dim..(k + 1) * dim].iter().copied()).collect();
+        Ok(Simulated { voltage, sensitivity, columns: dim })
     }
 
-    /// Maps outputs at the distinct times onto the recorded points.
-    fn at_points(&self, time: &[f64], values: &[f64]) -> Result<Vec<f64>, Error> {
-        if time.len() != self.t_eval.len() {
-            return Err(Error::Solver {
-                t: time.last().copied().unwrap_or(0.0),
-                reason: format!("simulation stopped after {} of {} recorded times", time.len(), self.t_eval.len()),
-            });
+    /// Maps outputs at the distinct times onto the recorded points; errors if the replay
+    /// ended early, saying why.
+    fn at_points(&self, sol: &Solution) -> Result<Vec<f64>, Error> {
+        if sol.time.len() != self.t_eval.len() {
+            let t = sol.time.last().copied().unwrap_or(0.0);
+            let why = match sol.cutoff_times.first() {
+                Some(tc) => format!(
+                    "the model's voltage left ({}, {}) V at t = {tc:.1} s (a concentration at its limit: the model breaks down there)",
+                    REPLAY_WINDOW.0, REPLAY_WINDOW.1
+                ),
+                None => "the simulation ended early".into(),
+            };
+            return Err(Error::Solver { t, reason: format!("{why}; {} of {} recorded times simulated", sol.time.len(), self.t_eval.len()) });
         }
-        Ok(self.output_of_point.iter().map(|&k| values[k]).collect())
+        Ok(self.output_of_point.iter().map(|&k| sol.voltage[k]).collect())
     }
 
     /// Residuals `V_model - V_data` (V) at every recorded point.

@@ -203,8 +203,7 @@ pub fn fit_joint(problem: &JointProblem, cost: CostKind, optimiser: &str, option
         let re = e.problem.residuals(&sim.voltage);
         let we = &e.problem.weights;
         let rows: Vec<Vec<f64>> = sim
-            .sensitivity
-            .iter()
+            .sensitivity_rows()
             .map(|row| {
                 let mut joint = vec![0.0; problem.dim()];
                 for (&j, s) in e.index.iter().zip(row) {
@@ -298,7 +297,7 @@ mod tests {
         let r: Vec<f64> = (0..50).map(|k| 1e-3 * ((k as f64 * 1.7).cos())).collect();
         let w = vec![1.0; 50];
         let scale = [2.0, 0.5, 1e-3];
-        let plain = super::super::fit::covariance(&r, &w, &rows, &scale).unwrap();
+        let plain = super::super::fit::covariance(&r, &w, rows.iter().map(Vec::as_slice), &scale).unwrap();
         let blocks = [Block { weight: 1.0, residuals: r.clone(), point_weights: w.clone(), rows: rows.clone() }];
         let s = sandwich_covariance(&blocks, &scale).unwrap();
         for k in 0..3 {

@@ -24,6 +24,8 @@ pub struct Sensitivities<'a> {
     steps: Vec<f64>,
     mass: Vec<f64>,
     scale: Vec<f64>,
+    /// The base model's output states (what its voltage reads).
+    outputs: Vec<usize>,
     scratch: Mutex<(Vec<f64>, Vec<f64>, Vec<f64>)>,
 }
 
@@ -34,7 +36,8 @@ impl<'a> Sensitivities<'a> {
         let blocks = 1 + perturbed.len();
         let mass = base.mass().repeat(blocks);
         let scale = base.scale().repeat(blocks);
-        Self { base, perturbed, scales, steps, mass, scale, scratch: Mutex::new((vec![0.0; n], vec![0.0; n], vec![0.0; n])) }
+        let outputs = base.output_states();
+        Self { base, perturbed, scales, steps, mass, scale, outputs, scratch: Mutex::new((vec![0.0; n], vec![0.0; n], vec![0.0; n])) }
     }
 
     fn n(&self) -> usize {
@@ -58,24 +61,33 @@ impl<'a> Sensitivities<'a> {
         z
     }
 
-    /// `p̄_k dV/dθ_k` at augmented state `z` and current `i` (A), for every parameter.
+    /// `p̄_k dV/dθ_k` at augmented state `z` and current `i` (A), for every parameter. Reads
+    /// only the output states of each block ([`Model::output_states`]), as the voltage does.
     pub fn voltage_sensitivities(&self, z: &[f64], i: f64) -> Vec<f64> {
         let n = self.n();
         let y = &z[..n];
         let v = self.base.voltage(y, i);
-        let mut buf = vec![0.0; n];
+        let mut buf = y.to_vec();
         (0..self.perturbed.len())
             .map(|k| {
                 let s = &z[(k + 1) * n..(k + 2) * n];
-                let direct = match self.direction_step(s) {
-                    Some(eps) => {
-                        for j in 0..n {
-                            buf[j] = y[j] + eps * s[j];
-                        }
-                        (self.base.voltage(&buf, i) - v) / eps
+                // Directional difference along s, with the step of `direction_step` taken over
+                // the states the voltage reads.
+                let wrms = (self.outputs.iter().map(|&j| (s[j] / self.base.scale()[j]).powi(2)).sum::<f64>()
+                    / self.outputs.len().max(1) as f64)
+                    .sqrt();
+                let direct = if wrms > 0.0 {
+                    let eps = f64::EPSILON.sqrt() / wrms;
+                    for &j in &self.outputs {
+                        buf[j] = y[j] + eps * s[j];
                     }
-                    None => 0.0,
+                    (self.base.voltage(&buf, i) - v) / eps
+                } else {
+                    0.0
                 };
+                for &j in &self.outputs {
+                    buf[j] = y[j];
+                }
                 direct + self.scales[k] * (self.perturbed[k].voltage(y, i) - v) / self.steps[k]
             })
             .collect()
@@ -111,6 +123,12 @@ impl Model for Sensitivities<'_> {
     }
     fn initial_state(&self) -> Vec<f64> {
         Sensitivities::initial_state(self)
+    }
+    /// The base model's output states in every block: all that
+    /// [`Sensitivities::voltage_sensitivities`] reads.
+    fn output_states(&self) -> Vec<usize> {
+        let n = self.n();
+        (0..=self.perturbed.len()).flat_map(|b| self.outputs.iter().map(move |&j| b * n + j)).collect()
     }
     fn rhs(&self, z: &[f64], current: f64, out: &mut [f64]) {
         let n = self.n();

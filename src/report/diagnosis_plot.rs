@@ -69,7 +69,7 @@ fn shaded_plot(path: &Path, title: &str, y_label: &str, series: &[(String, Vec<(
     for (k, (label, p)) in series.iter().enumerate() {
         let colour = Palette99::pick(k).to_rgba();
         chart
-            .draw_series(LineSeries::new(p.iter().copied().filter(|q| q.0.is_finite() && q.1.is_finite()), colour.stroke_width(2)))
+            .draw_series(LineSeries::new(super::decimate::for_plot(p.iter().copied()), colour.stroke_width(2)))
             .map_err(|e| err(e.to_string()))?
             .label(label.clone())
             .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], colour.stroke_width(2)));

@@ -52,7 +52,7 @@ pub fn trace_plot<S: AsRef<str>>(path: &Path, title: &str, names: &[S], chains: 
             let colour = Palette99::pick(k).to_rgba();
             chart
                 .draw_series(LineSeries::new(
-                    chain.draws.iter().enumerate().map(|(t, d)| (t as f64, d[i])).filter(|p| p.1.is_finite()),
+                    super::decimate::for_plot(chain.draws.iter().enumerate().map(|(t, d)| (t as f64, d[i]))),
                     colour.mix(0.7).stroke_width(1),
                 ))
                 .map_err(|e| err(e.to_string()))?

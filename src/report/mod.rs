@@ -1,5 +1,6 @@
 //! Reports: plots (SVG via plotters) and summaries.
 
+pub mod decimate;
 pub mod fields;
 pub mod nyquist;
 pub mod plot;

@@ -4,6 +4,7 @@ use std::path::Path;
 
 use plotters::prelude::*;
 
+use super::decimate::for_plot;
 use crate::error::Error;
 
 /// One named series of a line plot.
@@ -47,10 +48,7 @@ pub fn line_plot(path: &Path, title: &str, x_label: &str, y_label: &str, series:
     for (k, s) in series.iter().enumerate() {
         let colour = Palette99::pick(k).to_rgba();
         chart
-            .draw_series(LineSeries::new(
-                s.x.iter().copied().zip(s.y.iter().copied()).filter(|(x, y)| x.is_finite() && y.is_finite()),
-                colour.stroke_width(2),
-            ))
+            .draw_series(LineSeries::new(for_plot(s.x.iter().copied().zip(s.y.iter().copied())), colour.stroke_width(2)))
             .map_err(|e| err(e.to_string()))?
             .label(s.label.clone())
             .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], colour.stroke_width(2)));

@@ -9,7 +9,7 @@ use std::time::Instant;
 use super::Study;
 use crate::error::Error;
 use crate::optim::{
-    Bounds, LinearConstraints, Objective, Observer, OptimOptions, OptimResult, Problem, TraceObserver, by_name,
+    Bounds, LinearConstraints, Objective, OptimOptions, OptimResult, Problem, ProgressObserver, by_name,
 };
 use crate::problem::design::{DesignMetrics, DesignProblem, Metric};
 use crate::report::plot::{Series, line_plot};
@@ -28,20 +28,6 @@ impl Objective for MaximiseMetric<'_> {
     }
     fn evaluate(&self, x: &[f64]) -> f64 {
         self.problem.evaluate(x).map_or(f64::INFINITY, |m| -m.get(self.metric))
-    }
-}
-
-/// Progress bar and trace.
-struct Progress {
-    bar: indicatif::ProgressBar,
-    trace: TraceObserver,
-}
-
-impl Observer for Progress {
-    fn iteration(&mut self, iter: usize, best_f: f64, best_x: &[f64], evaluations: usize) {
-        self.bar.set_position(iter as u64);
-        self.bar.set_message(format!("best {:.3}, {evaluations} evaluations", -best_f));
-        self.trace.iteration(iter, best_f, best_x, evaluations);
     }
 }
 
@@ -116,10 +102,9 @@ pub fn run_design(study: &Study) -> Result<DesignOutcome, Error> {
     let initial_x = study.baseline()?;
     let initial = problem.evaluate(&initial_x)?;
     let x0 = opt_problem.project(&initial_x)?;
-    let bar = indicatif::ProgressBar::new(options.max_iterations as u64);
-    let mut observer = Progress { bar, trace: TraceObserver::default() };
+    let mut observer = ProgressObserver::new("design", options.max_iterations, |f| format!("best {:.3}", -f));
     let result = optimiser.minimise(&opt_problem, &x0, &mut observer)?;
-    observer.bar.finish_and_clear();
+    observer.finish();
     let optimised = problem.evaluate(&result.x)
         .map_err(|e| Error::InvalidSetting { field: "design".into(), reason: format!("no valid design: the optimum at {:?} fails: {e}", result.x) })?;
     let value = optimised.get(metric);
@@ -138,6 +123,7 @@ pub fn run_design(study: &Study) -> Result<DesignOutcome, Error> {
     let upper: Vec<f64> = study.variables.iter().map(|v| v.upper).collect();
     let mut warnings = study.warnings();
     warnings.extend(super::at_bound_warnings("the optimum", &names, &result.x, &lower, &upper));
+    warnings.extend(super::truncation_warning("the design search", &result.stop, result.iterations, result.evaluations));
     let mut outcome =
         DesignOutcome { metric, initial_x, initial, result, optimised, rebuilds: problem.rebuild_count(), seconds, files: Vec::new(), warnings };
     write_outputs(study, &problem, &mut outcome, &method, dir.path())?;

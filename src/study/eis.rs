@@ -6,7 +6,7 @@ use std::path::PathBuf;
 use crate::eis::{EisFit, Spectrum, log_frequencies};
 use crate::error::Error;
 use crate::models::{ModelKind, Submodels};
-use crate::optim::{Bounds, NoObserver, OptimOptions, OptimResult, Problem, Transform, by_name};
+use crate::optim::{Bounds, OptimOptions, OptimResult, Problem, ProgressObserver, Transform, by_name};
 use crate::params::{ParameterSet, set_initial_soc};
 use crate::report::nyquist::nyquist_plot;
 
@@ -99,7 +99,9 @@ pub fn run_eis(run: &EisRun) -> Result<EisOutcome, Error> {
             let problem = Problem::new(&objective, bounds)?.with_transforms(vec![Transform::Log; x0.len()])?;
             let options = OptimOptions::default().with_seed(1).with_max_evaluations(2000)?.with_f_tolerance(1e-12)?;
             let start = std::time::Instant::now();
-            let result = by_name(&run.optimiser, options)?.minimise(&problem, &x0, &mut NoObserver)?;
+            let mut progress = ProgressObserver::new("EIS fit", options.max_iterations, |f| format!("cost {f:.4e}"));
+            let result = by_name(&run.optimiser, options)?.minimise(&problem, &x0, &mut progress)?;
+            progress.finish();
             let seconds = start.elapsed().as_secs_f64();
             let (initial, fitted) = (spectrum_of(variables, &x0)?, spectrum_of(variables, &result.x)?);
             nyquist_plot(&nyquist, &title, Some(("data", &data)), &[("initial", &initial), ("fitted", &fitted)])?;

@@ -8,6 +8,7 @@ use std::path::{Path, PathBuf};
 
 use rand::SeedableRng;
 use rand_distr::{Distribution, Normal};
+use indicatif::ParallelProgressIterator;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
@@ -198,10 +199,11 @@ impl FitStudy {
         Ok(rec)
     }
 
-    /// The fitting problem of experiment `k` (its temperature, initial state and protocol)
-    /// and the number of its own parameters after the shared ones (1 with a fitted
-    /// `initial_soc`, else 0).
-    pub fn experiment_problem(&self, k: usize, data: Option<&Path>) -> Result<(FittingProblem, usize), Error> {
+    /// The fitting problem of experiment `k` (its temperature, initial state and protocol),
+    /// the number of its own parameters after the shared ones (1 with a fitted `initial_soc`,
+    /// else 0) and the notes of the recording's checks against the cell (a likely unit error
+    /// is an error before any fit).
+    pub fn experiment_problem(&self, k: usize, data: Option<&Path>) -> Result<(FittingProblem, usize, Vec<String>), Error> {
         self.check_data_override(data)?;
         let d = &self.data[k];
         let mut base = self.cell.load()?;
@@ -218,7 +220,10 @@ impl FitStudy {
             None => {}
         }
         let own = parameters.len() - self.parameters.len();
-        let mut problem = FittingProblem::new(self.model, base, parameters, self.recording(k, data)?)?;
+        let recording = self.recording(k, data)?;
+        let file = data.filter(|_| k == 0).unwrap_or(&d.file).display().to_string();
+        let notes = recording.refuse_unit_errors(&file, base.cell.nominal_capacity, (base.cell.lower_cutoff, base.cell.upper_cutoff))?;
+        let mut problem = FittingProblem::new(self.model, base, parameters, recording)?;
         if d.start_at_rest_voltage {
             problem = problem.starting_at_rest()?;
         }
@@ -227,11 +232,17 @@ impl FitStudy {
             let protocol = toml::from_str(&text).map_err(|e| Error::Parse { path: path.display().to_string(), message: e.to_string() })?;
             problem = problem.with_protocol(protocol)?;
         }
-        Ok((problem, own))
+        Ok((problem, own, notes))
     }
 
     /// The fitting problem of a study with one experiment and no parameters of its own.
     pub fn problem(&self, data: Option<&Path>) -> Result<FittingProblem, Error> {
+        self.problem_and_notes(data).map(|(problem, _)| problem)
+    }
+
+    /// [`problem`](Self::problem), and the recording checks' notes; a likely unit error in the
+    /// recording (minutes read as seconds, mA as A) is an error before any fit.
+    pub fn problem_and_notes(&self, data: Option<&Path>) -> Result<(FittingProblem, Vec<String>), Error> {
         self.check_data_override(data)?;
         if self.is_joint() {
             return Err(Error::InvalidSetting {
@@ -239,7 +250,8 @@ impl FitStudy {
                 reason: format!("the study fits {} experiments jointly (or fits an initial_soc): this run takes one [data] without fitted initial_soc", self.data.len()),
             });
         }
-        Ok(self.experiment_problem(0, data)?.0)
+        let (problem, _, notes) = self.experiment_problem(0, data)?;
+        Ok((problem, notes))
     }
 }
 
@@ -249,9 +261,12 @@ pub struct FitOutcome {
     /// RMS residual at the initial parameters (V).
     pub initial_rmse: f64,
     pub files: Vec<PathBuf>,
-    /// Notes (synthetic noise) and warnings (parameters at a bound), also in the report.
+    /// Notes (synthetic noise) and warnings (parameters at a bound, a truncated search), also
+    /// in the report.
     pub notes: Vec<String>,
     pub warnings: Vec<String>,
+    /// Fitted parameters that ended on a bound of their search range: no estimate of them.
+    pub at_bound: Vec<String>,
     /// Each experiment's share of a joint fit (empty for one experiment).
     pub experiments: Vec<crate::problem::joint::ExperimentFit>,
 }
@@ -270,16 +285,18 @@ pub(crate) fn fit_into(study: &FitStudy, data: Option<&Path>, dir: &Path) -> Res
     if study.is_joint() {
         return super::joint_fit::joint_fit_into(study, data, dir);
     }
-    let problem = study.problem(data)?;
+    let (problem, checks) = study.problem_and_notes(data)?;
     let (method, options) = study.optimiser()?;
     let initial_voltage = problem.simulate(&problem.initial())?;
     let initial_rmse = crate::problem::fit::weighted_rms(&problem.residuals(&initial_voltage), &problem.weights);
     let result = fit(&problem, study.cost, &method, options)?;
-    let notes = study.noise_note(data);
+    let notes: Vec<String> = study.noise_note(data).into_iter().chain(checks).collect();
     let names: Vec<String> = problem.parameters.iter().map(|p| p.path.clone()).collect();
     let lower: Vec<f64> = problem.parameters.iter().map(|p| p.lower).collect();
     let upper: Vec<f64> = problem.parameters.iter().map(|p| p.upper).collect();
-    let warnings = super::at_bound_warnings("the fit", &names, &result.x, &lower, &upper);
+    let mut warnings = super::at_bound_warnings("the fit", &names, &result.x, &lower, &upper);
+    let at_bound: Vec<String> = super::on_bounds(&result.x, &lower, &upper).into_iter().map(|(k, _)| names[k].clone()).collect();
+    warnings.extend(super::truncation_warning("the fit", &result.stop, result.iterations, result.evaluations));
     let mut files = fit_plots(dir, &study.name, "", &problem, &initial_voltage, &result.voltage)?;
     if let (Some(l), true) = (&study.landscape, problem.dim() >= 2) {
         let path = dir.join("landscape.svg");
@@ -289,7 +306,7 @@ pub(crate) fn fit_into(study: &FitStudy, data: Option<&Path>, dir: &Path) -> Res
     write_output(dir, "fit.json", serde_json::to_string_pretty(&result).expect("serialisable"), &mut files)?;
     let md = report(study, &problem, &result, initial_rmse);
     write_output(dir, "report.md", with_notes(md, &notes, &warnings), &mut files)?;
-    Ok(FitOutcome { result, initial_rmse, files, notes, warnings, experiments: Vec::new() })
+    Ok(FitOutcome { result, initial_rmse, files, notes, warnings, at_bound, experiments: Vec::new() })
 }
 
 /// `fit_voltage<suffix>.svg` (data, initial and fitted voltage) and `fit_residual<suffix>.svg`
@@ -346,8 +363,13 @@ fn landscape(problem: &FittingProblem, cost: CostKind, result: &FitResult, point
     };
     let (xs, ys) = (axis(0), axis(1));
     let cells: Vec<(usize, usize)> = (0..points).flat_map(|i| (0..points).map(move |j| (i, j))).collect();
+    let bar = indicatif::ProgressBar::new(cells.len() as u64);
+    if let Ok(style) = indicatif::ProgressStyle::with_template("landscape {bar:30} {pos}/{len} points [{elapsed}, eta {eta}]") {
+        bar.set_style(style);
+    }
     let values: Vec<f64> = cells
         .par_iter()
+        .progress_with(bar.clone())
         .map(|&(i, j)| {
             let mut x = result.x.clone();
             x[0] = xs[i];
@@ -356,6 +378,7 @@ fn landscape(problem: &FittingProblem, cost: CostKind, result: &FitResult, point
             objective.evaluate(&x)
         })
         .collect();
+    bar.finish_and_clear();
     let shown = |k: usize, v: f64| if problem.parameters[k].log { v.log10() } else { v };
     let fmin = values.iter().copied().filter(|v| v.is_finite()).fold(f64::INFINITY, f64::min).min(result.cost);
     let spread = values.iter().copied().filter(|v| v.is_finite()).fold(0.0f64, |m, v| m.max(v - fmin));

@@ -11,28 +11,33 @@ use super::write_output;
 use crate::error::Error;
 use crate::problem::joint::{JointFit, JointProblem, fit_joint};
 
-/// The study's experiments joined into one problem.
-pub fn joint_problem(study: &FitStudy, data: Option<&Path>) -> Result<JointProblem, Error> {
-    let experiments = (0..study.data.len())
-        .map(|k| {
-            let (problem, own) = study.experiment_problem(k, data)?;
-            Ok((study.data[k].label(k), problem, study.data[k].weight, own))
-        })
-        .collect::<Result<Vec<_>, Error>>()?;
-    JointProblem::new(study.parameters.clone(), experiments)
+/// The study's experiments joined into one problem, with the notes of each recording's
+/// checks against the cell (a likely unit error is an error before any fit).
+pub fn joint_problem(study: &FitStudy, data: Option<&Path>) -> Result<(JointProblem, Vec<String>), Error> {
+    let mut experiments = Vec::new();
+    let mut notes = Vec::new();
+    for (k, d) in study.data.iter().enumerate() {
+        let (problem, own, checks) = study.experiment_problem(k, data)?;
+        notes.extend(checks.into_iter().map(|n| format!("{}: {n}", d.label(k))));
+        experiments.push((d.label(k), problem, d.weight, own));
+    }
+    Ok((JointProblem::new(study.parameters.clone(), experiments)?, notes))
 }
 
 /// Fits the experiments jointly and writes `report.md`, `fit.json` and, per experiment,
 /// `fit_voltage_<name>.svg` and `fit_residual_<name>.svg` into `dir`.
 pub(crate) fn joint_fit_into(study: &FitStudy, data: Option<&Path>, dir: &Path) -> Result<FitOutcome, Error> {
-    let problem = joint_problem(study, data)?;
+    let (problem, checks) = joint_problem(study, data)?;
     let (method, options) = study.optimiser()?;
     let fit = fit_joint(&problem, study.cost, &method, options)?;
-    let notes = study.noise_note(data);
+    let notes: Vec<String> = study.noise_note(data).into_iter().chain(checks).collect();
     let names: Vec<String> = problem.parameters.iter().map(|p| p.path.clone()).collect();
     let lower: Vec<f64> = problem.parameters.iter().map(|p| p.lower).collect();
     let upper: Vec<f64> = problem.parameters.iter().map(|p| p.upper).collect();
-    let warnings = super::at_bound_warnings("the joint fit", &names, &fit.result.x, &lower, &upper);
+    let r = &fit.result;
+    let mut warnings = super::at_bound_warnings("the joint fit", &names, &r.x, &lower, &upper);
+    let at_bound: Vec<String> = super::on_bounds(&r.x, &lower, &upper).into_iter().map(|(k, _)| names[k].clone()).collect();
+    warnings.extend(super::truncation_warning("the joint fit", &r.stop, r.iterations, r.evaluations));
     let mut files = Vec::new();
     for (e, ef) in problem.experiments.iter().zip(&fit.experiments) {
         let title = format!("{}: {}", study.name, ef.name);
@@ -42,7 +47,7 @@ pub(crate) fn joint_fit_into(study: &FitStudy, data: Option<&Path>, dir: &Path) 
     let md = report(study, data, &problem, &fit, &method);
     write_output(dir, "report.md", with_notes(md, &notes, &warnings), &mut files)?;
     let initial_rmse = combined_initial_rmse(&fit);
-    Ok(FitOutcome { result: fit.result, initial_rmse, files, notes, warnings, experiments: fit.experiments })
+    Ok(FitOutcome { result: fit.result, initial_rmse, files, notes, warnings, at_bound, experiments: fit.experiments })
 }
 
 /// The RMS residual (V) at the initial parameters over every experiment's points, each

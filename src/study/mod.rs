@@ -64,6 +64,12 @@ impl CellChoice {
     pub fn load(&self) -> Result<ParameterSet, Error> {
         let mut p = match self.parameter_set.as_str() {
             "chen2020" => chen2020(),
+            path if !Path::new(path).is_file() => {
+                return Err(Error::InvalidSetting {
+                    field: "cell.parameter_set".into(),
+                    reason: format!("`{path}` is neither a built-in set (chen2020) nor a parameter file"),
+                });
+            }
             path => ParameterSet::from_file(Path::new(path))?,
         };
         apply_overrides(&mut p, &self.overrides)?;
@@ -406,23 +412,46 @@ pub fn degenerate(m: &crate::problem::design::DesignMetrics, baseline: &crate::p
     !(m.energy.is_finite() && m.energy > DEGENERATE_ENERGY_FRACTION * baseline.energy)
 }
 
-/// Warnings for values within 1e-6 of the bound range of a bound: `what` names the point
-/// (e.g. "the optimum").
-pub fn at_bound_warnings(what: &str, names: &[String], x: &[f64], lower: &[f64], upper: &[f64]) -> Vec<String> {
+/// The values of `x` that lie on a bound (within 1e-6 of their range): index and side.
+pub fn on_bounds(x: &[f64], lower: &[f64], upper: &[f64]) -> Vec<(usize, &'static str)> {
     let mut out = Vec::new();
-    for (k, name) in names.iter().enumerate() {
-        let (Some(&v), Some(&lo), Some(&hi)) = (x.get(k), lower.get(k), upper.get(k)) else { continue };
+    for (k, ((&v, &lo), &hi)) in x.iter().zip(lower).zip(upper).enumerate() {
         let tol = 1e-6 * (hi - lo).abs();
         for (side, b) in [("lower", lo), ("upper", hi)] {
             if (v - b).abs() <= tol {
-                out.push(format!(
-                    "{what} has {name} = {} at its {side} bound; the best value may lie outside the searched range",
-                    crate::error::number(v)
-                ));
+                out.push((k, side));
             }
         }
     }
     out
+}
+
+/// One warning per value of `x` on a bound ([`on_bounds`]), naming it.
+pub fn at_bound_warnings(what: &str, names: &[String], x: &[f64], lower: &[f64], upper: &[f64]) -> Vec<String> {
+    on_bounds(x, lower, upper)
+        .into_iter()
+        .filter_map(|(k, side)| {
+            Some(format!(
+                "{what} has {} = {} at its {side} bound; the best value may lie outside the searched range",
+                names.get(k)?,
+                crate::error::number(x[k])
+            ))
+        })
+        .collect()
+}
+
+/// A warning when an optimiser stopped on its iteration or evaluation cap rather than on
+/// convergence: the result is the best found so far, not an optimum.
+pub fn truncation_warning(what: &str, stop: &crate::optim::StopReason, iterations: usize, evaluations: usize) -> Option<String> {
+    use crate::optim::StopReason;
+    let cap = match stop {
+        StopReason::MaxIterations => "iteration",
+        StopReason::MaxEvaluations => "evaluation",
+        _ => return None,
+    };
+    Some(format!(
+        "{what} stopped on its {cap} cap ({iterations} iterations, {evaluations} evaluations) before converging: the result is the best found so far; raise [optimiser] max_{cap}s to go on"
+    ))
 }
 
 /// Writes `text` to `dir/name` and appends the path to `files`.
