@@ -282,30 +282,9 @@ fn run(cli: Cli) -> Result<(), Error> {
             Ok(())
         }
         Command::Data { action: DataCommand::Inspect { file, json } } => {
-            use cellstudio::data::cycler::{read, step_table, steps};
+            use cellstudio::data::cycler::{inspect_json, inspect_text, read};
             let data = read(&file)?;
-            let rec = &data.recording;
-            let st = steps(rec, data.step.as_deref());
-            if json {
-                let summary = serde_json::json!({
-                    "file": file.display().to_string(),
-                    "format": data.format,
-                    "rows": rec.time.len(),
-                    "dropped_repeats": data.dropped_repeats,
-                    "duration_s": rec.time.last(),
-                    "time_offset_s": data.time_offset,
-                    "temperature": rec.temperature.is_some(),
-                    "steps": st,
-                });
-                println!("{summary}");
-                return Ok(());
-            }
-            println!("file             {}", file.display());
-            println!("format           {}", data.format);
-            println!("rows             {} ({} repeated rows dropped)", rec.time.len(), data.dropped_repeats);
-            println!("duration         {:.1} s (first row at {} s of the file's clock)", rec.time.last().copied().unwrap_or(0.0), data.time_offset);
-            println!("temperature      {}", if rec.temperature.is_some() { "yes" } else { "no" });
-            println!("steps            {}\n\n{}", st.len(), step_table(&st));
+            if json { println!("{}", inspect_json(&file, &data)) } else { print!("{}", inspect_text(&file, &data)) }
             Ok(())
         }
         Command::Design { overrides, study } => {

@@ -9,6 +9,7 @@
 mod arbin;
 mod basytec;
 mod biologic;
+mod inspect;
 mod maccor;
 mod neware;
 mod steps;
@@ -18,6 +19,7 @@ use std::path::Path;
 
 use serde::Serialize;
 
+pub use inspect::{inspect_json, inspect_text};
 pub use steps::{CV_TOLERANCE, PULSE_MAX_DURATION, Step, StepKind, step_table, steps};
 use table::{Layout, TimeKind};
 
