@@ -103,7 +103,7 @@ enum Command {
         overrides: Overrides,
         /// Fitting study file, e.g. fits/spm_contact_resistance.toml.
         study: PathBuf,
-        /// Recording CSV (overrides the study's `data.file`).
+        /// Recording CSV or raw cycler export (overrides the study's `data.file`).
         #[arg(long)]
         data: Option<PathBuf>,
     },
@@ -157,7 +157,8 @@ enum Command {
         /// The model to test: spm, spme or dfn.
         #[arg(long, default_value = "spm")]
         model: ModelKind,
-        /// Recording CSV with time_s, current_A (discharge positive), voltage_V[, temperature_K].
+        /// Recording CSV with time_s, current_A (discharge positive), voltage_V[, temperature_K],
+        /// or a raw Basytec, BioLogic, Maccor, Neware or Arbin export (detected).
         #[arg(long)]
         data: PathBuf,
         /// Parameter-set file (default: embedded Chen 2020).
@@ -185,12 +186,29 @@ enum Command {
         #[arg(long, default_value = "out/diagnosis")]
         out: PathBuf,
     },
+    /// Recordings and raw cycler exports.
+    Data {
+        #[command(subcommand)]
+        action: DataCommand,
+    },
     /// Evaluate a study's grid sweep (in parallel) and write CSV, JSON and density plots.
     Sweep {
         #[command(flatten)]
         overrides: Overrides,
         /// Study file, e.g. designs/gravimetric_chen2020.toml.
         study: PathBuf,
+    },
+}
+
+#[derive(Subcommand)]
+enum DataCommand {
+    /// Detect a file's format and print its rows, time span and steps.
+    Inspect {
+        /// A raw cycler export (Basytec, BioLogic, Maccor, Neware, Arbin) or a recording CSV.
+        file: PathBuf,
+        /// Print the summary and steps as JSON.
+        #[arg(long)]
+        json: bool,
     },
 }
 
@@ -245,7 +263,7 @@ fn run(cli: Cli) -> Result<(), Error> {
             use cellstudio::diagnose::{DiagnoseOptions, default_fit_parameter, diagnose_rounds, report};
             let p = load_parameters(params.as_deref(), &overrides)?;
             let staged = OutputDir::create(&out, &[Some(data.as_path()), params.as_deref()].into_iter().flatten().collect::<Vec<_>>())?;
-            let rec = cellstudio::data::Recording::from_csv(&data)?;
+            let rec = cellstudio::data::cycler::read_recording(&data, &Default::default())?;
             let submodels = Submodels { contact_resistance, thermal, ..Default::default() };
             let mut options = DiagnoseOptions::new(cellstudio::problem::fitting::ModelSpec::new(model, submodels));
             options.fitted = fit.iter().map(|path| default_fit_parameter(path, &p)).collect::<Result<_, _>>()?;
@@ -262,6 +280,12 @@ fn run(cli: Cli) -> Result<(), Error> {
             for f in staged.commit(&written)? {
                 println!("wrote            {}", f.display());
             }
+            Ok(())
+        }
+        Command::Data { action: DataCommand::Inspect { file, json } } => {
+            use cellstudio::data::cycler::{inspect_json, inspect_text, read};
+            let data = read(&file)?;
+            if json { println!("{}", inspect_json(&file, &data)) } else { print!("{}", inspect_text(&file, &data)) }
             Ok(())
         }
         Command::Design { overrides, study } => {
@@ -296,6 +320,9 @@ fn run(cli: Cli) -> Result<(), Error> {
                 r.seconds,
                 r.stop
             );
+            for e in &out.experiments {
+                println!("  {}: RMSE {:.3} mV (initial {:.3} mV), {} points, weight {}", e.name, e.rmse * 1e3, e.initial_rmse * 1e3, e.points, e.weight);
+            }
             println!("{}", parameter_table(r));
             for f in &out.files {
                 println!("wrote {}", f.display());

@@ -330,6 +330,18 @@ fn a_sweep_with_no_valid_design_fails_and_writes_nothing() {
 }
 
 #[test]
+fn data_inspect_names_the_format_and_the_steps() {
+    let repo = Path::new(REPO);
+    let o = run(repo, &["data", "inspect", "tests/data/cycler/neware_documented_layout.csv"]);
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(out.contains("format           Neware") && out.contains("rows             9"), "{out}");
+    assert!(out.contains("| 2 | 2 | CC | 90.1 | 2.5000 | 4.1021 | 4.0530 |"), "{out}");
+    let o = run(repo, &["data", "inspect", "Cargo.toml"]);
+    fails_with(&o, &["Cargo.toml", "not a known cycler export", "`[package]`"]);
+}
+
+#[test]
 fn a_fit_pinned_on_a_bound_fails_and_a_truncated_fit_says_so() {
     let s = Scratch::new("pinned");
     // The seed recording has R = 10 mOhm; a search range that ends at 2 mOhm pins the fit there.

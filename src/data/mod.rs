@@ -1,6 +1,7 @@
-//! Recorded cycler data: CSV import with column checks, and comparison of simulated voltage
-//! against a recording.
+//! Recorded cycler data: CSV import with column checks, raw cycler exports ([`cycler`]), and
+//! comparison of simulated voltage against a recording.
 
+pub mod cycler;
 mod format;
 mod recording;
 mod sanity;

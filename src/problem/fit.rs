@@ -5,8 +5,8 @@ use std::time::Instant;
 
 use serde::Serialize;
 
-use super::fitting::{FittingProblem, Simulated};
-use crate::cost::{CostKind, CostValue};
+use super::fitting::{FitParameter, FittingProblem, Simulated};
+use crate::cost::CostKind;
 use crate::error::Error;
 use crate::optim::{Bounds, Objective, OptimOptions, Problem, ProgressObserver, StopReason, TraceEntry, Transform, by_name};
 
@@ -27,37 +27,42 @@ impl FitObjective<'_> {
         (&x[..n], self.cost.fits_sigma().then(|| x[n]))
     }
 
-    fn cost_of(&self, theta: &[f64], sigma: Option<f64>, voltage: &[f64]) -> CostValue {
-        let r = self.problem.residuals(voltage);
-        let mut c = self.cost.evaluate(&r, &self.problem.weights, sigma);
-        if self.cost.uses_priors() {
-            for (p, &v) in self.problem.parameters.iter().zip(theta) {
-                c.value -= p.prior.log_pdf(v);
-            }
-        }
-        c
-    }
-
     /// Value and gradient (model space) from one simulation with sensitivities.
     pub fn value_and_gradient(&self, x: &[f64]) -> Result<(f64, Vec<f64>), Error> {
         let (theta, sigma) = self.split(x);
+        let (mut value, mut g) = self.data_term_and_gradient(theta, sigma)?;
+        if self.cost.uses_priors() {
+            for (k, (p, &v)) in self.problem.parameters.iter().zip(theta).enumerate() {
+                value -= p.prior.log_pdf(v);
+                g[k] -= p.prior.d_log_pdf(v);
+            }
+        }
+        Ok((value, g))
+    }
+
+    /// The cost of the residuals alone (no priors) at model parameters `theta` and noise
+    /// level `sigma`, with its gradient over `theta` then `sigma` (when given): the part
+    /// that adds up over experiments ([`super::joint`]).
+    pub fn data_term_and_gradient(&self, theta: &[f64], sigma: Option<f64>) -> Result<(f64, Vec<f64>), Error> {
         let sim = self.problem.simulate_with_sensitivities(theta)?;
-        let c = self.cost_of(theta, sigma, &sim.voltage);
-        let mut g = vec![0.0; x.len()];
+        let r = self.problem.residuals(&sim.voltage);
+        let c = self.cost.evaluate(&r, &self.problem.weights, sigma);
+        let mut g = vec![0.0; theta.len() + usize::from(sigma.is_some())];
         for (row, d) in sim.sensitivity_rows().zip(&c.d_residual) {
             for (gk, s) in g.iter_mut().zip(row) {
                 *gk += d * s;
-            }
-        }
-        if self.cost.uses_priors() {
-            for (k, (p, &v)) in self.problem.parameters.iter().zip(theta).enumerate() {
-                g[k] -= p.prior.d_log_pdf(v);
             }
         }
         if sigma.is_some() {
             g[theta.len()] = c.d_sigma;
         }
         Ok((c.value, g))
+    }
+
+    /// The cost of the residuals alone (no priors); `None` when the simulation fails.
+    pub fn data_term(&self, theta: &[f64], sigma: Option<f64>) -> Option<f64> {
+        let v = self.problem.simulate(theta).ok()?;
+        Some(self.cost.evaluate(&self.problem.residuals(&v), &self.problem.weights, sigma).value)
     }
 }
 
@@ -67,10 +72,13 @@ impl Objective for FitObjective<'_> {
     }
     fn evaluate(&self, x: &[f64]) -> f64 {
         let (theta, sigma) = self.split(x);
-        match self.problem.simulate(theta) {
-            Ok(v) => self.cost_of(theta, sigma, &v).value,
-            Err(_) => f64::INFINITY,
+        let Some(mut value) = self.data_term(theta, sigma) else { return f64::INFINITY };
+        if self.cost.uses_priors() {
+            for (p, &v) in self.problem.parameters.iter().zip(theta) {
+                value -= p.prior.log_pdf(v);
+            }
         }
+        value
     }
     fn gradient(&self, x: &[f64]) -> Option<Vec<f64>> {
         self.value_and_gradient(x).ok().map(|(_, g)| g)
@@ -107,14 +115,59 @@ pub struct FitResult {
 /// Minimises `cost` over the problem's parameters with the named optimiser, from the
 /// parameters' initial values, then evaluates standard errors at the optimum.
 pub fn fit(problem: &FittingProblem, cost: CostKind, optimiser: &str, options: OptimOptions) -> Result<FitResult, Error> {
-    cost.validate()?;
     let objective = FitObjective { problem, cost };
-    let mut lower: Vec<f64> = problem.parameters.iter().map(|p| p.lower).collect();
-    let mut upper: Vec<f64> = problem.parameters.iter().map(|p| p.upper).collect();
-    let mut transforms: Vec<Transform> =
-        problem.parameters.iter().map(|p| if p.log { Transform::Log } else { Transform::Identity }).collect();
-    let mut x0 = problem.initial();
-    let mut names: Vec<String> = problem.parameters.iter().map(|p| p.path.clone()).collect();
+    let search = minimise(&objective, &problem.parameters, cost, optimiser, options)?;
+    let theta = &search.result.x[..problem.dim()];
+    let sim = problem.simulate_with_sensitivities(theta)?;
+    let id = identifiability(problem, &sim)?;
+    Ok(search.into_result(id, sim.voltage))
+}
+
+/// A finished search: the optimiser's result, the names of its coordinates, its trace and
+/// wall time.
+pub(crate) struct Search {
+    pub names: Vec<String>,
+    pub result: crate::optim::OptimResult,
+    pub trace: Vec<TraceEntry>,
+    pub seconds: f64,
+}
+
+impl Search {
+    pub(crate) fn into_result(self, id: Identifiability, voltage: Vec<f64>) -> FitResult {
+        let r = self.result;
+        FitResult {
+            names: self.names,
+            x: r.x,
+            cost: r.f,
+            rmse: id.rmse,
+            std_errors: id.std_errors,
+            correlation: id.correlation,
+            evaluations: r.evaluations,
+            gradient_evaluations: r.gradient_evaluations,
+            iterations: r.iterations,
+            stop: r.stop,
+            voltage,
+            trace: self.trace,
+            seconds: self.seconds,
+        }
+    }
+}
+
+/// Minimises `objective` over `parameters` (and the noise level last, when `cost` fits it)
+/// within their bounds, log-scaled where asked, from their initial values.
+pub(crate) fn minimise(
+    objective: &dyn Objective,
+    parameters: &[FitParameter],
+    cost: CostKind,
+    optimiser: &str,
+    options: OptimOptions,
+) -> Result<Search, Error> {
+    cost.validate()?;
+    let mut lower: Vec<f64> = parameters.iter().map(|p| p.lower).collect();
+    let mut upper: Vec<f64> = parameters.iter().map(|p| p.upper).collect();
+    let mut transforms: Vec<Transform> = parameters.iter().map(|p| if p.log { Transform::Log } else { Transform::Identity }).collect();
+    let mut x0: Vec<f64> = parameters.iter().map(|p| p.initial).collect();
+    let mut names: Vec<String> = parameters.iter().map(|p| p.path.clone()).collect();
     if cost.fits_sigma() {
         lower.push(SIGMA_BOUNDS.0);
         upper.push(SIGMA_BOUNDS.1);
@@ -122,7 +175,7 @@ pub fn fit(problem: &FittingProblem, cost: CostKind, optimiser: &str, options: O
         x0.push(SIGMA_START);
         names.push("sigma".into());
     }
-    let search = Problem::new(&objective, Bounds::new(lower, upper)?)?.with_transforms(transforms)?;
+    let search = Problem::new(objective, Bounds::new(lower, upper)?)?.with_transforms(transforms)?;
     let mut progress = ProgressObserver::new("fit", options.max_iterations, |f| format!("cost {f:.4e}"));
     let start = Instant::now();
     let result = by_name(optimiser, options)?.minimise(&search, &x0, &mut progress)?;
@@ -131,24 +184,13 @@ pub fn fit(problem: &FittingProblem, cost: CostKind, optimiser: &str, options: O
     if !result.f.is_finite() {
         return Err(Error::Solver { t: 0.0, reason: "every simulation of the fit failed".into() });
     }
-    let theta = &result.x[..problem.dim()];
-    let sim = problem.simulate_with_sensitivities(theta)?;
-    let id = identifiability(problem, &sim)?;
-    Ok(FitResult {
-        names,
-        x: result.x.clone(),
-        cost: result.f,
-        rmse: id.rmse,
-        std_errors: id.std_errors,
-        correlation: id.correlation,
-        evaluations: result.evaluations,
-        gradient_evaluations: result.gradient_evaluations,
-        iterations: result.iterations,
-        stop: result.stop,
-        voltage: sim.voltage,
-        trace: trace.entries,
-        seconds,
-    })
+    Ok(Search { names, result, trace: trace.entries, seconds })
+}
+
+/// Root-mean-square of residuals `r` with point weights `w` (units of `r`).
+pub fn weighted_rms(r: &[f64], w: &[f64]) -> f64 {
+    let weight: f64 = w.iter().sum();
+    (r.iter().zip(w).map(|(r, w)| w * r * r).sum::<f64>() / weight).sqrt()
 }
 
 /// Local identifiability at a fitted point.
@@ -162,20 +204,24 @@ pub struct Identifiability {
 /// Covariance `s² (Sᵀ W S)⁻¹` of least squares, with `s²` the weighted residual variance over
 /// `N - P` degrees of freedom; a direction the data do not inform has an infinite error.
 pub fn identifiability(problem: &FittingProblem, sim: &Simulated) -> Result<Identifiability, Error> {
-    let p = problem.dim();
-    let r = problem.residuals(&sim.voltage);
-    let w = &problem.weights;
+    let scale: Vec<f64> = problem.parameters.iter().map(|p| p.initial.abs().max(f64::MIN_POSITIVE)).collect();
+    covariance(&problem.residuals(&sim.voltage), &problem.weights, sim.sensitivity_rows(), &scale)
+}
+
+/// [`identifiability`] from residuals `r` (V), point weights `w` and sensitivity rows
+/// (V per parameter unit, one per residual), with `scale` the typical size of each parameter.
+pub fn covariance<'a>(r: &[f64], w: &[f64], sensitivity: impl IntoIterator<Item = &'a [f64]>, scale: &[f64]) -> Result<Identifiability, Error> {
+    let p = scale.len();
     let weight: f64 = w.iter().sum();
     let sse: f64 = r.iter().zip(w).map(|(r, w)| w * r * r).sum();
-    let rmse = (sse / weight).sqrt();
+    let rmse = weighted_rms(r, w);
     if p == 0 {
         return Ok(Identifiability { rmse, std_errors: Vec::new(), correlation: Vec::new() });
     }
     let s2 = sse / (weight - p as f64).max(1.0);
     // Fisher information in relative units (θ_k ∂V/∂θ_k) keeps the eigenproblem well scaled.
-    let scale: Vec<f64> = (0..p).map(|k| problem.parameters[k].initial.abs().max(f64::MIN_POSITIVE)).collect();
     let mut fisher = vec![0.0; p * p];
-    for (row, &wi) in sim.sensitivity_rows().zip(w) {
+    for (row, &wi) in sensitivity.into_iter().zip(w) {
         for a in 0..p {
             for b in 0..p {
                 fisher[a * p + b] += wi * row[a] * scale[a] * row[b] * scale[b];

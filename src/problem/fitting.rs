@@ -83,7 +83,7 @@ impl FitParameter {
         Self { path: path.into(), initial, lower, upper, log: false, prior: Prior::Uniform }
     }
 
-    fn validate(&self, base: &ParameterSet) -> Result<(), Error> {
+    pub(crate) fn validate(&self, base: &ParameterSet) -> Result<(), Error> {
         if self.path != INITIAL_SOC {
             base.get(&self.path)?;
         }
@@ -218,6 +218,18 @@ impl FittingProblem {
         let v = self.data.voltage[0];
         self.base.clone().set_initial_ocv(v)?;
         self.initial_ocv = Some(v);
+        Ok(self)
+    }
+
+    /// Drives the model by `protocol` instead of the recorded current (e.g. the set points of
+    /// the cycler's schedule). Its duration must reach the last recorded time.
+    pub fn with_protocol(mut self, protocol: Protocol) -> Result<Self, Error> {
+        protocol.validate()?;
+        let span = self.t_eval.last().copied().unwrap_or(0.0);
+        if !(protocol.duration() >= span) {
+            return Err(Error::invalid("protocol", protocol.duration(), format!("lasts less than the recording ({span} s)")));
+        }
+        self.protocol = protocol;
         Ok(self)
     }
 

@@ -3,6 +3,7 @@
 pub mod design;
 pub mod fit;
 pub mod fitting;
+pub mod joint;
 pub mod least_squares;
 pub mod posterior;
 pub mod sensitivity;

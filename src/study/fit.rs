@@ -14,12 +14,14 @@ use serde::{Deserialize, Serialize};
 
 use super::{CellChoice, Output};
 use crate::cost::CostKind;
-use crate::data::{CsvFormat, Recording};
+use crate::data::Recording;
 use crate::error::Error;
 use crate::optim::OptimOptions;
 use crate::problem::fit::{FitObjective, FitResult, fit};
-use crate::problem::fitting::{FitParameter, FittingProblem, ModelSpec};
+use crate::problem::fitting::{FitParameter, FittingProblem, INITIAL_SOC, ModelSpec};
 use crate::report::plot::{Series, heat_map, line_plot};
+
+pub use super::fit_data::{DataChoice, InitialSoc};
 
 /// A fitting study as written in `fits/*.toml`.
 #[derive(Clone, Debug, Deserialize, Serialize)]
@@ -33,7 +35,11 @@ pub struct FitStudy {
     #[serde(default)]
     pub cell: CellChoice,
     pub model: ModelSpec,
-    pub data: DataChoice,
+    /// The recordings: one `[data]` table, or several `[[data]]` entries fitted jointly
+    /// (sharing `parameters`, each with its own file, protocol, temperature, initial state
+    /// and weight).
+    #[serde(deserialize_with = "super::fit_data::one_or_many")]
+    pub data: Vec<DataChoice>,
     pub parameters: Vec<FitParameter>,
     #[serde(default)]
     pub cost: CostKind,
@@ -48,27 +54,6 @@ pub struct FitStudy {
     pub landscape: Option<Landscape>,
     #[serde(default)]
     pub output: Output,
-}
-
-/// The recording to fit.
-#[derive(Clone, Debug, Deserialize, Serialize)]
-#[serde(deny_unknown_fields)]
-pub struct DataChoice {
-    /// CSV file, relative to the working directory (the CLI's `--data` overrides it).
-    pub file: PathBuf,
-    #[serde(default)]
-    pub format: CsvFormat,
-    /// For synthetic studies only: Gaussian noise (V) added to the voltage of the study's own
-    /// `file` (a simulated curve), seeded by `noise_seed`. Never added to a recording given
-    /// with `--data`; the report says when it was added.
-    #[serde(default)]
-    pub synthetic_noise: f64,
-    #[serde(default)]
-    pub noise_seed: u64,
-    /// The recording begins at rest: start from the state whose open-circuit voltage is the
-    /// first recorded voltage instead of the parameter set's initial concentrations.
-    #[serde(default)]
-    pub start_at_rest_voltage: bool,
 }
 
 /// A grid of the cost over the first two parameters (log-spaced for log parameters).
@@ -112,8 +97,11 @@ impl FitStudy {
                 return Err(Error::invalid("landscape.points", l.points as f64, "must lie in 2..=200"));
             }
         }
-        if !(self.data.synthetic_noise >= 0.0 && self.data.synthetic_noise.is_finite()) {
-            return Err(Error::invalid("data.synthetic_noise", self.data.synthetic_noise, "must be non-negative"));
+        for (k, d) in self.data.iter().enumerate() {
+            d.validate(k)?;
+            if self.data[..k].iter().enumerate().any(|(j, o)| o.label(j) == d.label(k)) {
+                return Err(Error::InvalidSetting { field: format!("data.{}.name", d.label(k)), reason: "two entries have this name".into() });
+            }
         }
         let (method, options) = self.optimiser()?;
         crate::optim::by_name(&method, options)?;
@@ -132,28 +120,54 @@ impl FitStudy {
         Ok(self)
     }
 
-    /// Files the run reads: the study, the parameter set and the recording.
+    /// Files the run reads: the study, the parameter set, the recordings and protocols.
     pub fn inputs<'a>(&'a self, data: Option<&'a Path>) -> Vec<&'a Path> {
-        self.source.as_deref().into_iter().chain(self.cell.file()).chain([data.unwrap_or(&self.data.file)]).collect()
+        let files = self.data.iter().enumerate().flat_map(|(k, d)| {
+            let file = if k == 0 { data.unwrap_or(&d.file) } else { &d.file };
+            std::iter::once(file).chain(d.protocol.as_deref())
+        });
+        self.source.as_deref().into_iter().chain(self.cell.file()).chain(files).collect()
+    }
+
+    /// Whether the study fits several experiments (or one with its own fitted parameters)
+    /// jointly ([`crate::problem::joint`]).
+    pub fn is_joint(&self) -> bool {
+        self.data.len() > 1 || self.data.iter().any(|d| matches!(d.initial_soc, Some(InitialSoc::Fitted { .. })))
+    }
+
+    /// Checks that `--data` replaces the file of a study with one `[data]`.
+    pub fn check_data_override(&self, data: Option<&Path>) -> Result<(), Error> {
+        match data {
+            Some(d) if self.data.len() > 1 => Err(Error::InvalidSetting {
+                field: "--data".into(),
+                reason: format!("`{}`: the study has {} [[data]] entries; --data replaces the file of a study with one", d.display(), self.data.len()),
+            }),
+            _ => Ok(()),
+        }
     }
 
     /// What the run does with `data.synthetic_noise`, when it is set: added to the study's own
     /// (synthetic) file, never to a recording given with `--data`.
-    pub fn noise_note(&self, data: Option<&Path>) -> Option<String> {
-        let sigma = self.data.synthetic_noise;
-        // In mV, rounded to the microvolt.
-        let mv = (sigma * 1e6).round() / 1e3;
-        (sigma > 0.0).then(|| match data {
-            None => format!(
-                "synthetic Gaussian noise of {mv} mV (seed {}) was added to the voltage of `{}` (`data.synthetic_noise`)",
-                self.data.noise_seed,
-                self.data.file.display()
-            ),
-            Some(d) => format!(
-                "the study's `data.synthetic_noise` ({mv} mV) was not applied: `{}` (--data) is fitted as recorded",
-                d.display()
-            ),
-        })
+    pub fn noise_note(&self, data: Option<&Path>) -> Vec<String> {
+        self.data
+            .iter()
+            .filter(|d| d.synthetic_noise > 0.0)
+            .map(|d| {
+                // In mV, rounded to the microvolt.
+                let mv = (d.synthetic_noise * 1e6).round() / 1e3;
+                match data {
+                    None => format!(
+                        "synthetic Gaussian noise of {mv} mV (seed {}) was added to the voltage of `{}` (`data.synthetic_noise`)",
+                        d.noise_seed,
+                        d.file.display()
+                    ),
+                    Some(f) => format!(
+                        "the study's `data.synthetic_noise` ({mv} mV) was not applied: `{}` (--data) is fitted as recorded",
+                        f.display()
+                    ),
+                }
+            })
+            .collect()
     }
 
     /// The optimiser's name and options.
@@ -167,13 +181,17 @@ impl FitStudy {
         Ok((method, options))
     }
 
-    /// Reads the recording: `data` as recorded, or the study's own file with its synthetic
-    /// noise added (when `data.synthetic_noise` is set).
-    pub fn recording(&self, data: Option<&Path>) -> Result<Recording, Error> {
-        let mut rec = Recording::from_csv_with(data.unwrap_or(&self.data.file), &self.data.format)?;
-        if data.is_none() && self.data.synthetic_noise > 0.0 {
-            let mut rng = rand::rngs::StdRng::seed_from_u64(self.data.noise_seed);
-            let noise = Normal::new(0.0, self.data.synthetic_noise).expect("checked non-negative");
+    /// Reads recording `k`: `data` as recorded (for the first entry), or the study's own file
+    /// with its synthetic noise added (when `synthetic_noise` is set). A raw cycler export
+    /// (Basytec, BioLogic, Maccor, Neware, Arbin) is detected and read when `[data.format]`
+    /// is the default.
+    pub fn recording(&self, k: usize, data: Option<&Path>) -> Result<Recording, Error> {
+        let d = &self.data[k];
+        let data = data.filter(|_| k == 0);
+        let mut rec = crate::data::cycler::read_recording(data.unwrap_or(&d.file), &d.format)?;
+        if data.is_none() && d.synthetic_noise > 0.0 {
+            let mut rng = rand::rngs::StdRng::seed_from_u64(d.noise_seed);
+            let noise = Normal::new(0.0, d.synthetic_noise).expect("checked non-negative");
             for v in &mut rec.voltage {
                 *v += noise.sample(&mut rng);
             }
@@ -181,7 +199,43 @@ impl FitStudy {
         Ok(rec)
     }
 
-    /// The fitting problem of the study.
+    /// The fitting problem of experiment `k` (its temperature, initial state and protocol),
+    /// the number of its own parameters after the shared ones (1 with a fitted `initial_soc`,
+    /// else 0) and the notes of the recording's checks against the cell (a likely unit error
+    /// is an error before any fit).
+    pub fn experiment_problem(&self, k: usize, data: Option<&Path>) -> Result<(FittingProblem, usize, Vec<String>), Error> {
+        self.check_data_override(data)?;
+        let d = &self.data[k];
+        let mut base = self.cell.load()?;
+        if let Some(t) = d.temperature {
+            base.set("thermal.ambient_temperature", t)?;
+            base.set("thermal.initial_temperature", t)?;
+        }
+        let mut parameters = self.parameters.clone();
+        match d.initial_soc {
+            Some(InitialSoc::Fixed(v)) => {
+                crate::params::set_initial_soc(&mut base, v)?;
+            }
+            Some(InitialSoc::Fitted { initial, lower, upper }) => parameters.push(FitParameter::linear(INITIAL_SOC, initial, lower, upper)),
+            None => {}
+        }
+        let own = parameters.len() - self.parameters.len();
+        let recording = self.recording(k, data)?;
+        let file = data.filter(|_| k == 0).unwrap_or(&d.file).display().to_string();
+        let notes = recording.refuse_unit_errors(&file, base.cell.nominal_capacity, (base.cell.lower_cutoff, base.cell.upper_cutoff))?;
+        let mut problem = FittingProblem::new(self.model, base, parameters, recording)?;
+        if d.start_at_rest_voltage {
+            problem = problem.starting_at_rest()?;
+        }
+        if let Some(path) = &d.protocol {
+            let text = std::fs::read_to_string(path).map_err(Error::io(path))?;
+            let protocol = toml::from_str(&text).map_err(|e| Error::Parse { path: path.display().to_string(), message: e.to_string() })?;
+            problem = problem.with_protocol(protocol)?;
+        }
+        Ok((problem, own, notes))
+    }
+
+    /// The fitting problem of a study with one experiment and no parameters of its own.
     pub fn problem(&self, data: Option<&Path>) -> Result<FittingProblem, Error> {
         self.problem_and_notes(data).map(|(problem, _)| problem)
     }
@@ -189,12 +243,14 @@ impl FitStudy {
     /// [`problem`](Self::problem), and the recording checks' notes; a likely unit error in the
     /// recording (minutes read as seconds, mA as A) is an error before any fit.
     pub fn problem_and_notes(&self, data: Option<&Path>) -> Result<(FittingProblem, Vec<String>), Error> {
-        let cell = self.cell.load()?;
-        let recording = self.recording(data)?;
-        let file = data.unwrap_or(&self.data.file).display().to_string();
-        let notes = recording.refuse_unit_errors(&file, cell.cell.nominal_capacity, (cell.cell.lower_cutoff, cell.cell.upper_cutoff))?;
-        let problem = FittingProblem::new(self.model, cell, self.parameters.clone(), recording)?;
-        let problem = if self.data.start_at_rest_voltage { problem.starting_at_rest()? } else { problem };
+        self.check_data_override(data)?;
+        if self.is_joint() {
+            return Err(Error::InvalidSetting {
+                field: "data".into(),
+                reason: format!("the study fits {} experiments jointly (or fits an initial_soc): this run takes one [data] without fitted initial_soc", self.data.len()),
+            });
+        }
+        let (problem, _, notes) = self.experiment_problem(0, data)?;
         Ok((problem, notes))
     }
 }
@@ -211,6 +267,8 @@ pub struct FitOutcome {
     pub warnings: Vec<String>,
     /// Fitted parameters that ended on a bound of their search range: no estimate of them.
     pub at_bound: Vec<String>,
+    /// Each experiment's share of a joint fit (empty for one experiment).
+    pub experiments: Vec<crate::problem::joint::ExperimentFit>,
 }
 
 /// Fits the study's problem, then writes `report.md`, `fit.json`, `fit_voltage.svg`,
@@ -224,10 +282,13 @@ pub fn run_fit(study: &FitStudy, data: Option<&Path>) -> Result<FitOutcome, Erro
 
 /// [`run_fit`] writing into `dir` (a staged output folder).
 pub(crate) fn fit_into(study: &FitStudy, data: Option<&Path>, dir: &Path) -> Result<FitOutcome, Error> {
+    if study.is_joint() {
+        return super::joint_fit::joint_fit_into(study, data, dir);
+    }
     let (problem, checks) = study.problem_and_notes(data)?;
     let (method, options) = study.optimiser()?;
     let initial_voltage = problem.simulate(&problem.initial())?;
-    let initial_rmse = rms(&problem.residuals(&initial_voltage), &problem.weights);
+    let initial_rmse = crate::problem::fit::weighted_rms(&problem.residuals(&initial_voltage), &problem.weights);
     let result = fit(&problem, study.cost, &method, options)?;
     let notes: Vec<String> = study.noise_note(data).into_iter().chain(checks).collect();
     let names: Vec<String> = problem.parameters.iter().map(|p| p.path.clone()).collect();
@@ -236,52 +297,55 @@ pub(crate) fn fit_into(study: &FitStudy, data: Option<&Path>, dir: &Path) -> Res
     let mut warnings = super::at_bound_warnings("the fit", &names, &result.x, &lower, &upper);
     let at_bound: Vec<String> = super::on_bounds(&result.x, &lower, &upper).into_iter().map(|(k, _)| names[k].clone()).collect();
     warnings.extend(super::truncation_warning("the fit", &result.stop, result.iterations, result.evaluations));
-    let mut files = Vec::new();
-    let t = &problem.data.time;
-    let path = dir.join("fit_voltage.svg");
-    line_plot(
-        &path,
-        &format!("{}: voltage", study.name),
-        "time (s)",
-        "voltage (V)",
-        &[
-            Series { label: "data".into(), x: t, y: &problem.data.voltage },
-            Series { label: "initial".into(), x: t, y: &initial_voltage },
-            Series { label: "fitted".into(), x: t, y: &result.voltage },
-        ],
-    )?;
-    files.push(path);
-    let mv = |v: &[f64]| problem.residuals(v).iter().map(|r| 1e3 * r).collect::<Vec<_>>();
-    let (r0, r1) = (mv(&initial_voltage), mv(&result.voltage));
-    let path = dir.join("fit_residual.svg");
-    line_plot(
-        &path,
-        &format!("{}: residual (model - data)", study.name),
-        "time (s)",
-        "residual (mV)",
-        &[Series { label: "initial".into(), x: t, y: &r0 }, Series { label: "fitted".into(), x: t, y: &r1 }],
-    )?;
-    files.push(path);
+    let mut files = fit_plots(dir, &study.name, "", &problem, &initial_voltage, &result.voltage)?;
     if let (Some(l), true) = (&study.landscape, problem.dim() >= 2) {
         let path = dir.join("landscape.svg");
         landscape(&problem, study.cost, &result, l.points, &path)?;
         files.push(path);
     }
     write_output(dir, "fit.json", serde_json::to_string_pretty(&result).expect("serialisable"), &mut files)?;
-    let mut md = report(study, &problem, &result, initial_rmse);
-    for n in &notes {
-        let _ = writeln!(md, "\nNote: {n}.");
-    }
-    for w in &warnings {
-        let _ = writeln!(md, "\n**Warning:** {w}.");
-    }
-    write_output(dir, "report.md", md, &mut files)?;
-    Ok(FitOutcome { result, initial_rmse, files, notes, warnings, at_bound })
+    let md = report(study, &problem, &result, initial_rmse);
+    write_output(dir, "report.md", with_notes(md, &notes, &warnings), &mut files)?;
+    Ok(FitOutcome { result, initial_rmse, files, notes, warnings, at_bound, experiments: Vec::new() })
 }
 
-fn rms(r: &[f64], w: &[f64]) -> f64 {
-    let weight: f64 = w.iter().sum();
-    (r.iter().zip(w).map(|(r, w)| w * r * r).sum::<f64>() / weight).sqrt()
+/// `fit_voltage<suffix>.svg` (data, initial and fitted voltage) and `fit_residual<suffix>.svg`
+/// (initial and fitted residual in mV) of one experiment, written into `dir`.
+pub(crate) fn fit_plots(dir: &Path, title: &str, suffix: &str, problem: &FittingProblem, initial: &[f64], fitted: &[f64]) -> Result<Vec<PathBuf>, Error> {
+    let t = &problem.data.time;
+    let voltage = dir.join(format!("fit_voltage{suffix}.svg"));
+    line_plot(
+        &voltage,
+        &format!("{title}: voltage"),
+        "time (s)",
+        "voltage (V)",
+        &[
+            Series { label: "data".into(), x: t, y: &problem.data.voltage },
+            Series { label: "initial".into(), x: t, y: initial },
+            Series { label: "fitted".into(), x: t, y: fitted },
+        ],
+    )?;
+    let mv = |v: &[f64]| problem.residuals(v).iter().map(|r| 1e3 * r).collect::<Vec<_>>();
+    let residual = dir.join(format!("fit_residual{suffix}.svg"));
+    line_plot(
+        &residual,
+        &format!("{title}: residual (model - data)"),
+        "time (s)",
+        "residual (mV)",
+        &[Series { label: "initial".into(), x: t, y: &mv(initial) }, Series { label: "fitted".into(), x: t, y: &mv(fitted) }],
+    )?;
+    Ok(vec![voltage, residual])
+}
+
+/// A report with its notes and warnings appended.
+pub(crate) fn with_notes(mut md: String, notes: &[String], warnings: &[String]) -> String {
+    for n in notes {
+        let _ = writeln!(md, "\nNote: {n}.");
+    }
+    for w in warnings {
+        let _ = writeln!(md, "\n**Warning:** {w}.");
+    }
+    md
 }
 
 /// The cost on a grid over the first two parameters (other parameters at the optimum), drawn

@@ -7,6 +7,8 @@ pub mod constraints;
 pub mod design;
 pub mod eis;
 pub mod fit;
+mod fit_data;
+pub mod joint_fit;
 pub mod sample;
 pub mod pareto;
 pub mod sweep;

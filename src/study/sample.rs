@@ -57,6 +57,8 @@ impl FitStudy {
 pub fn run_sample(study: &FitStudy, data: Option<&Path>) -> Result<SampleOutcome, Error> {
     let (method, mut sampler_options, mut run) = study.sampler()?;
     run.progress = true;
+    // Sampling takes one experiment: fail before any work on a joint study.
+    study.problem(data)?;
     let out = crate::output::OutputDir::create(&study.output.dir, &study.inputs(data))?;
     let fitted = fit_into(study, data, out.path())?;
     let problem = study.problem(data)?;

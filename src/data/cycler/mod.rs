@@ -1,0 +1,154 @@
+//! Raw cycler exports: detection of the vendor from the header, one reader per vendor
+//! (Basytec, BioLogic, Maccor, Neware, Arbin; this crate's own CSV as `Native`), conversion
+//! to a [`Recording`] (s, A discharge positive, V, K) with the cycler's step numbers, and the
+//! split into steps ([`steps`]).
+//!
+//! Parquet files (PyProBE's processed format) are not read: the `parquet` crate would bring
+//! the Arrow stack into every build for one file type; convert them to CSV first.
+
+mod arbin;
+mod basytec;
+mod biologic;
+mod inspect;
+mod maccor;
+mod neware;
+mod steps;
+mod table;
+
+use std::path::Path;
+
+use serde::Serialize;
+
+pub use inspect::{inspect_json, inspect_text};
+pub use steps::{CV_TOLERANCE, PULSE_MAX_DURATION, Step, StepKind, step_table, steps};
+use table::{Layout, TimeKind};
+
+use super::{CsvFormat, Recording};
+use crate::error::Error;
+
+/// The vendor layout of a file.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub enum CyclerFormat {
+    /// This crate's CSV: `time_s,current_A,voltage_V[,temperature_K]`, discharge positive.
+    Native,
+    Basytec,
+    BioLogic,
+    Maccor,
+    Neware,
+    Arbin,
+}
+
+impl std::fmt::Display for CyclerFormat {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        std::fmt::Debug::fmt(self, f)
+    }
+}
+
+/// Lines read when looking for a header (BioLogic headers run to about 100 lines).
+const HEADER_SEARCH_LINES: usize = 400;
+
+type HeaderFn = fn(&[&str]) -> Option<usize>;
+type LayoutFn = fn(&[String]) -> Result<Layout, String>;
+
+/// Vendors in the order they are tried (the most specific first).
+const VENDORS: [(CyclerFormat, HeaderFn, LayoutFn); 6] = [
+    (CyclerFormat::Native, native_header, native_layout),
+    (CyclerFormat::Basytec, basytec::header, basytec::layout),
+    (CyclerFormat::BioLogic, biologic::header, biologic::layout),
+    (CyclerFormat::Arbin, arbin::header, arbin::layout),
+    (CyclerFormat::Maccor, maccor::header, maccor::layout),
+    (CyclerFormat::Neware, neware::header, neware::layout),
+];
+
+fn native_header(lines: &[&str]) -> Option<usize> {
+    let first = lines.first()?;
+    let names: Vec<&str> = first.split(',').map(str::trim).collect();
+    ["time_s", "current_A", "voltage_V"].iter().all(|n| names.contains(n)).then_some(0)
+}
+
+fn native_layout(headers: &[String]) -> Result<Layout, String> {
+    let find = |name: &str| {
+        headers.iter().position(|h| h == name).ok_or_else(|| format!("missing column `{name}`"))
+    };
+    Ok(Layout {
+        time: (find("time_s")?, TimeKind::Seconds(1.0)),
+        current: (find("current_A")?, 1.0),
+        state: None,
+        voltage: (find("voltage_V")?, 1.0),
+        temperature: find("temperature_K").ok().map(|k| (k, 0.0)),
+        step: None,
+        drop_repeats: false,
+    })
+}
+
+/// A cycler file read into SI units.
+#[derive(Clone, Debug)]
+pub struct CyclerData {
+    pub format: CyclerFormat,
+    /// Time (s) from the first row, current (A, discharge positive), voltage (V),
+    /// temperature (K).
+    pub recording: Recording,
+    /// The cycler's step number of every row, when the file has one.
+    pub step: Option<Vec<i64>>,
+    /// Time of the first row in the file's own clock (s; seconds since 1970 for calendar
+    /// times).
+    pub time_offset: f64,
+    /// Rows dropped for repeating the previous row's time and current.
+    pub dropped_repeats: usize,
+}
+
+/// The vendor of `text` by its header, if known.
+///
+/// ```
+/// use cellstudio::data::cycler::{CyclerFormat, detect};
+/// assert_eq!(detect("Rec,Cycle C,Step,Test Time (sec),Current,Voltage\n"), Some(CyclerFormat::Maccor));
+/// assert_eq!(detect("hello\n"), None);
+/// ```
+pub fn detect(text: &str) -> Option<CyclerFormat> {
+    let lines: Vec<&str> = text.lines().take(HEADER_SEARCH_LINES).collect();
+    VENDORS.iter().find(|(_, header, _)| header(&lines).is_some()).map(|v| v.0)
+}
+
+/// Reads a cycler export given as text; `name` labels errors (the file name). Errors name
+/// the vendor, line, column and value; no input panics.
+pub fn read_str(name: &str, text: &str) -> Result<CyclerData, Error> {
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    let parse_err = |message: String| Error::Parse { path: name.to_string(), message };
+    let lines: Vec<&str> = text.lines().collect();
+    let head = &lines[..lines.len().min(HEADER_SEARCH_LINES)];
+    let (format, header, layout) = VENDORS
+        .iter()
+        .find_map(|(f, header, layout)| header(head).map(|k| (*f, k, layout)))
+        .ok_or_else(|| {
+            parse_err(format!(
+                "not a known cycler export: no Basytec, BioLogic, Maccor, Neware, Arbin or time_s,current_A,voltage_V header in the first {HEADER_SEARCH_LINES} lines (first line: `{}`)",
+                lines.first().map(|l| l.chars().take(80).collect::<String>()).unwrap_or_default()
+            ))
+        })?;
+    let table = table::table(&lines, header, 0);
+    let layout = layout(&table.headers).map_err(|m| parse_err(format!("{format} export: {m}")))?;
+    let rows = table::read_rows(&table, &layout).map_err(|m| parse_err(format!("{format} export: {m}")))?;
+    Ok(CyclerData { format, recording: rows.recording, step: rows.step, time_offset: rows.time_offset, dropped_repeats: rows.dropped_repeats })
+}
+
+/// Reads a cycler export (any encoding; bytes that are not UTF-8, as Latin-1 degree signs,
+/// are replaced).
+pub fn read(path: &Path) -> Result<CyclerData, Error> {
+    let bytes = std::fs::read(path).map_err(Error::io(path))?;
+    read_str(&path.display().to_string(), &String::from_utf8_lossy(&bytes))
+}
+
+/// The recording in `path` for a fit or a diagnosis: read with `format` when it is not the
+/// default (the user said how to read the file) or when the file is this crate's CSV;
+/// otherwise, when the header is a known cycler's, by that cycler's reader.
+pub fn read_recording(path: &Path, format: &CsvFormat) -> Result<Recording, Error> {
+    if *format != CsvFormat::default() {
+        return Recording::from_csv_with(path, format);
+    }
+    let bytes = std::fs::read(path).map_err(Error::io(path))?;
+    let text = String::from_utf8_lossy(&bytes);
+    match detect(text.strip_prefix('\u{feff}').unwrap_or(&text)) {
+        None | Some(CyclerFormat::Native) => Recording::from_csv_with(path, format),
+        Some(_) => Ok(read_str(&path.display().to_string(), &text)?.recording),
+    }
+}

@@ -1,0 +1,99 @@
+//! The fit of a study with several `[[data]]` entries: the experiments' problems joined
+//! ([`crate::problem::joint`]), fitted together, and reported with each experiment's RMSE,
+//! its fit and residual plots, and the shared and per-experiment parameters with standard
+//! errors.
+
+use std::fmt::Write as _;
+use std::path::Path;
+
+use super::fit::{FitOutcome, FitStudy, fit_plots, parameter_table, with_notes};
+use super::write_output;
+use crate::error::Error;
+use crate::problem::joint::{JointFit, JointProblem, fit_joint};
+
+/// The study's experiments joined into one problem, with the notes of each recording's
+/// checks against the cell (a likely unit error is an error before any fit).
+pub fn joint_problem(study: &FitStudy, data: Option<&Path>) -> Result<(JointProblem, Vec<String>), Error> {
+    let mut experiments = Vec::new();
+    let mut notes = Vec::new();
+    for (k, d) in study.data.iter().enumerate() {
+        let (problem, own, checks) = study.experiment_problem(k, data)?;
+        notes.extend(checks.into_iter().map(|n| format!("{}: {n}", d.label(k))));
+        experiments.push((d.label(k), problem, d.weight, own));
+    }
+    Ok((JointProblem::new(study.parameters.clone(), experiments)?, notes))
+}
+
+/// Fits the experiments jointly and writes `report.md`, `fit.json` and, per experiment,
+/// `fit_voltage_<name>.svg` and `fit_residual_<name>.svg` into `dir`.
+pub(crate) fn joint_fit_into(study: &FitStudy, data: Option<&Path>, dir: &Path) -> Result<FitOutcome, Error> {
+    let (problem, checks) = joint_problem(study, data)?;
+    let (method, options) = study.optimiser()?;
+    let fit = fit_joint(&problem, study.cost, &method, options)?;
+    let notes: Vec<String> = study.noise_note(data).into_iter().chain(checks).collect();
+    let names: Vec<String> = problem.parameters.iter().map(|p| p.path.clone()).collect();
+    let lower: Vec<f64> = problem.parameters.iter().map(|p| p.lower).collect();
+    let upper: Vec<f64> = problem.parameters.iter().map(|p| p.upper).collect();
+    let r = &fit.result;
+    let mut warnings = super::at_bound_warnings("the joint fit", &names, &r.x, &lower, &upper);
+    let at_bound: Vec<String> = super::on_bounds(&r.x, &lower, &upper).into_iter().map(|(k, _)| names[k].clone()).collect();
+    warnings.extend(super::truncation_warning("the joint fit", &r.stop, r.iterations, r.evaluations));
+    let mut files = Vec::new();
+    for (e, ef) in problem.experiments.iter().zip(&fit.experiments) {
+        let title = format!("{}: {}", study.name, ef.name);
+        files.extend(fit_plots(dir, &title, &format!("_{}", ef.name), &e.problem, &ef.initial_voltage, &ef.voltage)?);
+    }
+    write_output(dir, "fit.json", serde_json::to_string_pretty(&fit).expect("serialisable"), &mut files)?;
+    let md = report(study, data, &problem, &fit, &method);
+    write_output(dir, "report.md", with_notes(md, &notes, &warnings), &mut files)?;
+    let initial_rmse = combined_initial_rmse(&fit);
+    Ok(FitOutcome { result: fit.result, initial_rmse, files, notes, warnings, at_bound, experiments: fit.experiments })
+}
+
+/// The RMS residual (V) at the initial parameters over every experiment's points, each
+/// weighted by its experiment's weight.
+fn combined_initial_rmse(fit: &JointFit) -> f64 {
+    let (sum, weight) = fit.experiments.iter().fold((0.0, 0.0), |(s, w), e| {
+        let n = e.weight * e.points as f64;
+        (s + n * e.initial_rmse * e.initial_rmse, w + n)
+    });
+    (sum / weight).sqrt()
+}
+
+fn report(study: &FitStudy, data: Option<&Path>, problem: &JointProblem, fit: &JointFit, method: &str) -> String {
+    let r = &fit.result;
+    let mut s = String::new();
+    let _ = writeln!(s, "# {}\n", study.name);
+    let _ = writeln!(
+        s,
+        "Fitted {} parameter(s) of the {} model jointly to {} experiments by {} with the {} optimiser: \
+         weighted RMSE {:.3} mV (initial {:.3} mV), {} evaluations and {} gradients in {:.2} s, stop: {:?}.\n",
+        problem.dim(),
+        study.model.kind,
+        problem.experiments.len(),
+        study.cost.name(),
+        method,
+        r.rmse * 1e3,
+        combined_initial_rmse(fit) * 1e3,
+        r.evaluations,
+        r.gradient_evaluations,
+        r.seconds,
+        r.stop
+    );
+    s.push_str("| experiment | file | weight | points | initial RMSE (mV) | fitted RMSE (mV) |\n|---|---|---|---|---|---|\n");
+    for (k, e) in fit.experiments.iter().enumerate() {
+        let _ = writeln!(
+            s,
+            "| {} | `{}` | {} | {} | {:.3} | {:.3} |",
+            e.name,
+            data.filter(|_| k == 0).unwrap_or(&study.data[k].file).display(),
+            e.weight,
+            e.points,
+            e.initial_rmse * 1e3,
+            e.rmse * 1e3
+        );
+    }
+    s.push('\n');
+    s.push_str(&parameter_table(r));
+    s
+}
