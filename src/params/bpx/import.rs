@@ -46,6 +46,8 @@ struct UserDefined {
     soc: Option<Sourced>,
 }
 
+/// The set being read (Chen 2020 until a key says otherwise) and the bookkeeping of the
+/// import's three lists.
 struct Importer {
     p: ParameterSet,
     /// Our field path -> the BPX key(s) it came from.
@@ -67,6 +69,7 @@ impl Importer {
         }
     }
 
+    /// Sets our field `path` and remembers its BPX `source`.
     fn set(&mut self, path: &str, value: f64, source: impl Into<String>) -> Result<(), Error> {
         self.p.set(path, value)?;
         self.origin.insert(path.into(), source.into());
@@ -78,6 +81,15 @@ impl Importer {
         let v = sec.num(key, check)?;
         self.set(path, v, sec.key_path(key))?;
         Ok(v)
+    }
+
+    /// Reads an optional non-negative number into `path`; absent, 0 (the BPX meaning, and the
+    /// field is listed as defaulted).
+    fn copy_or_zero(&mut self, sec: &mut Section, key: &str, path: &str) -> Result<(), Error> {
+        match sec.opt_num(key, Check::NonNegative)? {
+            Some(v) => self.set(path, v, sec.key_path(key)),
+            None => self.p.set(path, 0.0),
+        }
     }
 
     /// The whole import, in the order that decides which error a faulty document reports.
@@ -342,11 +354,7 @@ impl Importer {
         let path = sec.key_path(keys::DIFFUSIVITY);
         let d = sec.func(keys::DIFFUSIVITY)?.to_scalar(&path, (lo, hi), true, &mut self.approximated)?;
         self.set(&f("diffusivity"), Check::Positive.apply(&path, d)?, path)?;
-        if let Some(ea) = sec.opt_num(keys::DIFFUSIVITY_EA, Check::NonNegative)? {
-            self.set(&f("diffusivity_activation_energy"), ea, sec.key_path(keys::DIFFUSIVITY_EA))?;
-        } else {
-            self.p.set(&f("diffusivity_activation_energy"), 0.0)?;
-        }
+        self.copy_or_zero(sec, keys::DIFFUSIVITY_EA, &f("diffusivity_activation_energy"))?;
 
         let path = sec.key_path(keys::OCP);
         let ocp = sec.func(keys::OCP)?.to_function(
@@ -355,11 +363,7 @@ impl Importer {
             Tolerance::Absolute(OCP_TOLERANCE),
             &mut self.approximated,
         )?;
-        if side == "negative" {
-            self.p.negative.ocp = ocp
-        } else {
-            self.p.positive.ocp = ocp
-        }
+        if side == "negative" { self.p.negative.ocp = ocp } else { self.p.positive.ocp = ocp }
         self.origin.insert(f("ocp"), path);
         match sec.opt_func(keys::ENTROPIC)? {
             Some(e) => {
@@ -372,11 +376,7 @@ impl Importer {
 
         let k = sec.num(keys::RATE, Check::Positive)?;
         self.set(&f("rate_constant"), FARADAY * k / (c_max * ce0.sqrt()), sec.key_path(keys::RATE))?;
-        if let Some(ea) = sec.opt_num(keys::RATE_EA, Check::NonNegative)? {
-            self.set(&f("rate_activation_energy"), ea, sec.key_path(keys::RATE_EA))?;
-        } else {
-            self.p.set(&f("rate_activation_energy"), 0.0)?;
-        }
+        self.copy_or_zero(sec, keys::RATE_EA, &f("rate_activation_energy"))?;
         Ok((lo, hi))
     }
 
@@ -417,11 +417,7 @@ impl Importer {
 
     /// Heat capacities: user-defined per layer, else the lumped value; scaled so that the
     /// stack mean equals the lumped value when there is one.
-    fn heat_capacities(
-        &mut self,
-        values: &BTreeMap<&'static str, Sourced>,
-        lumped: Option<&Sourced>,
-    ) -> Result<(), Error> {
+    fn heat_capacities(&mut self, values: &BTreeMap<&'static str, Sourced>, lumped: Option<&Sourced>) -> Result<(), Error> {
         for (_, field) in HEAT_LAYERS {
             if let Some((v, src)) = values.get(field) {
                 self.set(field, *v, src.clone())?;
