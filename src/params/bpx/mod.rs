@@ -1,5 +1,5 @@
 //! BPX (Battery Parameter eXchange, <https://github.com/FaradayInstitution/BPX>) import and
-//! export of a [`ParameterSet`].
+//! export of a [`ParameterSet`](crate::params::ParameterSet).
 //!
 //! Export writes the BPX v0.5 layout (`Header`, `Parameterisation` with `Cell`,
 //! `Electrolyte`, `Negative electrode`, `Positive electrode`, `Separator`, `User-defined`).
