@@ -19,7 +19,8 @@ pub mod protocol;
 pub mod report;
 pub mod sample;
 pub mod simulation;
-pub mod study;
 pub mod solver;
+pub mod stats;
+pub mod study;
 
 pub use error::{Error, Result};

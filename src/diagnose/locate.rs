@@ -244,7 +244,7 @@ pub fn analyse(rec: &Recording, features: &Features, residual: &[f64], nominal_c
         time_of_max: time.get(k_max).copied().unwrap_or(0.0),
         noise,
         structure_ratio,
-        lag1_autocorrelation: super::stats::autocorrelation(&r, 1)[0],
+        lag1_autocorrelation: crate::stats::autocorrelation(&r, 1)[0],
         ljung_box: lb,
         runs,
         structured,

@@ -9,7 +9,8 @@ use crate::data::Recording;
 use crate::error::Error;
 use crate::params::ParameterSet;
 use crate::problem::fitting::{FitParameter, FittingProblem, ModelSpec};
-use crate::problem::least_squares::{LeastSquaresFit, LmSettings, lag1, levenberg_marquardt};
+use crate::problem::least_squares::{LeastSquaresFit, LmSettings, levenberg_marquardt};
+use crate::stats::lag1;
 
 /// Which points train and which validate.
 #[derive(Clone, Debug)]

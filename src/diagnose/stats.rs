@@ -96,23 +96,8 @@ pub fn chi2_sf(x: f64, dof: f64) -> f64 {
     gamma_q(0.5 * dof, 0.5 * x)
 }
 
-fn mean(x: &[f64]) -> f64 {
-    x.iter().sum::<f64>() / x.len().max(1) as f64
-}
-
-/// Sample autocorrelation of `x` at lags `1..=max_lag`.
-pub fn autocorrelation(x: &[f64], max_lag: usize) -> Vec<f64> {
-    let m = mean(x);
-    let var: f64 = x.iter().map(|v| (v - m) * (v - m)).sum();
-    (1..=max_lag)
-        .map(|lag| {
-            if lag >= x.len() || var == 0.0 {
-                return 0.0;
-            }
-            x.iter().zip(&x[lag..]).map(|(a, b)| (a - m) * (b - m)).sum::<f64>() / var
-        })
-        .collect()
-}
+use crate::stats::autocorrelation;
+use crate::stats::mean;
 
 /// Result of a whiteness test.
 #[derive(Clone, Copy, Debug, Serialize)]

@@ -18,6 +18,7 @@ use serde::Serialize;
 use super::fitting::{FitParameter, FittingProblem};
 use crate::error::Error;
 use crate::optim::linalg::sym_eigen;
+use crate::stats::lag1;
 
 /// Settings of a least-squares fit.
 #[derive(Clone, Copy, Debug)]
@@ -270,16 +271,3 @@ fn inverse_and_log_det(a: &[f64], k: usize) -> Result<(Vec<f64>, f64), Error> {
     Ok((inv, ln_det))
 }
 
-/// Lag-1 autocorrelation of the residual over consecutive weighted points (-).
-pub fn lag1(r: &[f64], weights: &[f64]) -> f64 {
-    let v: Vec<f64> = r.iter().zip(weights).filter(|(_, w)| **w > 0.0).map(|(r, _)| *r).collect();
-    if v.len() < 3 {
-        return 0.0;
-    }
-    let mean = v.iter().sum::<f64>() / v.len() as f64;
-    let var: f64 = v.iter().map(|x| (x - mean).powi(2)).sum();
-    if var <= 0.0 {
-        return 0.0;
-    }
-    v.windows(2).map(|w| (w[0] - mean) * (w[1] - mean)).sum::<f64>() / var
-}

@@ -25,9 +25,7 @@ fn split(chains: &[Vec<f64>]) -> Vec<&[f64]> {
         .collect()
 }
 
-fn mean(x: &[f64]) -> f64 {
-    x.iter().sum::<f64>() / x.len() as f64
-}
+use crate::stats::mean;
 
 /// Unbiased sample variance (0 for fewer than two values).
 fn variance(x: &[f64]) -> f64 {

@@ -1,0 +1,49 @@
+//! Sample statistics shared by the layers above (fitting, sampling, diagnosis): means and
+//! autocorrelations of series such as residuals and chains.
+
+/// Arithmetic mean (0 for an empty slice).
+pub fn mean(x: &[f64]) -> f64 {
+    x.iter().sum::<f64>() / x.len().max(1) as f64
+}
+
+/// Sample autocorrelation of `x` at lags `1..=max_lag` (0 where it is undefined: a lag as long
+/// as the series, or a constant series).
+pub fn autocorrelation(x: &[f64], max_lag: usize) -> Vec<f64> {
+    let m = mean(x);
+    let var: f64 = x.iter().map(|v| (v - m) * (v - m)).sum();
+    (1..=max_lag)
+        .map(|lag| {
+            if lag >= x.len() || var == 0.0 {
+                return 0.0;
+            }
+            x.iter().zip(&x[lag..]).map(|(a, b)| (a - m) * (b - m)).sum::<f64>() / var
+        })
+        .collect()
+}
+
+/// Lag-1 autocorrelation of the points of `r` with positive weight, taken in order (0 for
+/// fewer than three of them).
+pub fn lag1(r: &[f64], weights: &[f64]) -> f64 {
+    let kept: Vec<f64> = r.iter().zip(weights).filter(|(_, w)| **w > 0.0).map(|(r, _)| *r).collect();
+    if kept.len() < 3 {
+        return 0.0;
+    }
+    autocorrelation(&kept, 1)[0]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn autocorrelation_of_an_alternating_and_a_constant_series() {
+        let x = [1.0, -1.0, 1.0, -1.0, 1.0, -1.0];
+        let rho = autocorrelation(&x, 2);
+        // sum of (x_k x_k+1) over 5 pairs / sum of x_k^2 over 6 points.
+        assert!((rho[0] + 5.0 / 6.0).abs() < 1e-15 && (rho[1] - 4.0 / 6.0).abs() < 1e-15, "{rho:?}");
+        assert_eq!(autocorrelation(&[2.0; 5], 1), vec![0.0]);
+        // Zero-weight points are left out before the lag is taken.
+        // [1, -1, 1, -1]: three products of -1 over a sum of squares of 4.
+        assert!((lag1(&[1.0, 9.0, -1.0, 1.0, -1.0], &[1.0, 0.0, 1.0, 1.0, 1.0]) + 0.75).abs() < 1e-15);
+    }
+}
