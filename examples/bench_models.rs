@@ -43,11 +43,14 @@ fn main() {
             let t = Instant::now();
             b.build(&p).unwrap();
             builds.push(t.elapsed().as_secs_f64());
+            // Re-use: a non-geometric change (D_n 1 % up) updates the built model in place.
             let mut q = p.clone();
-            q.negative.diffusivity *= 1.0 + 0.01 * k as f64;
+            q.negative.diffusivity *= 1.01;
             let t = Instant::now();
-            let built = b.build(&q).unwrap();
+            b.build(&q).unwrap();
             reuses.push(t.elapsed().as_secs_f64());
+            // Every repeat solves the same problem: back to the nominal set (untimed).
+            let built = b.build(&p).unwrap();
             n = built.model.len();
             let t = Instant::now();
             let sol = simulate(built.model.as_ref(), &mut built.workspace, &protocol, &opts, None).unwrap();
