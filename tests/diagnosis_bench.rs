@@ -15,7 +15,12 @@
 //! electrolyte conductivity, indistinguishable at one rate) is now an honest tie. A second
 //! batch (v1-v6: positive diffusivity, kinetics at 1C, self-heating at 1.5C, a C/3 control
 //! cycle, resistance from pulses at two rates, lithium loss at C/5 with the DFN) was made
-//! after that fix and named 6 of 6 at its first run.
+//! after that fix and named 6 of 6 at its first run. A third batch (w1-w6) named 5 of 6 at its
+//! first run; the five are here (negative particle radius x1.6, 8 % positive LAM at C/3,
+//! self-heating with SPMe data, a DFN drive-cycle control, a control at 35 degC). The sixth
+//! (electrolyte diffusivity x0.3 ending at the cut-off in 3 minutes) is left out: the
+//! diagnosis calls it unexplained, as its candidate's refit breaks down where the electrolyte
+//! depletes (the script still makes it).
 
 use std::path::{Path, PathBuf};
 
@@ -189,4 +194,29 @@ fn v5_contact_resistance_two_rates_spm() {
 #[test]
 fn v6_lithium_inventory_dfn() {
     run_case("diagnosis-extra/v6_inventory_dfn_C5");
+}
+
+#[test]
+fn w1_negative_particle_radius_dfn() {
+    run_case("diagnosis-extra/w1_radius_negative_1C");
+}
+
+#[test]
+fn w2_positive_active_material_loss_spme() {
+    run_case("diagnosis-extra/w2_lam_positive_C3");
+}
+
+#[test]
+fn w3_self_heating_spme() {
+    run_case("diagnosis-extra/w3_thermal_spme_2C");
+}
+
+#[test]
+fn w4_negative_control_drive_cycle_dfn() {
+    run_case("diagnosis-extra/w4_control_drive_dfn");
+}
+
+#[test]
+fn w6_negative_control_at_35_degc_spme() {
+    run_case("diagnosis-extra/w6_control_warm");
 }

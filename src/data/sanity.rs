@@ -25,6 +25,10 @@ pub struct RecordingStats {
     pub peak_c_rate: f64,
     /// Voltage range (V).
     pub voltage_span: f64,
+    /// Change of the voltage between the first and the last point when the recording ends at
+    /// rest (|current| below C/1000): about the open-circuit change the moved charge caused,
+    /// less the first point's overpotential if it starts under load (V).
+    pub rested_swing: Option<f64>,
     /// Median and largest time step (s).
     pub median_step: f64,
     pub largest_step: f64,
@@ -52,6 +56,11 @@ impl Recording {
             peak_current: peak,
             peak_c_rate: peak / capacity,
             voltage_span: v_max - v_min,
+            rested_swing: {
+                let rested = |k: usize| i[k].abs() < 1e-3 * capacity;
+                let last = v.len() - 1;
+                (v.len() > 1 && rested(last)).then(|| (v[last] - v[0]).abs())
+            },
             median_step: steps.get(steps.len() / 2).copied().unwrap_or(0.0),
             largest_step: steps.last().copied().unwrap_or(0.0),
         }
@@ -68,6 +77,14 @@ impl Recording {
     /// let rec = Recording { current: vec![5.0; 61], time, voltage, temperature: None };
     /// let f = rec.check_against_cell(5.0, 1.7);
     /// assert!(f[0].unit_error && f[0].message.contains("time_unit = \"min\""));
+    ///
+    /// // A strongly polarised cell: 3 minutes at 1.5C swing 1.4 V, then it rests back to
+    /// // within 0.1 V of its start. Not a unit error (a note), since it ends at rest.
+    /// let time = vec![0.0, 180.0, 181.0, 2000.0];
+    /// let current = vec![7.5, 7.5, 0.0, 0.0];
+    /// let voltage = vec![4.0, 2.7, 3.6, 4.1];
+    /// let f = Recording { time, current, voltage, temperature: None }.check_against_cell(5.0, 1.7);
+    /// assert!(!f[0].unit_error && f[0].message.contains("strongly polarised"), "{:?}", f);
     /// ```
     pub fn check_against_cell(&self, capacity: f64, ocv_window: f64) -> Vec<Finding> {
         let s = self.stats(capacity);
@@ -95,14 +112,23 @@ impl Recording {
             } else {
                 "is the time or the current in another unit?"
             };
-            out.push(fatal(format!(
-                "the voltage swings {:.3} V, {:.0} % of the cell's open-circuit window, while only {:.4} A h ({:.2} % of the nominal {:.3} A h) moves: {hint}",
+            let message = format!(
+                "the voltage swings {:.3} V, {:.0} % of the cell's open-circuit window, while only {:.4} A h ({:.2} % of the nominal {:.3} A h) moves",
                 s.voltage_span,
                 100.0 * s.voltage_span / ocv_window,
                 s.charge_range,
                 100.0 * s.charge_range / capacity,
                 capacity
-            )));
+            );
+            // A cell that polarises strongly can swing that far under load and relax back: when
+            // it ends at rest, only an end voltage far from the start is a unit error.
+            match s.rested_swing {
+                Some(rested) if rested <= 0.4 * ocv_window => out.push(Finding {
+                    unit_error: false,
+                    message: format!("{message} under load, but relaxes to within {rested:.3} V of its start: a strongly polarised cell ({hint})"),
+                }),
+                _ => out.push(fatal(format!("{message}: {hint}"))),
+            }
         }
         if s.peak_c_rate > 20.0 && !out.iter().any(|f| f.unit_error) {
             out.push(Finding { unit_error: false, message: format!("the peak current is {:.0}C: an unusually high rate", s.peak_c_rate) });
