@@ -15,7 +15,7 @@ use crate::error::Error;
 use crate::params::ParameterSet;
 
 /// Number of finite volumes in each domain.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct MeshSizes {
     /// Negative electrode, through-thickness.
@@ -54,8 +54,9 @@ impl MeshSizes {
     }
 }
 
-/// The geometric parameters a discretisation depends on (m, m^2), plus the mesh sizes.
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// The geometric parameters a discretisation depends on (m, m^2), plus the mesh sizes;
+/// ordered field by field (sweeps group candidates by geometry).
+#[derive(Clone, Copy, Debug, PartialEq, PartialOrd)]
 pub struct Geometry {
     pub negative_thickness: f64,
     pub separator_thickness: f64,

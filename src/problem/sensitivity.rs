@@ -44,9 +44,13 @@ impl<'a> Sensitivities<'a> {
         self.base.len()
     }
 
-    /// Directional-difference step for `J s` so that `ε s` is `sqrt(eps)` of the state scale.
-    fn direction_step(&self, s: &[f64]) -> Option<f64> {
-        let wrms = (s.iter().zip(self.base.scale()).map(|(v, c)| (v / c).powi(2)).sum::<f64>() / s.len() as f64).sqrt();
+    /// Directional-difference step for `J s` so that `ε s` is `sqrt(eps)` of the state scale,
+    /// measured over the states `rows` (all of them for the right-hand side, the output states
+    /// for the voltage).
+    fn direction_step(&self, s: &[f64], rows: impl ExactSizeIterator<Item = usize>) -> Option<f64> {
+        let n = rows.len().max(1) as f64;
+        let scale = self.base.scale();
+        let wrms = (rows.map(|j| (s[j] / scale[j]).powi(2)).sum::<f64>() / n).sqrt();
         (wrms > 0.0).then(|| f64::EPSILON.sqrt() / wrms)
     }
 
@@ -71,13 +75,8 @@ impl<'a> Sensitivities<'a> {
         (0..self.perturbed.len())
             .map(|k| {
                 let s = &z[(k + 1) * n..(k + 2) * n];
-                // Directional difference along s, with the step of `direction_step` taken over
-                // the states the voltage reads.
-                let wrms = (self.outputs.iter().map(|&j| (s[j] / self.base.scale()[j]).powi(2)).sum::<f64>()
-                    / self.outputs.len().max(1) as f64)
-                    .sqrt();
-                let direct = if wrms > 0.0 {
-                    let eps = f64::EPSILON.sqrt() / wrms;
+                // Directional difference along s, over the states the voltage reads.
+                let direct = if let Some(eps) = self.direction_step(s, self.outputs.iter().copied()) {
                     for &j in &self.outputs {
                         buf[j] = y[j] + eps * s[j];
                     }
@@ -145,7 +144,7 @@ impl Model for Sensitivities<'_> {
             for j in 0..n {
                 o[j] = f * (fb[j] - f0[j]);
             }
-            if let Some(eps) = self.direction_step(s) {
+            if let Some(eps) = self.direction_step(s, 0..s.len()) {
                 for j in 0..n {
                     shifted[j] = y[j] + eps * s[j];
                 }

@@ -5,6 +5,7 @@ use rayon::prelude::*;
 use serde::Serialize;
 
 use super::design::{DesignMetrics, DesignProblem};
+use crate::geometry::Geometry;
 
 /// One candidate; `metrics` is `None` when its simulation failed (with the reason) or it
 /// was not evaluated (infeasible).
@@ -131,32 +132,14 @@ pub fn evaluate_all(problem: &DesignProblem, candidates: &[Vec<f64>]) -> Vec<Swe
 /// cut to at most `ceil(n / min_tasks)` candidates so that there are at least about
 /// `min_tasks` of them.
 fn geometry_runs(problem: &DesignProblem, candidates: &[Vec<f64>], min_tasks: usize) -> Vec<Vec<usize>> {
-    let key = |x: &[f64]| -> Vec<f64> {
-        problem.geometry(x).map_or_else(Vec::new, |g| {
-            let s = g.sizes;
-            vec![
-                g.negative_thickness,
-                g.separator_thickness,
-                g.positive_thickness,
-                g.negative_radius,
-                g.positive_radius,
-                g.area,
-                s.x_n as f64,
-                s.x_s as f64,
-                s.x_p as f64,
-                s.r_n as f64,
-                s.r_p as f64,
-            ]
-        })
-    };
-    let keys: Vec<Vec<f64>> = candidates.par_iter().map(|x| key(x)).collect();
+    let keys: Vec<Option<Geometry>> = candidates.par_iter().map(|x| problem.geometry(x)).collect();
     let mut order: Vec<usize> = (0..candidates.len()).collect();
-    order.sort_by(|&a, &b| keys[a].iter().zip(&keys[b]).map(|(u, v)| u.total_cmp(v)).find(|o| o.is_ne()).unwrap_or(keys[a].len().cmp(&keys[b].len())));
+    order.sort_by(|&a, &b| keys[a].partial_cmp(&keys[b]).unwrap_or(std::cmp::Ordering::Equal));
     let longest = candidates.len().div_ceil(min_tasks.max(1)).max(1);
     let mut runs: Vec<Vec<usize>> = Vec::new();
     for k in order {
         match runs.last_mut() {
-            Some(run) if run.len() < longest && !keys[k].is_empty() && keys[run[0]] == keys[k] => run.push(k),
+            Some(run) if run.len() < longest && keys[k].is_some() && keys[run[0]] == keys[k] => run.push(k),
             _ => runs.push(vec![k]),
         }
     }
