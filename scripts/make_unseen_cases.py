@@ -5,7 +5,7 @@ diagnosis was never developed on: a check that the method is general, not fitted
 time marks a current step).
 
     python -m venv .venv && .venv/bin/pip install pybamm==26.10.1.1
-    .venv/bin/python scripts/make_unseen_cases.py out/unseen-cases
+    .venv/bin/python scripts/make_unseen_cases.py out/unseen-cases [batches, e.g. x; all by default]
     BIN=target/release/cellstudio ../shared/tools/diagnosis-bench out/unseen-cases
 """
 
@@ -60,9 +60,24 @@ def write_case(root, name, model, params, steps, truth, initial_soc=None, temper
     print(f"{name}: {len(t)} points, {t[-1]:.0f} s")
 
 
-def main(root):
-    lion = pybamm.lithium_ion
-    discharge = lambda rate: [f"Discharge at {rate} until 2.7 V", "Rest for 30 minutes"]
+lion = pybamm.lithium_ion
+
+
+def discharge(rate):
+    return [f"Discharge at {rate} until 2.7 V", "Rest for 30 minutes"]
+
+
+def drive_cycle(seed, steps, low, high, seconds):
+    """A random current drive: `steps` steps of `seconds` at C-rates drawn from [low, high]."""
+    rng = np.random.default_rng(seed)
+    drive = []
+    for _ in range(steps):
+        c = float(rng.uniform(low, high))
+        drive.append(f"{'Discharge' if c >= 0 else 'Charge'} at {abs(c):.2f}C for {seconds} seconds" if abs(c) > 0.05 else f"Rest for {seconds} seconds")
+    return drive
+
+
+def batch_u(root):
 
     p = scaled(chen(), "Negative particle diffusivity [m2.s-1]", 0.2)
     write_case(root, "u1_diffusivity_negative_C2", lion.DFN(), p, discharge("C/2"),
@@ -98,8 +113,11 @@ def main(root):
                {"effect": "lithium_inventory_loss", "candidate_model": "spme", "accept": ["inventory", "stoichiometr", "capacity"],
                 "note": "8 % less lithium in the negative electrode, C/2 GITT"}, seed=6)
 
-    # Second batch, made after the first had been judged and the selection fixed (6/6 at the
-    # first run).
+
+
+def batch_v(root):
+    """Second batch, made after the first had been judged and the selection fixed (6/6 at the
+    first run)."""
     p = scaled(chen(), "Positive particle diffusivity [m2.s-1]", 0.3)
     write_case(root, "v1_diffusivity_positive_1C", lion.DFN(), p, discharge("1C"), {"effect": "solid_diffusivity", "candidate_model": "dfn", "accept": ["diffusiv"], "note": "positive particle diffusivity x0.3"}, seed=11)
     p = chen()
@@ -114,21 +132,20 @@ def main(root):
     p = scaled(chen(), "Initial concentration in negative electrode [mol.m-3]", 0.95)
     write_case(root, "v6_inventory_dfn_C5", lion.DFN(), p, discharge("C/5"), {"effect": "lithium_inventory_loss", "candidate_model": "dfn", "accept": ["inventory", "stoichiometr", "capacity"], "note": "5 % less negative lithium, C/5"}, seed=16)
 
-    # Third batch, made at the end of the session that fixed the selection; its first run named
-    # 5 of 6 (w5, electrolyte diffusivity x0.3 at 1.5C, ends at the cut-off after 3 minutes:
-    # first refused as a unit error, then "unexplained" since the candidate's refit breaks
-    # down where the electrolyte depletes).
+
+
+def batch_w(root):
+    """Third batch, made at the end of the session that fixed the selection; its first run named
+    5 of 6 (w5, electrolyte diffusivity x0.3 at 1.5C, ends at the cut-off after 3 minutes:
+    first refused as a unit error, then "unexplained" since the candidate's refit breaks
+    down where the electrolyte depletes)."""
     p = scaled(chen(), "Negative particle radius [m]", 1.6)
     write_case(root, "w1_radius_negative_1C", lion.DFN(), p, discharge("1C"), {"effect": "solid_diffusivity", "candidate_model": "dfn", "accept": ["diffusiv", "particle"], "note": "negative particle radius x1.6 (diffusion length)"}, seed=21)
     p = scaled(chen(), "Positive electrode active material volume fraction", 0.92)
     write_case(root, "w2_lam_positive_C3", lion.SPMe(), p, discharge("C/3"), {"effect": "active_material_loss", "candidate_model": "spme", "accept": ["active material", "capacity", "stoichiometr"], "note": "8 % positive LAM at C/3"}, seed=22)
     p = chen(); p.update({"Total heat transfer coefficient [W.m-2.K-1]": 50.0})
     write_case(root, "w3_thermal_spme_2C", lion.SPMe(options={"thermal": "lumped"}), p, discharge("2C"), {"effect": "thermal", "candidate_model": "spme", "accept": ["thermal", "heat"], "note": "lumped self-heating h = 50, 2C, SPMe data"}, temperature=True, seed=23)
-    rng = np.random.default_rng(24)
-    drive = []
-    for k in range(40):
-        c = float(rng.uniform(-1.0, 2.0))
-        drive.append(f"{'Discharge' if c >= 0 else 'Charge'} at {abs(c):.2f}C for 20 seconds" if abs(c) > 0.05 else "Rest for 20 seconds")
+    drive = drive_cycle(24, 40, -1.0, 2.0, 20)
     write_case(root, "w4_control_drive_dfn", lion.DFN(), chen(), drive, {"effect": "none", "candidate_model": "dfn", "accept": ["no missing"], "note": "negative control: DFN drive cycle from 60 % SOC"}, initial_soc=0.6, seed=24)
     p = scaled(chen(), "Electrolyte diffusivity [m2.s-1]", 0.3)
     write_case(root, "w5_electrolyte_diffusivity_1p5C", lion.DFN(), p, discharge("1.5C"), {"effect": "electrolyte_transport", "candidate_model": "dfn", "accept": ["electrolyte"], "note": "electrolyte diffusivity x0.3, 1.5C"}, seed=25)
@@ -136,5 +153,44 @@ def main(root):
     write_case(root, "w6_control_warm", lion.SPMe(), p, discharge("1C"), {"effect": "none", "candidate_model": "spme", "accept": ["no missing"], "ambient_temperature_K": 308.15, "note": "negative control at 35 degC, temperature recorded"}, temperature=True, seed=26)
 
 
+
+def batch_x(root):
+    """Fourth batch, made at the start of the next session before any change to the diagnosis:
+    protocols the others lack (charge with a voltage hold, GITT on a diffusivity, a drive cycle
+    on a resistance, a cold cell heating up, mixed charge/discharge pulses)."""
+    p = chen(); p.update({"Contact resistance [Ohm]": 0.015}, check_already_exists=False)
+    write_case(root, "x1_contact_drive_dfn", lion.DFN(options={"contact resistance": "true"}), p, drive_cycle(31, 40, -1.0, 2.0, 15),
+               {"effect": "contact_resistance", "candidate_model": "dfn", "accept": ["contact", "series resistance"],
+                "note": "15 mOhm, DFN drive cycle from 80 % SOC"}, initial_soc=0.8, seed=31)
+    p = chen()
+    for side in ["Negative", "Positive"]:
+        p = scaled(p, f"{side} electrode exchange-current density [A.m-2]", 0.2)
+    write_case(root, "x2_kinetics_cccv_charge", lion.SPMe(), p, ["Charge at 1C until 4.1 V", "Hold at 4.1 V until C/20", "Rest for 30 minutes"],
+               {"effect": "kinetics", "candidate_model": "spme", "accept": ["kinetic", "charge transfer", "exchange"],
+                "note": "exchange currents x0.2, CC-CV charge from 10 % SOC"}, initial_soc=0.1, seed=32)
+    p = scaled(chen(), "Negative electrode active material volume fraction", 0.88)
+    write_case(root, "x3_lam_negative_C2", lion.DFN(), p, discharge("C/2"),
+               {"effect": "active_material_loss", "candidate_model": "dfn", "accept": ["active material", "capacity", "stoichiometr"],
+                "note": "12 % loss of negative active material, C/2"}, seed=33)
+    p = scaled(chen(), "Negative particle diffusivity [m2.s-1]", 0.1)
+    write_case(root, "x4_diffusivity_negative_gitt", lion.SPMe(), p, ["Discharge at C/2 for 10 minutes", "Rest for 30 minutes"] * 6,
+               {"effect": "solid_diffusivity", "candidate_model": "spme", "accept": ["diffusiv"],
+                "note": "negative particle diffusivity x0.1, C/2 GITT"}, seed=34)
+    p = chen(); p.update({"Ambient temperature [K]": 278.15, "Initial temperature [K]": 278.15, "Total heat transfer coefficient [W.m-2.K-1]": 5.0})
+    write_case(root, "x5_thermal_cold_1C", lion.DFN(options={"thermal": "lumped"}), p, discharge("1C"),
+               {"effect": "thermal", "candidate_model": "dfn", "accept": ["thermal", "heat"], "ambient_temperature_K": 278.15,
+                "note": "lumped self-heating h = 5 at 5 degC, 1C"}, temperature=True, seed=35)
+    hppc = []
+    for rate in ["1C", "2C"]:
+        hppc += [f"Discharge at {rate} for 10 seconds", "Rest for 40 seconds", f"Charge at {rate} for 10 seconds", "Rest for 5 minutes", "Discharge at C/2 for 6 minutes", "Rest for 10 minutes"]
+    write_case(root, "x6_control_hppc_spm", lion.SPM(), chen(), hppc * 2,
+               {"effect": "none", "candidate_model": "spm", "accept": ["no missing"], "note": "negative control: SPM HPPC pulses from 90 % SOC"},
+               initial_soc=0.9, seed=36)
+
+
+BATCHES = {"u": batch_u, "v": batch_v, "w": batch_w, "x": batch_x}
+
 if __name__ == "__main__":
-    main(sys.argv[1] if len(sys.argv) > 1 else "out/unseen-cases")
+    root = sys.argv[1] if len(sys.argv) > 1 else "out/unseen-cases"
+    for name in (sys.argv[2] if len(sys.argv) > 2 else "".join(BATCHES)):
+        BATCHES[name](root)

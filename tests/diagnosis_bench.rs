@@ -4,7 +4,8 @@
 //! `../shared/tools/diagnosis-bench` judges it (its `judge_verdict.py`, copied beside the
 //! data): the first verdict names the concealed effect (for two effects, the rounds together
 //! name both), the negative control reports no missing physics, and where an effect exists
-//! the named model cuts the RMSE at least 5x. For two effects, the conclusion over the rounds
+//! the named model cuts the RMSE at least 5x (or to within 10 % of the noise, for an effect
+//! smaller than five times the noise). For two effects, the conclusion over the rounds
 //! must keep both (an earlier stand-in superseded by later rounds does not count).
 //!
 //! The same judge runs on six more PyBaMM-made cases in `tests/data/diagnosis-extra/`
@@ -20,7 +21,13 @@
 //! self-heating with SPMe data, a DFN drive-cycle control, a control at 35 degC). The sixth
 //! (electrolyte diffusivity x0.3 ending at the cut-off in 3 minutes) is left out: the
 //! diagnosis calls it unexplained, as its candidate's refit breaks down where the electrolyte
-//! depletes (the script still makes it).
+//! depletes (the script still makes it). A fourth batch (x1-x6: resistance under a DFN drive
+//! cycle, kinetics from a CC-CV charge, 12 % negative LAM at C/2, negative diffusivity under
+//! GITT, a cold cell heating up, an SPM control of HPPC pulses) named 5 of 6 at its first run;
+//! the sixth (kinetics from the CC-CV charge) was named once kinetics and resistance counted
+//! as identifiable from a load whose level changes (the falling current of the voltage hold),
+//! not only from current steps, and once candidate refits also started from the baseline's own
+//! starting state of charge (its fitted one had absorbed the missing overpotential).
 
 use std::path::{Path, PathBuf};
 
@@ -92,7 +99,10 @@ fn run_case(name: &str) {
         assert!(!rounds[0].found, "{name}: the control names an effect");
     } else {
         let after = rounds.iter().filter_map(|d| d.best().filter(|_| d.found)).filter_map(|c| c.fit.as_ref()).map(|f| f.rmse_all).fold(f64::INFINITY, f64::min);
-        assert!(before / after >= 5.0, "{name}: RMSE cut only {:.2}x ({:.2} -> {:.2} mV)", before / after, before * 1e3, after * 1e3);
+        // A 5x cut, or down to the noise where the effect is smaller than 5x the noise (the
+        // most any model can do): within 10 % of the recording's noise level.
+        let goal = (before / 5.0).max(1.1 * rounds[0].noise);
+        assert!(after <= goal, "{name}: RMSE cut only {:.2}x ({:.2} -> {:.2} mV, noise {:.2} mV)", before / after, before * 1e3, after * 1e3, rounds[0].noise * 1e3);
     }
 }
 
@@ -219,4 +229,34 @@ fn w4_negative_control_drive_cycle_dfn() {
 #[test]
 fn w6_negative_control_at_35_degc_spme() {
     run_case("diagnosis-extra/w6_control_warm");
+}
+
+#[test]
+fn x1_contact_resistance_drive_cycle_dfn() {
+    run_case("diagnosis-extra/x1_contact_drive_dfn");
+}
+
+#[test]
+fn x2_kinetics_cccv_charge_spme() {
+    run_case("diagnosis-extra/x2_kinetics_cccv_charge");
+}
+
+#[test]
+fn x3_negative_active_material_loss_c2_dfn() {
+    run_case("diagnosis-extra/x3_lam_negative_C2");
+}
+
+#[test]
+fn x4_negative_diffusivity_gitt_spme() {
+    run_case("diagnosis-extra/x4_diffusivity_negative_gitt");
+}
+
+#[test]
+fn x5_self_heating_cold_cell_dfn() {
+    run_case("diagnosis-extra/x5_thermal_cold_1C");
+}
+
+#[test]
+fn x6_negative_control_hppc_spm() {
+    run_case("diagnosis-extra/x6_control_hppc_spm");
 }

@@ -19,9 +19,20 @@ fn soc_starts(p: &ParameterSet, v: f64) -> Vec<f64> {
     if (of_set - of_voltage).abs() < 0.02 { vec![of_set] } else { vec![of_set, of_voltage] }
 }
 
+/// The user's model fitted to a recording.
+pub(super) struct BaselineFit {
+    pub fit: FitOutcome,
+    pub split: Split,
+    /// The fitted parameters: the user's, then the nuisance initial state of charge.
+    pub fitted: Vec<FitParameter>,
+    /// The starting points the fit tried (values of `fitted`, in order): a candidate's refit
+    /// may need them where the user's fitted values compensated for the missing effect.
+    pub starts: Vec<Vec<f64>>,
+}
+
 /// The user's model fitted (with the nuisance initial state): on failure part-way, the
 /// recording is cut where the model broke down and the fit repeated once.
-pub(super) fn fit_baseline(data: &mut Recording, base: &ParameterSet, options: &DiagnoseOptions, notes: &mut Vec<String>) -> Result<(FitOutcome, Split, Vec<FitParameter>), Error> {
+pub(super) fn fit_baseline(data: &mut Recording, base: &ParameterSet, options: &DiagnoseOptions, notes: &mut Vec<String>) -> Result<BaselineFit, Error> {
     let mut fitted = options.fitted.clone();
     let user_sets_state = fitted.iter().any(|p| p.path.ends_with("initial_concentration") || p.path == INITIAL_SOC);
     let mut starts: Vec<Vec<f64>> = Vec::new();
@@ -43,7 +54,10 @@ pub(super) fn fit_baseline(data: &mut Recording, base: &ParameterSet, options: &
         }
         let label = format!("{} as given", describe(&options.spec));
         match refit::fit_and_score(label, options.spec, base.clone(), fitted.clone(), 0, &starts, data, &split, &options.fit) {
-            Ok(b) => return Ok((b, split, fitted)),
+            Ok(fit) => {
+                let starts = if starts.is_empty() { vec![fitted.iter().map(|p| p.initial).collect()] } else { starts };
+                return Ok(BaselineFit { fit, split, fitted, starts });
+            }
             Err(Error::Solver { t, reason }) if attempt + 1 < ATTEMPTS && t > 0.0 => {
                 // Cut with a margin: the fit of the initial state explores around the start.
                 let t_cut = data.time[0] + 0.95 * t;

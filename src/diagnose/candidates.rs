@@ -154,8 +154,11 @@ impl Candidate {
             Candidate::Thermal if rec.temperature.is_none() && f.distinct_rates < 2 => {
                 Some("needs a recorded temperature or loads at two or more rates".into())
             }
-            Candidate::SeriesResistance | Candidate::Kinetics | Candidate::RcDynamics if f.steps.is_empty() => {
-                Some("needs current steps".into())
+            // An overpotential is told from the open-circuit voltage by how the voltage moves
+            // with the current at one state of charge: steps, or a load whose level changes
+            // (e.g. the falling current of a constant-voltage hold).
+            Candidate::SeriesResistance | Candidate::Kinetics | Candidate::RcDynamics if f.steps.is_empty() && f.distinct_rates < 2 => {
+                Some("needs current steps or loads at two or more rates".into())
             }
             _ => None,
         }

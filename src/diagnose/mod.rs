@@ -200,8 +200,17 @@ impl Diagnosis {
 }
 
 /// Fits one candidate on top of the baseline; `warm` holds the baseline's fitted parameters
-/// at their fitted values.
-fn refit_candidate(c: Candidate, aug: candidates::Augmentation, warm: &[FitParameter], options: &DiagnoseOptions, data: &Recording, split: &Split) -> (Option<FitOutcome>, Option<String>, Option<NextModel>) {
+/// at their fitted values, `restarts` the points (values of `warm`) the baseline's fit
+/// started from.
+fn refit_candidate(
+    c: Candidate,
+    aug: candidates::Augmentation,
+    warm: &[FitParameter],
+    restarts: &[Vec<f64>],
+    options: &DiagnoseOptions,
+    data: &Recording,
+    split: &Split,
+) -> (Option<FitOutcome>, Option<String>, Option<NextModel>) {
     let mut params: Vec<FitParameter> = warm.iter().filter(|p| !aug.replaces.contains(&p.path)).cloned().collect();
     if c == Candidate::LithiumInventory {
         // Start the free concentrations at the baseline's fitted initial state.
@@ -231,7 +240,24 @@ fn refit_candidate(c: Candidate, aug: candidates::Augmentation, warm: &[FitParam
             }
         })
         .collect();
-    let starts = if aug.extra.is_empty() || second == start { vec![start] } else { vec![start, second] };
+    // Then the candidate's start with the user's parameters where the baseline's fit started:
+    // the baseline's fitted values (e.g. an initial state of charge) may have absorbed the
+    // missing effect and hold the candidate's fit in a false minimum.
+    let from_restarts = restarts.iter().map(|r| {
+        params
+            .iter()
+            .map(|p| match warm.iter().position(|w| w.path == p.path) {
+                Some(i) => r[i].clamp(p.lower, p.upper),
+                None => p.initial,
+            })
+            .collect::<Vec<f64>>()
+    });
+    let mut starts = vec![start];
+    for s in std::iter::once(second).chain(from_restarts) {
+        if !starts.contains(&s) {
+            starts.push(s);
+        }
+    }
     match refit::fit_and_score(describe(&aug.spec), aug.spec, aug.base.clone(), params.clone(), aug.structural_parameters, &starts, data, split, &options.fit) {
         Ok(f) => {
             let fitted = params
@@ -264,12 +290,15 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
         base.thermal.initial_temperature = t0;
     }
     let base = &base;
-    let (baseline, split, warm) = match &options.fitted_baseline {
+    let (baseline, split, warm, restarts) = match &options.fitted_baseline {
         Some(b) if b.voltage.len() == data.time.len() && b.names.len() == options.fitted.len() => {
             let features = Features::of(&data);
-            (b.clone(), Split::blocks(&data.time, &features.valid, options.blocks, options.holdout_every), options.fitted.clone())
+            (b.clone(), Split::blocks(&data.time, &features.valid, options.blocks, options.holdout_every), options.fitted.clone(), Vec::new())
         }
-        _ => baseline::fit_baseline(&mut data, base, options, &mut notes)?,
+        _ => {
+            let b = baseline::fit_baseline(&mut data, base, options, &mut notes)?;
+            (b.fit, b.split, b.fitted, b.starts)
+        }
     };
     let data = data;
     let features = Features::of(&data);
@@ -325,7 +354,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
             match aug {
                 Err(why) => out.note = Some(why),
                 Ok(aug) => {
-                    let (fit, note, next) = refit_candidate(c, aug, &warm, options, &data, &split);
+                    let (fit, note, next) = refit_candidate(c, aug, &warm, &restarts, options, &data, &split);
                     out.note = note;
                     out.next = next;
                     if let Some(f) = fit {
