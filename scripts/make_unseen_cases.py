@@ -34,8 +34,8 @@ def scaled(p, name, factor):
     return p
 
 
-def write_case(root, name, model, params, steps, truth, initial_soc=None, temperature=False, seed=0):
-    experiment = pybamm.Experiment(steps, period="1 second")
+def write_case(root, name, model, params, steps, truth, initial_soc=None, temperature=False, seed=0, noise=NOISE_V, period=1):
+    experiment = pybamm.Experiment(steps, period=f"{period} seconds")
     solver = pybamm.IDAKLUSolver(rtol=1e-8, atol=1e-8)
     sim = pybamm.Simulation(model, parameter_values=params, experiment=experiment, solver=solver)
     sol = sim.solve(initial_soc=initial_soc)
@@ -43,7 +43,7 @@ def write_case(root, name, model, params, steps, truth, initial_soc=None, temper
     i = sol["Current [A]"].entries
     v = sol["Voltage [V]"].entries
     rng = np.random.default_rng(seed)
-    v = v + rng.normal(0.0, NOISE_V, v.shape)
+    v = v + rng.normal(0.0, noise, v.shape)
     folder = os.path.join(root, name)
     os.makedirs(folder, exist_ok=True)
     columns = [t, i, v]
@@ -53,7 +53,7 @@ def write_case(root, name, model, params, steps, truth, initial_soc=None, temper
         columns.append(temp)
         header += ",temperature_K"
     np.savetxt(os.path.join(folder, "recording.csv"), np.column_stack(columns), delimiter=",", header=header, comments="", fmt="%.6f")
-    truth.update({"noise_V": NOISE_V, "points": int(len(t)), "made_by": f"PyBaMM {pybamm.__version__}, Chen2020, IDAKLU rtol=atol=1e-8"})
+    truth.update({"noise_V": noise, "sampling_s": period, "points": int(len(t)), "made_by": f"PyBaMM {pybamm.__version__}, Chen2020, IDAKLU rtol=atol=1e-8"})
     truth.setdefault("ambient_temperature_K", 298.15)
     with open(os.path.join(folder, "truth.json"), "w") as f:
         json.dump(truth, f, indent=1)
@@ -188,7 +188,48 @@ def batch_x(root):
                initial_soc=0.9, seed=36)
 
 
-BATCHES = {"u": batch_u, "v": batch_v, "w": batch_w, "x": batch_x}
+
+def batch_y(root):
+    """Fifth batch, made before any change it could have guided: an effect the bench never
+    shows (one-state OCV hysteresis), noisier and coarser recordings, self-heating without a
+    recorded temperature, the SPM on a DFN drive cycle, lithium loss seen through a CC-CV
+    charge, and a noisy DFN control."""
+    p = chen()
+    u_n = p["Negative electrode OCP [V]"]
+    p.update({
+        "Negative electrode lithiation OCP [V]": lambda *a: u_n(*a) - 0.012,
+        "Negative electrode delithiation OCP [V]": lambda *a: u_n(*a) + 0.012,
+        "Negative particle lithiation hysteresis decay rate": 10.0,
+        "Negative particle delithiation hysteresis decay rate": 10.0,
+        "Initial hysteresis state in negative electrode": 0.0,
+    }, check_already_exists=False)
+    cycle = ["Discharge at C/2 for 30 minutes", "Rest for 30 minutes", "Charge at C/2 for 30 minutes", "Rest for 30 minutes"] * 2
+    write_case(root, "y1_hysteresis_negative_spme", lion.SPMe(options={"open-circuit potential": ("one-state hysteresis", "single")}), p, cycle,
+               {"effect": "hysteresis", "candidate_model": "spme", "accept": ["hysteresis"],
+                "note": "one-state hysteresis of the negative OCP, +-12 mV, C/2 partial cycles from 60 % SOC"}, initial_soc=0.6, seed=41)
+    p = chen(); p.update({"Contact resistance [Ohm]": 0.01}, check_already_exists=False)
+    write_case(root, "y2_contact_noisy_coarse", lion.SPMe(options={"contact resistance": "true"}), p,
+               ["Discharge at 1C for 20 minutes", "Rest for 20 minutes", "Discharge at 2C for 5 minutes", "Rest for 20 minutes"],
+               {"effect": "contact_resistance", "candidate_model": "spme", "accept": ["contact", "series resistance"],
+                "note": "10 mOhm, 3 mV noise, sampled every 10 s"}, seed=42, noise=3e-3, period=10)
+    p = chen(); p.update({"Total heat transfer coefficient [W.m-2.K-1]": 10.0})
+    write_case(root, "y3_thermal_unrecorded", lion.DFN(options={"thermal": "lumped"}), p,
+               ["Discharge at C/2 for 30 minutes", "Rest for 30 minutes", "Discharge at 2C until 2.7 V", "Rest for 30 minutes"],
+               {"effect": "thermal", "candidate_model": "dfn", "accept": ["thermal", "heat"],
+                "note": "lumped self-heating h = 10, no temperature recorded, C/2 then 2C"}, seed=43)
+    write_case(root, "y4_electrolyte_drive_spm", lion.DFN(), chen(), drive_cycle(44, 60, -1.0, 3.0, 10),
+               {"effect": "electrolyte_transport", "candidate_model": "spm", "accept": ["electrolyte"],
+                "note": "DFN data, SPM given: drive cycle to 3C from 90 % SOC"}, initial_soc=0.9, seed=44)
+    p = scaled(chen(), "Initial concentration in negative electrode [mol.m-3]", 0.94)
+    write_case(root, "y5_inventory_cccv", lion.SPMe(), p,
+               ["Discharge at 1C until 2.7 V", "Rest for 20 minutes", "Charge at C/2 until 4.1 V", "Hold at 4.1 V until C/20", "Rest for 20 minutes"],
+               {"effect": "lithium_inventory_loss", "candidate_model": "spme", "accept": ["inventory", "stoichiometr", "capacity"],
+                "note": "6 % less lithium, discharge then CC-CV charge"}, seed=45)
+    write_case(root, "y6_control_noisy_dfn", lion.DFN(), chen(), discharge("1C"),
+               {"effect": "none", "candidate_model": "dfn", "accept": ["no missing"], "note": "negative control: DFN, 5 mV noise"}, seed=46, noise=5e-3)
+
+
+BATCHES = {"u": batch_u, "v": batch_v, "w": batch_w, "x": batch_x, "y": batch_y}
 
 if __name__ == "__main__":
     root = sys.argv[1] if len(sys.argv) > 1 else "out/unseen-cases"

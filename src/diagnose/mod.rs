@@ -225,37 +225,30 @@ fn refit_candidate(
     } else {
         params.extend(aug.extra.iter().cloned());
     }
-    let start: Vec<f64> = params.iter().map(|p| p.initial).collect();
-    // A second start for the candidate's own parameters: a third of the way from the first
-    // start to the lower bound (in the search coordinates), so no fit starts only at one point.
-    let second: Vec<f64> = params
-        .iter()
-        .map(|p| {
-            if !aug.extra.iter().any(|e| e.path == p.path) {
-                p.initial
-            } else if p.log {
-                (p.initial.ln() + (p.lower.ln() - p.initial.ln()) / 3.0).exp()
-            } else {
-                p.initial + (p.lower - p.initial) / 3.0
+    // Starts: the candidate's own parameters at their initial values or a third of the way to
+    // their lower bounds (in the search coordinates), so no fit starts only at one point; the
+    // user's parameters at their fitted values or where the baseline's fit started (its fitted
+    // values, e.g. an initial state of charge, may have absorbed the missing effect and hold
+    // the candidate's fit in a false minimum). The first is tried alone; the others only when
+    // it fails, stops on its cap or ends on a bound (`refit::fit_and_score`).
+    let own = |p: &FitParameter, toward_lower: bool| match (toward_lower, p.log) {
+        (false, _) => p.initial,
+        (true, true) => (p.initial.ln() + (p.lower.ln() - p.initial.ln()) / 3.0).exp(),
+        (true, false) => p.initial + (p.lower - p.initial) / 3.0,
+    };
+    let mut starts: Vec<Vec<f64>> = Vec::new();
+    for user in std::iter::once(None).chain(restarts.iter().map(Some)) {
+        for toward_lower in [false, true] {
+            let s: Vec<f64> = params
+                .iter()
+                .map(|p| match warm.iter().position(|w| w.path == p.path) {
+                    Some(i) => user.map_or(p.initial, |r| r[i].clamp(p.lower, p.upper)),
+                    None => own(p, toward_lower),
+                })
+                .collect();
+            if !starts.contains(&s) {
+                starts.push(s);
             }
-        })
-        .collect();
-    // Then the candidate's start with the user's parameters where the baseline's fit started:
-    // the baseline's fitted values (e.g. an initial state of charge) may have absorbed the
-    // missing effect and hold the candidate's fit in a false minimum.
-    let from_restarts = restarts.iter().map(|r| {
-        params
-            .iter()
-            .map(|p| match warm.iter().position(|w| w.path == p.path) {
-                Some(i) => r[i].clamp(p.lower, p.upper),
-                None => p.initial,
-            })
-            .collect::<Vec<f64>>()
-    });
-    let mut starts = vec![start];
-    for s in std::iter::once(second).chain(from_restarts) {
-        if !starts.contains(&s) {
-            starts.push(s);
         }
     }
     match refit::fit_and_score(describe(&aug.spec), aug.spec, aug.base.clone(), params.clone(), aug.structural_parameters, &starts, data, split, &options.fit) {

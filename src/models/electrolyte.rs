@@ -5,6 +5,18 @@ use super::electrochem::{Electrochem, Side};
 use super::kinetics::arrhenius;
 use crate::params::{FARADAY, GAS_CONSTANT};
 
+/// Concentrations (mol/m^3) below which the electrolyte's functions are held at their value
+/// there, as PyBaMM's `settings.tolerances` do: where a high-rate discharge empties the
+/// electrolyte, the fitted polynomials of diffusivity and conductivity (the conductivity has
+/// a `c^1.5` term) stay defined, and the diffusion potential `1 / c_e` stays finite. Above
+/// them nothing changes.
+pub const TRANSPORT_FLOOR: f64 = 10.0;
+/// As [`TRANSPORT_FLOOR`], for `chi R T / (F c_e)` (PyBaMM's `chi__c_e`).
+pub const DIFFUSION_POTENTIAL_FLOOR: f64 = 1e-2;
+/// As [`TRANSPORT_FLOOR`], for `ln c_e` in the composite (SPMe) electrolyte potential
+/// (PyBaMM's `macinnes__c_e`).
+pub const LOG_FLOOR: f64 = 1e-15;
+
 /// Per-x-volume material properties.
 #[derive(Clone, Debug)]
 pub struct Volume {
@@ -125,7 +137,7 @@ impl ElectrolyteOp {
             None => ((1.0 - t_plus) / FARADAY, None),
         };
         // 1 / (eps^b D(c_e)) (s/m^2) at each node: the face's harmonic mean is one division.
-        let resistivity = |i: usize| 1.0 / (vols[i].tortuosity * p.diffusivity.eval(ce[i]) * p.diffusivity_factor * arr);
+        let resistivity = |i: usize| 1.0 / (vols[i].tortuosity * p.diffusivity.eval(ce[i].max(TRANSPORT_FLOOR)) * p.diffusivity_factor * arr);
         let rate = |i: usize, flux_left: f64, flux_right: f64| ((flux_left - flux_right) * inv_dx[i] + source * aj(i)) * inv_eps[i];
         let (mut r_left, mut flux_left) = (resistivity(0), 0.0);
         for i in 0..n - 1 {
@@ -155,10 +167,10 @@ impl ElectrolyteOp {
         let n = self.len();
         let (ce, phie, out, vols, inv_dx) = (&ce[..n], &phie[..n], &mut out[..n], &self.vols[..n], &self.inv_dx[..n]);
         let (weights, inv_gaps) = (&self.weights[..n - 1], &self.inv_gaps[..n - 1]);
-        let kappa = |i: usize| vols[i].tortuosity * p.conductivity.eval(ce[i]) * p.conductivity_factor * arr;
-        let (mut kappa_left, mut c_left, mut i_left) = (kappa(0), ce[0].max(1e-6), 0.0);
+        let kappa = |i: usize| vols[i].tortuosity * p.conductivity.eval(ce[i].max(TRANSPORT_FLOOR)) * p.conductivity_factor * arr;
+        let (mut kappa_left, mut c_left, mut i_left) = (kappa(0), ce[0].max(DIFFUSION_POTENTIAL_FLOOR), 0.0);
         for i in 0..n - 1 {
-            let (kappa_right, c_right, w) = (kappa(i + 1), ce[i + 1].max(1e-6), weights[i]);
+            let (kappa_right, c_right, w) = (kappa(i + 1), ce[i + 1].max(DIFFUSION_POTENTIAL_FLOOR), weights[i]);
             let coef = factor / (w * c_left + (1.0 - w) * c_right);
             let face = (1.0 - w) * kappa_left + w * kappa_right;
             let i_right = face * (coef * (ce[i + 1] - ce[i]) - (phie[i + 1] - phie[i])) * inv_gaps[i];

@@ -186,11 +186,11 @@ impl Spme {
         let avg_eps_c = self.electrolyte.vols.iter().zip(ce).map(|(v, c)| v.dx * v.eps * c).sum::<f64>() / k.length;
         let c_av = avg_eps_c * k.avg_inv_eps;
         let arr = super::kinetics::arrhenius(e.activation_energy, self.ec.t_ref(), temp);
-        let kappa = e.conductivity.eval(c_av) * e.conductivity_factor * arr;
+        let kappa = e.conductivity.eval(c_av.max(super::electrolyte::TRANSPORT_FLOOR)) * e.conductivity_factor * arr;
         let chi = 2.0 * (1.0 - e.transference_number) * e.thermodynamic_factor;
         let rt_f = GAS_CONSTANT * temp / FARADAY;
         // mean over an electrode's (equal-width) volumes of ln c_e; the ln c_av cancels
-        let mean_ln = |side: Side| log_mean(ce[k.electrode(side)].iter().map(|&c| c.max(1e-6)));
+        let mean_ln = |side: Side| log_mean(ce[k.electrode(side)].iter().map(|&c| c.max(super::electrolyte::LOG_FLOOR)));
         let concentration = chi * rt_f * (mean_ln(Side::Positive) - mean_ln(Side::Negative));
         concentration - current / self.ec.area() * k.ohmic_length / kappa
     }

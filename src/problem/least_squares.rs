@@ -111,7 +111,14 @@ pub fn levenberg_marquardt(problem: &FittingProblem, start: &[f64], settings: Lm
     let mut jac: Vec<Vec<f64>> = Vec::new();
     while !converged && iterations < settings.max_iterations {
         iterations += 1;
-        jac = jacobian(problem, &scale, &z, &bounds, &r)?;
+        // A model that fails on both sides of the point in some parameter stops the search
+        // there (not converged) once a Jacobian exists; the last one stands for the
+        // standard errors.
+        match jacobian(problem, &scale, &z, &bounds, &r) {
+            Ok(j) => jac = j,
+            Err(_) if !jac.is_empty() => break,
+            Err(e) => return Err(e),
+        }
         simulations += k;
         let (jtj, jtr) = normal_equations(&jac, &r);
         let mut accepted = false;
