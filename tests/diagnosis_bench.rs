@@ -27,7 +27,11 @@
 //! the sixth (kinetics from the CC-CV charge) was named once kinetics and resistance counted
 //! as identifiable from a load whose level changes (the falling current of the voltage hold),
 //! not only from current steps, and once candidate refits also started from the baseline's own
-//! starting state of charge (its fitted one had absorbed the missing overpotential).
+//! starting state of charge (its fitted one had absorbed the missing overpotential). A fifth
+//! batch (y1-y6: one-state OCV hysteresis of the negative electrode, resistance in a recording
+//! with 3 mV noise sampled every 10 s, self-heating without a recorded temperature, the SPM on
+//! a DFN drive cycle, lithium loss through a CC-CV charge, a DFN control with 5 mV noise) named
+//! 6 of 6 at its first run.
 
 use std::path::{Path, PathBuf};
 
@@ -264,4 +268,34 @@ fn x5_self_heating_cold_cell_dfn() {
 #[test]
 fn x6_negative_control_hppc_spm() {
     run_case("diagnosis-extra/x6_control_hppc_spm");
+}
+
+#[test]
+fn y1_ocv_hysteresis_spme() {
+    run_case("diagnosis-extra/y1_hysteresis_negative_spme");
+}
+
+#[test]
+fn y2_contact_resistance_noisy_coarse_spme() {
+    run_case("diagnosis-extra/y2_contact_noisy_coarse");
+}
+
+#[test]
+fn y3_self_heating_without_temperature_dfn() {
+    run_case("diagnosis-extra/y3_thermal_unrecorded");
+}
+
+#[test]
+fn y4_electrolyte_transport_drive_cycle_spm() {
+    run_case("diagnosis-extra/y4_electrolyte_drive_spm");
+}
+
+#[test]
+fn y5_lithium_inventory_cccv_spme() {
+    run_case("diagnosis-extra/y5_inventory_cccv");
+}
+
+#[test]
+fn y6_negative_control_5mv_noise_dfn() {
+    run_case("diagnosis-extra/y6_control_noisy_dfn");
 }
