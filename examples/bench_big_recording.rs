@@ -25,9 +25,9 @@ const TRUE_RESISTANCE: f64 = 0.01;
 
 fn cycling() -> Protocol {
     let cycle = [
-        Step::CRate { rate: 1.0, duration: 2700.0 },
+        Step::CRate { rate: 1.0, duration: 2700.0, until_voltage: None },
         Step::Rest { duration: 1800.0 },
-        Step::CRate { rate: -0.5, duration: 5400.0 },
+        Step::CRate { rate: -0.5, duration: 5400.0, until_voltage: None },
         Step::Rest { duration: 1800.0 },
     ];
     Protocol { steps: (0..9).flat_map(|_| cycle.clone()).collect() }

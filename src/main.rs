@@ -59,8 +59,12 @@ enum Command {
         #[arg(long, default_value_t = 1.0)]
         c_rate: f64,
         /// Protocol TOML file (overrides --c-rate), e.g. protocols/pulse_1C.toml.
-        #[arg(long)]
+        #[arg(long, conflicts_with = "experiment")]
         protocol: Option<PathBuf>,
+        /// One experiment step as PyBaMM writes it (repeatable, in order; overrides --c-rate),
+        /// e.g. `--experiment "Charge at 1C until 4.2 V" --experiment "Hold at 4.2 V until C/50"`.
+        #[arg(long)]
+        experiment: Vec<String>,
         /// Parameter-set file: TOML, JSON or BPX JSON (default: embedded Chen 2020).
         #[arg(long)]
         params: Option<PathBuf>,
@@ -430,7 +434,7 @@ fn run(cli: Cli) -> Result<(), Error> {
             }
             Ok(())
         }
-        Command::Simulate { overrides, model, c_rate, protocol: protocol_file, params, contact_resistance, thermal, mesh, out, repeat, json } => {
+        Command::Simulate { overrides, model, c_rate, protocol: protocol_file, experiment, params, contact_resistance, thermal, mesh, out, repeat, json } => {
             if !(c_rate > 0.0 && c_rate.is_finite()) {
                 return Err(Error::invalid("--c-rate", c_rate, "must be positive"));
             }
@@ -441,6 +445,7 @@ fn run(cli: Cli) -> Result<(), Error> {
             set_contact_resistance(&mut p, contact_resistance)?;
             let protocol = match &protocol_file {
                 Some(path) => read_toml::<Protocol>(path)?,
+                None if !experiment.is_empty() => cellstudio::protocol::experiment::parse(&experiment, p.cell.nominal_capacity)?,
                 None => Protocol::discharge(c_rate),
             };
             let staged = OutputDir::create(&out, &[params.as_deref(), protocol_file.as_deref()].into_iter().flatten().collect::<Vec<_>>())?;
@@ -457,7 +462,8 @@ fn run(cli: Cli) -> Result<(), Error> {
             for _ in 0..repeat.max(1) {
                 let t = Instant::now();
                 sol = Some(simulate(built.model.as_ref(), &mut built.workspace, &protocol, &opts, None).map_err(|e| match &protocol_file {
-                    // Name what the user wrote: the rate, or the protocol file.
+                    // Name what the user wrote: the rate, the experiment, or the protocol file.
+                    None if !experiment.is_empty() => Error::InvalidSetting { field: "--experiment".into(), reason: format!("{experiment:?} failed: {e}") },
                     None => Error::InvalidSetting { field: "--c-rate".into(), reason: format!("a {c_rate} C discharge failed: {e}") },
                     Some(path) => Error::InvalidSetting { field: "--protocol".into(), reason: format!("{} failed: {e}", path.display()) },
                 })?);

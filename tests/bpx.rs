@@ -312,7 +312,7 @@ fn example_dfn_matches_pybamm_and_validation_data() {
         |k: &str| -> Vec<f64> { data[k].as_array().unwrap().iter().map(|v| v.as_f64().unwrap()).collect() };
     let (time, voltage) = (list("Time [s]"), list("Voltage [V]"));
     let current = -list("Current [A]")[0];
-    let protocol = Protocol { steps: vec![Step::Current { current, duration: 3900.0 }] };
+    let protocol = Protocol { steps: vec![Step::Current { current, duration: 3900.0, until_voltage: None }] };
     let sol =
         common::run(ModelKind::Dfn, Submodels::default(), MeshSizes::default(), &p, &protocol, None, false);
     let at = |t: f64| cellstudio::params::function::interpolate(&sol.time, &sol.voltage, t);

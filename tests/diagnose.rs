@@ -11,7 +11,7 @@ use cellstudio::problem::fitting::ModelSpec;
 use cellstudio::protocol::{Protocol, Step};
 
 fn current(current: f64, duration: f64) -> Step {
-    Step::Current { current, duration }
+    Step::Current { current, duration, until_voltage: None }
 }
 
 fn rest(duration: f64) -> Step {

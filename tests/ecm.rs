@@ -55,7 +55,7 @@ fn constant_current_step_matches_closed_form() {
     let tau = R1 * C1;
     for current in [CAPACITY, -0.5 * CAPACITY, 3.0 * CAPACITY] {
         let duration = 600.0;
-        let protocol = Protocol { steps: vec![Step::Current { current, duration }] };
+        let protocol = Protocol { steps: vec![Step::Current { current, duration, until_voltage: None }] };
         let sol = run(&model, &protocol, grid(duration, 0.5), false);
         assert_eq!(sol.time.len(), 1201);
         let exact = |t: f64| {
@@ -81,7 +81,7 @@ fn rest_after_pulse_relaxes_with_rc_time_constant() {
     let model = Ecm::new(one_rc()).unwrap();
     let tau = R1 * C1;
     let (current, t_p, rest) = (2.0 * CAPACITY, 30.0, 200.0);
-    let protocol = Protocol { steps: vec![Step::Current { current, duration: t_p }, Step::Rest { duration: rest }] };
+    let protocol = Protocol { steps: vec![Step::Current { current, duration: t_p, until_voltage: None }, Step::Rest { duration: rest }] };
     let mut t_eval = grid(t_p + rest, 1.0);
     t_eval.push(t_p + tau);
     t_eval.sort_by(f64::total_cmp);
@@ -133,7 +133,7 @@ fn thermal_steady_state_and_charge_balance() {
     assert_eq!(model.len(), 4);
     let current = CAPACITY;
     let duration = 2000.0;
-    let protocol = Protocol { steps: vec![Step::Current { current, duration }] };
+    let protocol = Protocol { steps: vec![Step::Current { current, duration, until_voltage: None }] };
     let sol = run(&model, &protocol, grid(duration, 10.0), true);
     let r_total = R0 + R1 + 0.01;
     let t_ss = p.ambient_temperature + current * current * r_total / ha;
@@ -253,7 +253,7 @@ const REST: f64 = 1800.0;
 
 fn pulse_protocol() -> Protocol {
     let current = cellstudio::params::chen2020().cell.nominal_capacity;
-    Protocol { steps: vec![Step::Current { current, duration: PULSE }, Step::Rest { duration: REST }] }
+    Protocol { steps: vec![Step::Current { current, duration: PULSE, until_voltage: None }, Step::Rest { duration: REST }] }
 }
 
 /// The Chen 2020 default ECM, started at SOC 0.5, follows the DFN through the pulse it was

@@ -211,7 +211,7 @@ fn recording_starting_at_rest_sets_the_initial_state() {
     use cellstudio::protocol::{Protocol, Step};
     let mut p = chen2020();
     p.set_initial_ocv(3.8).unwrap();
-    let protocol = Protocol { steps: vec![Step::Rest { duration: 60.0 }, Step::Current { current: 5.0, duration: 600.0 }] };
+    let protocol = Protocol { steps: vec![Step::Rest { duration: 60.0 }, Step::Current { current: 5.0, duration: 600.0, until_voltage: None }] };
     // Every solver step, with the jump at 60 s as a repeated time (as a cycler logs a step).
     let sol = common::run(ModelKind::Spm, Submodels::default(), Default::default(), &p, &protocol, None, false);
     let rec = Recording { time: sol.time.clone(), current: sol.current.clone(), voltage: sol.voltage.clone(), temperature: None };

@@ -19,9 +19,9 @@ fn solid_lithium_is_conserved() {
     let p = chen2020();
     let protocol = Protocol {
         steps: vec![
-            Step::CRate { rate: 2.0, duration: 600.0 },
+            Step::CRate { rate: 2.0, duration: 600.0, until_voltage: None },
             Step::Rest { duration: 300.0 },
-            Step::Current { current: -3.0, duration: 300.0 },
+            Step::Current { current: -3.0, duration: 300.0, until_voltage: None },
             Step::Table { time: vec![0.0, 30.0, 60.0, 90.0, 120.0], current: vec![5.0, -5.0, 8.0, 0.0, 2.0] },
         ],
     };
@@ -54,7 +54,7 @@ fn low_current_voltage_tends_to_ocv() {
         let gaps: Vec<f64> = [0.01, 0.001]
             .iter()
             .map(|&rate| {
-                let protocol = Protocol { steps: vec![Step::CRate { rate, duration: 600.0 }] };
+                let protocol = Protocol { steps: vec![Step::CRate { rate, duration: 600.0, until_voltage: None }] };
                 let mut b = ModelBuilder::new(kind, Submodels::default(), MeshSizes::default());
                 let built = b.build(&p).unwrap();
                 let opts = SimOptions { keep_states: true, ..SimOptions::for_cell(&p) };

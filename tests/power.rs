@@ -14,7 +14,7 @@ fn constant_power_discharge_holds_power_and_integrates_energy() {
     let p = chen2020();
     let power = 18.0; // W, about 1C
     for kind in [ModelKind::Spm, ModelKind::Spme, ModelKind::Dfn] {
-        let protocol = Protocol { steps: vec![Step::Power { power, duration: 1800.0 }] };
+        let protocol = Protocol { steps: vec![Step::Power { power, duration: 1800.0, until_voltage: None }] };
         let sol = run(kind, Submodels::default(), MeshSizes::default(), &p, &protocol, None, false);
         let worst = sol
             .current
@@ -37,7 +37,7 @@ fn constant_power_discharge_holds_power_and_integrates_energy() {
 #[test]
 fn constant_power_discharge_stops_at_cutoff() {
     let p = chen2020();
-    let protocol = Protocol { steps: vec![Step::Power { power: 30.0, duration: 7200.0 }] };
+    let protocol = Protocol { steps: vec![Step::Power { power: 30.0, duration: 7200.0, until_voltage: None }] };
     let sol = run(ModelKind::Spme, Submodels::default(), MeshSizes::default(), &p, &protocol, None, false);
     assert_eq!(sol.cutoff_times.len(), 1);
     assert!((sol.final_voltage() - p.cell.lower_cutoff).abs() < 1e-6, "{}", sol.final_voltage());

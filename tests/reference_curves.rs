@@ -137,7 +137,7 @@ fn spm_contact_resistance_matches_pybamm() {
     p.negative.diffusivity = 3.3e-14;
     let protocol = Protocol {
         steps: vec![
-            cellstudio::protocol::Step::CRate { rate: 1.0, duration: 7200.0 },
+            cellstudio::protocol::Step::CRate { rate: 1.0, duration: 7200.0, until_voltage: None },
             cellstudio::protocol::Step::Rest { duration: 1800.0 },
         ],
     };

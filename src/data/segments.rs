@@ -33,7 +33,7 @@ impl Recording {
             } else {
                 // The charge-weighted mean over the stretch (trapezoids).
                 let charge: f64 = (start..end).map(|k| 0.5 * (i[k] + i[k + 1]) * (t[k + 1] - t[k])).sum();
-                Step::Current { current: charge / duration, duration }
+                Step::Current { current: charge / duration, duration, until_voltage: None }
             });
         };
         for k in 0..t.len() - 1 {
@@ -76,7 +76,7 @@ mod tests {
         assert_eq!(
             p.steps,
             vec![
-                Step::Current { current: 5.0, duration: 20.0 },
+                Step::Current { current: 5.0, duration: 20.0, until_voltage: None },
                 Step::Rest { duration: 20.0 },
                 Step::Table { time: vec![0.0, 5.0, 10.0], current: vec![0.0, 1.0, 3.0] },
             ]
@@ -91,7 +91,7 @@ mod tests {
         assert_eq!(
             p.steps,
             vec![
-                Step::Current { current: 2.0, duration: 10.0 },
+                Step::Current { current: 2.0, duration: 10.0, until_voltage: None },
                 Step::Table { time: vec![0.0, 10.0], current: vec![2.0, 0.0] },
                 Step::Rest { duration: 10.0 },
             ]

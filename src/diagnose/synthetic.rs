@@ -65,8 +65,8 @@ fn skeleton(protocol: &Protocol, period: f64, capacity: f64) -> Result<(Vec<f64>
             let dt = (k as f64 * period).min(step.duration());
             let i = match step.demand_at(dt, capacity) {
                 Demand::Current(i) => i,
-                Demand::Power(_) => {
-                    return Err(Error::InvalidSetting { field: "protocol".into(), reason: "power steps are not supported here".into() });
+                Demand::Power(_) | Demand::Voltage(_) => {
+                    return Err(Error::InvalidSetting { field: "protocol".into(), reason: "power and voltage-hold steps are not supported here".into() });
                 }
             };
             time.push(t0 + dt);
@@ -122,7 +122,7 @@ mod tests {
 
     #[test]
     fn skeleton_repeats_step_boundaries() {
-        let protocol = Protocol { steps: vec![Step::Current { current: 2.0, duration: 3.0 }, Step::Rest { duration: 2.0 }] };
+        let protocol = Protocol { steps: vec![Step::Current { current: 2.0, duration: 3.0, until_voltage: None }, Step::Rest { duration: 2.0 }] };
         let (t, i) = skeleton(&protocol, 1.0, 5.0).unwrap();
         assert_eq!(t, vec![0.0, 1.0, 2.0, 3.0, 3.0, 4.0, 5.0]);
         assert_eq!(i, vec![2.0, 2.0, 2.0, 2.0, 0.0, 0.0, 0.0]);

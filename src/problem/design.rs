@@ -215,11 +215,11 @@ impl DesignProblem {
             Some(power) => {
                 // Long enough for any design: the theoretical energy at the upper cut-off.
                 let energy = theoretical_capacity(p) * p.cell.upper_cutoff * 3600.0;
-                Step::Power { power, duration: 1.5 * energy / power }
+                Step::Power { power, duration: 1.5 * energy / power, until_voltage: None }
             }
             None => {
                 let one_c = if self.rate_from_theoretical_capacity { theoretical_capacity(p) } else { p.cell.nominal_capacity };
-                Step::Current { current: self.c_rate * one_c, duration: 1.5 * 3600.0 / self.c_rate }
+                Step::Current { current: self.c_rate * one_c, duration: 1.5 * 3600.0 / self.c_rate, until_voltage: None }
             }
         };
         Protocol { steps: vec![step] }

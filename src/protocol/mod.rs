@@ -1,5 +1,9 @@
-//! Current protocols: constant current or C-rate steps, rests, and current-vs-time tables.
-//! Current is in amperes, discharge positive.
+//! Protocols: constant current, C-rate or power steps (each ended by the cell's cut-offs or
+//! its own voltage limit), voltage holds ended by a current limit, rests, and current-vs-time
+//! tables. Current is in amperes, discharge positive. [`experiment`] reads PyBaMM-style
+//! experiment strings ("Charge at 1C until 4.2 V", "Hold at 4.2 V until C/50").
+
+pub mod experiment;
 
 use serde::{Deserialize, Serialize};
 
@@ -10,14 +14,39 @@ use crate::params::function::interpolate;
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
 pub enum Step {
-    /// Constant current (A) for `duration` (s), ended early by a voltage cut-off.
-    Current { current: f64, duration: f64 },
+    /// Constant current (A) for `duration` (s), ended early by a voltage cut-off or
+    /// `until_voltage` (V: reached falling on discharge, rising on charge).
+    Current {
+        current: f64,
+        duration: f64,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        until_voltage: Option<f64>,
+    },
     /// Constant C-rate (multiples of the nominal capacity per hour) for `duration` (s),
-    /// ended early by a voltage cut-off.
-    CRate { rate: f64, duration: f64 },
-    /// Constant power (W, discharge positive) for `duration` (s), ended early by a voltage
-    /// cut-off; the current follows the state as `I = P / V`.
-    Power { power: f64, duration: f64 },
+    /// ended early as [`Step::Current`].
+    CRate {
+        rate: f64,
+        duration: f64,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        until_voltage: Option<f64>,
+    },
+    /// Constant power (W, discharge positive) for `duration` (s), ended early as
+    /// [`Step::Current`]; the current follows the state as `I = P / V`.
+    Power {
+        power: f64,
+        duration: f64,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        until_voltage: Option<f64>,
+    },
+    /// Constant terminal voltage `voltage` (V) for `duration` (s), ended early when the
+    /// current's magnitude falls to `until_current` (A); the current is whatever holds the
+    /// voltage.
+    Hold {
+        voltage: f64,
+        duration: f64,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        until_current: Option<f64>,
+    },
     /// Zero current for `duration` (s).
     Rest { duration: f64 },
     /// Piecewise-linear current (A) through the points `(time, current)`; times (s) start at
@@ -32,6 +61,8 @@ pub enum Demand {
     Current(f64),
     /// Power (W, discharge positive).
     Power(f64),
+    /// Terminal voltage (V): the current is an unknown of the step.
+    Voltage(f64),
 }
 
 /// A sequence of steps.
@@ -48,6 +79,7 @@ impl Step {
             Step::Current { duration, .. }
             | Step::CRate { duration, .. }
             | Step::Power { duration, .. }
+            | Step::Hold { duration, .. }
             | Step::Rest { duration } => *duration,
             Step::Table { time, .. } => time.last().copied().unwrap_or(0.0),
         }
@@ -59,6 +91,7 @@ impl Step {
             Step::Current { current, .. } => Demand::Current(*current),
             Step::CRate { rate, .. } => Demand::Current(rate * capacity),
             Step::Power { power, .. } => Demand::Power(*power),
+            Step::Hold { voltage, .. } => Demand::Voltage(*voltage),
             Step::Rest { .. } => Demand::Current(0.0),
             Step::Table { time, current } => {
                 Demand::Current(interpolate(time, current, t.clamp(0.0, time[time.len() - 1])))
@@ -68,14 +101,30 @@ impl Step {
 
     /// Whether voltage cut-offs end this step.
     pub fn has_cutoffs(&self) -> bool {
-        !matches!(self, Step::Rest { .. })
+        !matches!(self, Step::Rest { .. } | Step::Hold { .. })
+    }
+
+    /// The voltage window (V) that ends this step, from the cell's cut-offs `(lower, upper)`
+    /// narrowed by the step's own `until_voltage` on the side its current flows to.
+    pub fn voltage_window(&self, (lower, upper): (f64, f64)) -> (f64, f64) {
+        let (sign, until) = match self {
+            Step::Current { current: v, until_voltage, .. } | Step::CRate { rate: v, until_voltage, .. } | Step::Power { power: v, until_voltage, .. } => {
+                (v.signum(), *until_voltage)
+            }
+            _ => (0.0, None),
+        };
+        match until {
+            Some(u) if sign > 0.0 => (lower.max(u), upper),
+            Some(u) if sign < 0.0 => (lower, upper.min(u)),
+            _ => (lower, upper),
+        }
     }
 }
 
 impl Protocol {
     /// Constant-current discharge at `rate` C until the lower cut-off (at most `1.5 / rate` h).
     pub fn discharge(rate: f64) -> Self {
-        Self { steps: vec![Step::CRate { rate, duration: 1.5 * 3600.0 / rate.abs() }] }
+        Self { steps: vec![Step::CRate { rate, duration: 1.5 * 3600.0 / rate.abs(), until_voltage: None }] }
     }
 
     /// Total duration (s).
@@ -94,12 +143,23 @@ impl Protocol {
             if !(d > 0.0 && d.is_finite()) {
                 return Err(Error::invalid(field("duration"), d, "must be positive and finite"));
             }
+            if let Step::Current { until_voltage: Some(u), .. } | Step::CRate { until_voltage: Some(u), .. } | Step::Power { until_voltage: Some(u), .. } = step {
+                if !(u.is_finite() && *u > 0.0) {
+                    return Err(Error::invalid(field("until_voltage"), *u, "must be positive and finite"));
+                }
+            }
             match step {
                 Step::Current { current: v, .. } | Step::CRate { rate: v, .. } if !v.is_finite() => {
                     return Err(Error::invalid(field("current"), *v, "must be finite"));
                 }
                 Step::Power { power, .. } if !power.is_finite() => {
                     return Err(Error::invalid(field("power"), *power, "must be finite"));
+                }
+                Step::Hold { voltage, .. } if !(voltage.is_finite() && *voltage > 0.0) => {
+                    return Err(Error::invalid(field("voltage"), *voltage, "must be positive and finite"));
+                }
+                Step::Hold { until_current: Some(i), .. } if !(i.is_finite() && *i > 0.0) => {
+                    return Err(Error::invalid(field("until_current"), *i, "must be positive and finite (A, a magnitude)"));
                 }
                 Step::Table { time, current } => {
                     if time.len() < 2 || time.len() != current.len() {

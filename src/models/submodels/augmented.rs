@@ -191,7 +191,7 @@ mod tests {
         p.cell.rc_resistance = 0.012;
         p.cell.rc_capacitance = 800.0;
         let tau = 0.012 * 800.0;
-        let protocol = Protocol { steps: vec![Step::Current { current: 5.0, duration: 30.0 }, Step::Rest { duration: 60.0 }] };
+        let protocol = Protocol { steps: vec![Step::Current { current: 5.0, duration: 30.0, until_voltage: None }, Step::Rest { duration: 60.0 }] };
         let t: Vec<f64> = (0..=90).map(f64::from).collect();
         let plain = run(Submodels::default(), &p, &protocol, t.clone());
         let rc = run(Submodels { rc: true, ..Default::default() }, &p, &protocol, t.clone());
@@ -213,7 +213,7 @@ mod tests {
         let mut p = crate::params::chen2020();
         p.cell.hysteresis_voltage = 0.02;
         p.cell.hysteresis_rate = 20.0;
-        let protocol = Protocol { steps: vec![Step::Current { current: 5.0, duration: 600.0 }, Step::Rest { duration: 300.0 }] };
+        let protocol = Protocol { steps: vec![Step::Current { current: 5.0, duration: 600.0, until_voltage: None }, Step::Rest { duration: 300.0 }] };
         let t: Vec<f64> = (0..=18).map(|k| 50.0 * f64::from(k)).collect();
         let plain = run(Submodels::default(), &p, &protocol, t.clone());
         let hyst = run(Submodels { hysteresis: true, ..Default::default() }, &p, &protocol, t.clone());

@@ -1,5 +1,8 @@
 //! Runs a model through a protocol: consistent initialisation of algebraic states at every
-//! step start, stiff integration, cut-off events, and the recorded outputs.
+//! step start, stiff integration, cut-off events, and the recorded outputs. Voltage holds
+//! append the current to the states ([`hold`]).
+
+mod hold;
 
 use serde::Serialize;
 
@@ -110,12 +113,13 @@ struct Driven<'a> {
 }
 
 impl Driven<'_> {
-    /// Current (A) at time `t` in state `y`: the step's current, or for a power step the
-    /// smallest root of `I V(y, I) = P`.
+    /// Current (A) at time `t` in state `y`: the step's current, for a power step the
+    /// smallest root of `I V(y, I) = P`, for a voltage hold the state after the model's.
     fn current(&self, t: f64, y: &[f64]) -> f64 {
         match self.step.demand_at(t - self.t0, self.capacity) {
             Demand::Current(i) => i,
             Demand::Power(p) => self.current_for_power(p, y),
+            Demand::Voltage(_) => y[self.model.len()],
         }
     }
 
@@ -261,6 +265,7 @@ struct IntervalEnd {
 
 impl Recorder<'_> {
     fn record(&mut self, t: f64, y: &[f64], i: f64, v: f64, q: f64, e: f64) {
+        let y = &y[..self.model.len()];
         let s = &mut self.sol;
         s.time.push(t);
         s.current.push(i);
@@ -290,7 +295,7 @@ impl Recorder<'_> {
             dense.eval_ranges(t, &self.outputs, buf);
         }
         let i = drive.current(t, buf);
-        let v = self.model.voltage(buf, i);
+        let v = self.model.voltage(&buf[..self.model.len()], i);
         let (q, e) = (self.q, self.e);
         self.record(t, buf, i, v, q, e);
     }
@@ -306,14 +311,14 @@ impl Recorder<'_> {
         let mut sample = |t: f64, buf: &mut [f64]| {
             dense.eval_ranges(t, &self.outputs, buf);
             let i = drive.current(t, buf);
-            (i, i * self.model.voltage(buf, i))
+            (i, i * self.model.voltage(&buf[..self.model.len()], i))
         };
         let mid = sample(0.5 * (a + b), buf);
         let end = match at_b {
             Some((i, v)) => (i, i * v),
             None => sample(b, buf),
         };
-        let voltage = if end.0 != 0.0 { end.1 / end.0 } else { self.model.voltage(buf, 0.0) };
+        let voltage = if end.0 != 0.0 { end.1 / end.0 } else { self.model.voltage(&buf[..self.model.len()], 0.0) };
         let (dq, de) = adaptive_simpson(&mut sample, buf, (a, b), [(self.i, self.p), mid, end], self.rtol, 12);
         // `buf` was overwritten by interior samples: restore y(b).
         if self.keep_states {
@@ -402,18 +407,34 @@ pub fn simulate_observed(
         p: 0.0,
     };
     let mut next_eval = 0usize;
-    let mut buf = vec![0.0; n];
     let mut t0 = 0.0;
+    let one_c = opts.capacity;
     for (k, step) in protocol.steps.iter().enumerate() {
         let drive = Driven { model, step, t0, capacity: opts.capacity };
-        // A power step's current depends on the algebraic states and vice versa: alternate.
-        let passes = if matches!(step, Step::Power { .. }) { 3 } else { 1 };
-        for _ in 0..passes {
-            let i0 = drive.current(t0, &y);
-            consistent_initialisation(model, ws, i0, &mut y).map_err(|err| at_time(err, t0))?;
+        let (lower, upper) = step.voltage_window((lower, upper));
+        // A voltage hold solves for the current as one more (algebraic) state.
+        let held = match *step {
+            Step::Hold { voltage, .. } => {
+                let i = hold::starting_current(model, ws, voltage, &mut y, rec.i, one_c).map_err(|err| at_time(err, t0))?;
+                y.push(i);
+                Some(hold::VoltageHold::new(model, voltage, one_c))
+            }
+            _ => {
+                // A power step's current depends on the algebraic states and vice versa: alternate.
+                let passes = if matches!(step, Step::Power { .. }) { 3 } else { 1 };
+                for _ in 0..passes {
+                    let i0 = drive.current(t0, &y);
+                    consistent_initialisation(model, ws, i0, &mut y).map_err(|err| at_time(err, t0))?;
+                }
+                None
+            }
+        };
+        if held.is_some() {
+            rec.outputs.push(n..n + 1);
         }
+        let mut buf = vec![0.0; y.len()];
         let i0 = drive.current(t0, &y);
-        let v0 = model.voltage(&y, i0);
+        let v0 = model.voltage(&y[..n], i0);
         if step.has_cutoffs() && i0 > 0.0 && v0 <= lower {
             return Err(Error::invalid(
                 "cell.lower_cutoff",
@@ -447,11 +468,15 @@ pub fn simulate_observed(
         let last_event = std::cell::Cell::new((f64::NAN, 0.0, 0.0));
         let event_fn = |t: f64, yy: &[f64]| {
             let i = drive.current(t, yy);
-            let v = model.voltage(yy, i);
+            let v = model.voltage(&yy[..n], i);
             last_event.set((t, i, v));
-            (v - lower).min(upper - v)
+            match step {
+                Step::Hold { until_current: Some(limit), .. } => i.abs() - limit,
+                _ => (v - lower).min(upper - v),
+            }
         };
-        let event: Option<&dyn Fn(f64, &[f64]) -> f64> = if step.has_cutoffs() { Some(&event_fn) } else { None };
+        let ends_early = step.has_cutoffs() || matches!(step, Step::Hold { until_current: Some(_), .. });
+        let event: Option<&dyn Fn(f64, &[f64]) -> f64> = if ends_early { Some(&event_fn) } else { None };
         let mut observer = |t_old: f64, dense: &DenseOutput| {
             let t_new = dense.t_end();
             if let Some(te) = t_eval {
@@ -482,7 +507,17 @@ pub fn simulate_observed(
         let t_end = t0 + step.duration();
         let mut stats = SolverStats::default();
         let dae = UnderCurrent { model, current: |t: f64, y: &[f64]| drive.current(t, y) };
-        let reason = integrate(&dae, ws, &opts.solver, t0, &mut y, t_end, event, &mut observer, &mut stats);
+        let reason = match &held {
+            Some(hold) => {
+                let mut hold_ws = Workspace::new(n + 1, hold::VoltageHold::pattern(model))?;
+                integrate(hold, &mut hold_ws, &opts.solver, t0, &mut y, t_end, event, &mut observer, &mut stats)
+            }
+            None => integrate(&dae, ws, &opts.solver, t0, &mut y, t_end, event, &mut observer, &mut stats),
+        };
+        if held.is_some() {
+            y.truncate(n);
+            rec.outputs.pop();
+        }
         rec.sol.stats.add(&stats);
         match reason? {
             crate::solver::StopReason::Event(t) => {
