@@ -34,6 +34,23 @@ impl StoichiometryWindow {
     pub fn at(&self, soc: f64) -> (f64, f64) {
         (self.x0 + soc * (self.x100 - self.x0), self.y0 - soc * (self.y0 - self.y100))
     }
+
+    /// Sets the initial particle concentrations of `p` (mol/m^3) to state of charge `soc`.
+    pub fn place(&self, p: &mut ParameterSet, soc: f64) {
+        let (x, y) = self.at(soc);
+        p.negative.initial_concentration = x * p.negative.max_concentration;
+        p.positive.initial_concentration = y * p.positive.max_concentration;
+    }
+
+    /// The window of `p` between its cut-offs where its lithium reaches them, else where an
+    /// electrode fills or empties first (a design whose positive electrode is full before
+    /// the OCV falls to the lower cut-off ends its discharge there): defined for any valid
+    /// set, unlike [`stoichiometry_window`].
+    pub fn within_reach(p: &ParameterSet) -> Self {
+        let line = LithiumLine::of(p);
+        let (x0, x100) = (line.negative_at_ocv(p, p.cell.lower_cutoff), line.negative_at_ocv(p, p.cell.upper_cutoff));
+        Self { x0, x100, y0: line.positive(x0), y100: line.positive(x100) }
+    }
 }
 
 /// The stoichiometries reachable with the cyclable lithium of a set's initial state: the
@@ -141,8 +158,6 @@ pub fn set_initial_soc(p: &mut ParameterSet, soc: f64) -> Result<StoichiometryWi
         return Err(Error::invalid("soc", soc, "state of charge must lie in [0, 1]"));
     }
     let w = stoichiometry_window(p)?;
-    let (x, y) = w.at(soc);
-    p.negative.initial_concentration = x * p.negative.max_concentration;
-    p.positive.initial_concentration = y * p.positive.max_concentration;
+    w.place(p, soc);
     Ok(w)
 }

@@ -9,6 +9,7 @@ use crate::geometry::{BuilderPool, MeshSizes, ModelBuilder};
 use crate::models::{ModelKind, Submodels};
 use crate::params::{CellFormat, FARADAY, MassBasis, MassConvention, ParameterSet};
 use crate::protocol::{Protocol, Step};
+pub use super::pulse::PulseSpec;
 use crate::simulation::{SimOptions, simulate};
 
 /// A figure of merit of a discharged design.
@@ -23,6 +24,10 @@ pub enum Metric {
     GravimetricPowerDensity,
     /// Mean discharge power per cell volume (W/L).
     VolumetricPowerDensity,
+    /// Pulse power ([`PulseSpec`]) per cell mass (W/kg).
+    GravimetricPulsePowerDensity,
+    /// Pulse power ([`PulseSpec`]) per cell volume (W/L).
+    VolumetricPulsePowerDensity,
 }
 
 /// How a dependent parameter follows the decision variables: `target = constant - sum(of)`.
@@ -78,6 +83,11 @@ pub struct DesignMetrics {
     pub volumetric_energy_density: f64,
     pub gravimetric_power_density: f64,
     pub volumetric_power_density: f64,
+    /// Pulse power (W) and its densities (W/kg, W/L) when the problem asks for them
+    /// ([`PulseSpec`]); NaN otherwise.
+    pub pulse_power: f64,
+    pub gravimetric_pulse_power_density: f64,
+    pub volumetric_pulse_power_density: f64,
 }
 
 impl Metric {
@@ -88,7 +98,14 @@ impl Metric {
             Metric::VolumetricEnergyDensity => "volumetric energy density (W h/L)",
             Metric::GravimetricPowerDensity => "gravimetric power density (W/kg)",
             Metric::VolumetricPowerDensity => "volumetric power density (W/L)",
+            Metric::GravimetricPulsePowerDensity => "gravimetric pulse power density (W/kg)",
+            Metric::VolumetricPulsePowerDensity => "volumetric pulse power density (W/L)",
         }
+    }
+
+    /// Whether the metric needs a pulse ([`PulseSpec`]) besides the discharge.
+    pub fn needs_pulse(&self) -> bool {
+        matches!(self, Metric::GravimetricPulsePowerDensity | Metric::VolumetricPulsePowerDensity)
     }
 }
 
@@ -105,6 +122,8 @@ impl DesignMetrics {
             Metric::VolumetricEnergyDensity => self.volumetric_energy_density,
             Metric::GravimetricPowerDensity => self.gravimetric_power_density,
             Metric::VolumetricPowerDensity => self.volumetric_power_density,
+            Metric::GravimetricPulsePowerDensity => self.gravimetric_pulse_power_density,
+            Metric::VolumetricPulsePowerDensity => self.volumetric_pulse_power_density,
         }
     }
 }
@@ -139,6 +158,8 @@ pub struct DesignProblem {
     pub format: CellFormat,
     /// Which components count in the mass and volume.
     pub mass_convention: MassConvention,
+    /// The pulse whose power is measured besides the discharge, when asked for.
+    pub pulse: Option<PulseSpec>,
     /// Builders re-used across evaluations (one per concurrent evaluation).
     pool: BuilderPool,
 }
@@ -170,6 +191,7 @@ impl DesignProblem {
             power: None,
             format: CellFormat::FreeArea,
             mass_convention: MassConvention::Cellstudio,
+            pulse: None,
             pool: BuilderPool::default(),
         })
     }
@@ -180,6 +202,13 @@ impl DesignProblem {
             return Err(Error::invalid("operating.power", power, "must be positive"));
         }
         self.power = Some(power);
+        Ok(self)
+    }
+
+    /// Measures the pulse power of every candidate too ([`PulseSpec`]).
+    pub fn with_pulse(mut self, pulse: PulseSpec) -> Result<Self, Error> {
+        pulse.validate(&self.base)?;
+        self.pulse = Some(pulse);
         Ok(self)
     }
 
@@ -267,6 +296,10 @@ impl DesignProblem {
     }
 
     fn discharge(&self, builder: &mut ModelBuilder, p: &ParameterSet) -> Result<DesignMetrics, Error> {
+        let pulse_power = match &self.pulse {
+            Some(spec) => spec.power(builder, p)?.0,
+            None => f64::NAN,
+        };
         let built = builder.build(p)?;
         let sol = simulate(built.model.as_ref(), &mut built.workspace, &self.protocol(p), &SimOptions::for_cell(p), None)?;
         let budget = self.mass_basis(p)?;
@@ -288,6 +321,9 @@ impl DesignProblem {
             volumetric_energy_density: energy / (budget.volume * 1e3),
             gravimetric_power_density: power / budget.mass,
             volumetric_power_density: power / (budget.volume * 1e3),
+            pulse_power,
+            gravimetric_pulse_power_density: pulse_power / budget.mass,
+            volumetric_pulse_power_density: pulse_power / (budget.volume * 1e3),
         })
     }
 

@@ -6,5 +6,6 @@ pub mod fitting;
 pub mod joint;
 pub mod least_squares;
 pub mod posterior;
+pub mod pulse;
 pub mod sensitivity;
 pub mod sweep;

@@ -32,5 +32,19 @@ pub fn power_definition(problem: &DesignProblem, min_utilisation: f64) -> String
          release or the positive accept) stops early (transport-limited at this rate): its mean power describes a truncated run, \
          so it is flagged and kept out of fronts and of the best design, as is a design whose simulation fails.",
         100.0 * min_utilisation
+    ) + &pulse_definition(problem)
+}
+
+/// How pulse power is defined, when the problem measures it.
+fn pulse_definition(problem: &DesignProblem) -> String {
+    let Some(spec) = problem.pulse else { return String::new() };
+    let limit = spec.voltage.map_or_else(|| "the lower cut-off".to_string(), |v| format!("{v} V"));
+    format!(
+        " Pulse power (HPPC-style) is the largest constant discharge current a design sustains for {} s from rest at {:.0} % \
+         state of charge before its voltage reaches {limit}, times that voltage (USABC's available pulse power), found by \
+         bisection on the current to {:.0e} of it; it does not depend on where a full discharge stops.",
+        spec.seconds,
+        100.0 * spec.soc,
+        1e-4
     )
 }

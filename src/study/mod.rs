@@ -85,6 +85,9 @@ pub struct Operating {
     /// Smallest delivered / theoretical capacity (-) of a discharge that does not stop early
     /// (default 0.5); designs below it are flagged and kept out of fronts and bests.
     pub min_utilisation: Option<f64>,
+    /// The pulse of the pulse-power metrics (10 s from 50 % SOC to the lower cut-off when a
+    /// pulse metric is asked for without it).
+    pub pulse: Option<crate::problem::pulse::PulseSpec>,
 }
 
 /// Default of [`Operating::min_utilisation`].
@@ -387,6 +390,11 @@ impl Study {
         )?
         .with_format(self.cell.cell_format()?)?
         .with_mass_convention(self.cell.mass_convention()?)?;
+        let problem = match self.operating.pulse {
+            Some(spec) => problem.with_pulse(spec)?,
+            None if self.objective.maximise.iter().any(Metric::needs_pulse) => problem.with_pulse(Default::default())?,
+            None => problem,
+        };
         match self.operating.power {
             Some(power) => problem.with_power(power),
             None => Ok(problem),
