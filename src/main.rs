@@ -201,6 +201,13 @@ enum Command {
         overrides: Overrides,
         /// Study file, e.g. designs/gravimetric_chen2020.toml.
         study: PathBuf,
+        /// Evaluate only part K of N of the candidates (e.g. `2/8`, one per cluster task) into
+        /// `<output.dir>.shard-K-of-N/shard.json`; `--merge` combines them.
+        #[arg(long, conflicts_with = "merge")]
+        shard: Option<cellstudio::study::shard::Shard>,
+        /// Merge these shard folders (every part once) into the ordinary sweep output.
+        #[arg(long, num_args = 1..)]
+        merge: Vec<PathBuf>,
     },
 }
 
@@ -405,9 +412,15 @@ fn run(cli: Cli) -> Result<(), Error> {
             }
             Ok(())
         }
-        Command::Sweep { overrides, study } => {
+        Command::Sweep { overrides, study, shard, merge } => {
             let study = Study::from_file(&study)?.with_overrides(overrides.set)?;
-            let out = run_sweep(&study)?;
+            if let Some(shard) = shard {
+                let (file, points, seconds) = cellstudio::study::shard::run_shard(&study, shard)?;
+                println!("shard            {}/{}: {points} designs in {seconds:.2} s", shard.k, shard.n);
+                println!("wrote            {}", file.display());
+                return Ok(());
+            }
+            let out = if merge.is_empty() { run_sweep(&study)? } else { cellstudio::study::shard::merge_shards(&study, &merge)? };
             warn(&out.warnings);
             use cellstudio::problem::sweep::Status;
             println!("study            {}", study.name);

@@ -27,11 +27,16 @@ fn copy_dir(from: &Path, to: &Path) {
 #[test]
 fn readme_commands_run_as_written() {
     let readme = std::fs::read_to_string(Path::new(REPO).join("README.md")).unwrap();
-    let commands: Vec<String> = readme
-        .lines()
-        .filter_map(|l| l.trim().strip_prefix("cargo run --release -- "))
-        .map(|l| l.split('#').next().unwrap().trim().to_string())
-        .collect();
+    // A command may continue over lines ending in `\`.
+    let mut commands: Vec<String> = Vec::new();
+    let mut lines = readme.lines();
+    while let Some(line) = lines.next() {
+        let Some(mut cmd) = line.trim().strip_prefix("cargo run --release -- ").map(str::to_string) else { continue };
+        while let Some(head) = cmd.strip_suffix('\\').map(str::to_string) {
+            cmd = format!("{head} {}", lines.next().unwrap_or_default().trim());
+        }
+        commands.push(cmd.split(" #").next().unwrap().trim().to_string());
+    }
     assert!(commands.len() >= 10, "README commands not found: {commands:?}");
 
     let dir: PathBuf = std::env::temp_dir().join(format!("cellstudio-readme-{}", std::process::id()));
@@ -52,7 +57,7 @@ fn readme_commands_run_as_written() {
             continue;
         }
         let out = Command::new(env!("CARGO_BIN_EXE_cellstudio"))
-            .args(cmd.split_whitespace())
+            .args(shell_words(cmd))
             .current_dir(&dir)
             .output()
             .expect("binary runs");
@@ -66,4 +71,24 @@ fn readme_commands_run_as_written() {
     }
     assert!(ran + SKIPPED.len() >= commands.len());
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// `cmd` split into words as a shell would for these commands: on spaces outside double quotes.
+fn shell_words(cmd: &str) -> Vec<String> {
+    let (mut words, mut word, mut quoted) = (Vec::new(), String::new(), false);
+    for c in cmd.chars() {
+        match c {
+            '"' => quoted = !quoted,
+            c if c.is_whitespace() && !quoted => {
+                if !word.is_empty() {
+                    words.push(std::mem::take(&mut word));
+                }
+            }
+            c => word.push(c),
+        }
+    }
+    if !word.is_empty() {
+        words.push(word);
+    }
+    words
 }

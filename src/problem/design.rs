@@ -58,7 +58,7 @@ impl Tie {
 }
 
 /// Everything measured on one design's discharge.
-#[derive(Clone, Copy, Debug, Default, Serialize)]
+#[derive(Clone, Copy, Debug, Default, Serialize, Deserialize)]
 pub struct DesignMetrics {
     /// Delivered energy (W h).
     pub energy: f64,
@@ -84,10 +84,10 @@ pub struct DesignMetrics {
     pub gravimetric_power_density: f64,
     pub volumetric_power_density: f64,
     /// Pulse power (W) and its densities (W/kg, W/L) when the problem asks for them
-    /// ([`PulseSpec`]); NaN otherwise.
-    pub pulse_power: f64,
-    pub gravimetric_pulse_power_density: f64,
-    pub volumetric_pulse_power_density: f64,
+    /// ([`PulseSpec`]).
+    pub pulse_power: Option<f64>,
+    pub gravimetric_pulse_power_density: Option<f64>,
+    pub volumetric_pulse_power_density: Option<f64>,
 }
 
 impl Metric {
@@ -122,8 +122,8 @@ impl DesignMetrics {
             Metric::VolumetricEnergyDensity => self.volumetric_energy_density,
             Metric::GravimetricPowerDensity => self.gravimetric_power_density,
             Metric::VolumetricPowerDensity => self.volumetric_power_density,
-            Metric::GravimetricPulsePowerDensity => self.gravimetric_pulse_power_density,
-            Metric::VolumetricPulsePowerDensity => self.volumetric_pulse_power_density,
+            Metric::GravimetricPulsePowerDensity => self.gravimetric_pulse_power_density.unwrap_or(f64::NAN),
+            Metric::VolumetricPulsePowerDensity => self.volumetric_pulse_power_density.unwrap_or(f64::NAN),
         }
     }
 }
@@ -297,8 +297,8 @@ impl DesignProblem {
 
     fn discharge(&self, builder: &mut ModelBuilder, p: &ParameterSet) -> Result<DesignMetrics, Error> {
         let pulse_power = match &self.pulse {
-            Some(spec) => spec.power(builder, p)?.0,
-            None => f64::NAN,
+            Some(spec) => Some(spec.power(builder, p)?.0),
+            None => None,
         };
         let built = builder.build(p)?;
         let sol = simulate(built.model.as_ref(), &mut built.workspace, &self.protocol(p), &SimOptions::for_cell(p), None)?;
@@ -322,8 +322,8 @@ impl DesignProblem {
             gravimetric_power_density: power / budget.mass,
             volumetric_power_density: power / (budget.volume * 1e3),
             pulse_power,
-            gravimetric_pulse_power_density: pulse_power / budget.mass,
-            volumetric_pulse_power_density: pulse_power / (budget.volume * 1e3),
+            gravimetric_pulse_power_density: pulse_power.map(|w| w / budget.mass),
+            volumetric_pulse_power_density: pulse_power.map(|w| w / (budget.volume * 1e3)),
         })
     }
 

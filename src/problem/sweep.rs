@@ -2,14 +2,14 @@
 
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use super::design::{DesignMetrics, DesignProblem};
 use crate::geometry::Geometry;
 
 /// One candidate; `metrics` is `None` when its simulation failed (with the reason) or it
 /// was not evaluated (infeasible).
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct SweepPoint {
     pub x: Vec<f64>,
     pub metrics: Option<DesignMetrics>,
@@ -18,7 +18,7 @@ pub struct SweepPoint {
 }
 
 /// What became of a sweep point.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Status {
     /// Evaluated, a result.

@@ -10,6 +10,7 @@ pub mod fit;
 mod fit_data;
 pub mod joint_fit;
 pub mod sample;
+pub mod shard;
 pub mod pareto;
 pub mod sweep;
 

@@ -62,25 +62,37 @@ fn candidates(study: &Study, sweep: &super::Sweep) -> Result<Vec<Vec<f64>>, Erro
     })
 }
 
+/// The study's `[sweep]` table.
+pub(super) fn sweep_table(study: &Study) -> Result<&super::Sweep, Error> {
+    study.sweep.as_ref().ok_or_else(|| Error::InvalidSetting { field: "sweep".into(), reason: "the study has no [sweep] table".into() })
+}
+
+/// The study's sweep candidates, in order.
+pub(super) fn sweep_candidates(study: &Study) -> Result<Vec<Vec<f64>>, Error> {
+    candidates(study, sweep_table(study)?)
+}
+
 /// Evaluates the study's feasible grid points in parallel (points outside the linear
 /// constraints are skipped) and writes `sweep.csv`, `sweep.json` and plots of gravimetric and
 /// volumetric energy density into the output folder.
 pub fn run_sweep(study: &Study) -> Result<SweepOutcome, Error> {
-    let sweep = study.sweep.as_ref().ok_or_else(|| Error::InvalidSetting {
-        field: "sweep".into(),
-        reason: "the study has no [sweep] table".into(),
-    })?;
-    let problem = study.problem()?;
-    let feasibility = super::constraints::Feasibility::of(study)?;
-    let candidates = candidates(study, sweep)?;
+    let candidates = sweep_candidates(study)?;
     let out = study.output_dir()?;
+    let problem = study.problem()?;
     let start = Instant::now();
-    let baseline_x = study.baseline()?;
-    let baseline = problem.evaluate(&baseline_x)?;
+    let baseline = problem.evaluate(&study.baseline()?)?;
+    let points = evaluate_points(study, &problem, &baseline, candidates)?;
+    write_sweep(study, out, baseline, points, problem.rebuild_count(), start.elapsed().as_secs_f64())
+}
+
+/// Evaluates `candidates` of the study's problem in parallel and gives each its status
+/// (infeasible ones are skipped, not evaluated).
+pub(super) fn evaluate_points(study: &Study, problem: &crate::problem::design::DesignProblem, baseline: &DesignMetrics, candidates: Vec<Vec<f64>>) -> Result<Vec<SweepPoint>, Error> {
+    let feasibility = super::constraints::Feasibility::of(study)?;
     let feasible: Vec<Vec<f64>> = candidates.iter().filter(|x| feasibility.is_feasible(x)).cloned().collect();
-    let mut evaluated = evaluate_all(&problem, &feasible).into_iter();
+    let mut evaluated = evaluate_all(problem, &feasible).into_iter();
     let min_u = study.operating.min_utilisation();
-    let points: Vec<SweepPoint> = candidates
+    Ok(candidates
         .into_iter()
         .map(|x| {
             if !feasibility.is_feasible(&x) {
@@ -89,14 +101,22 @@ pub fn run_sweep(study: &Study) -> Result<SweepOutcome, Error> {
             let mut p = evaluated.next().expect("one result per feasible point");
             p.status = match p.metrics {
                 None => Status::Failed,
-                Some(m) if super::degenerate(&m, &baseline) => Status::Degenerate,
+                Some(m) if super::degenerate(&m, baseline) => Status::Degenerate,
                 Some(m) if m.stopped_early(min_u) => Status::StoppedEarly,
                 Some(_) => Status::Valid,
             };
             p
         })
-        .collect();
-    let seconds = start.elapsed().as_secs_f64();
+        .collect())
+}
+
+/// Writes a sweep's evaluated `points` (every candidate, in order) into the staged folder
+/// `out` and moves it into place: `sweep.csv`, `sweep.json`, plots. `rebuilds` and `seconds`
+/// are reported, not written, so a merged sweep writes what one run writes.
+pub(super) fn write_sweep(study: &Study, out: crate::output::OutputDir, baseline: DesignMetrics, points: Vec<SweepPoint>, rebuilds: usize, seconds: f64) -> Result<SweepOutcome, Error> {
+    let sweep = sweep_table(study)?;
+    let baseline_x = study.baseline()?;
+    let min_u = study.operating.min_utilisation();
     let n = points.len();
     let count = |s: Status| points.iter().filter(|p| p.status == s).count();
     let (failed, degenerate, early, infeasible) = (count(Status::Failed), count(Status::Degenerate), count(Status::StoppedEarly), count(Status::Infeasible));
@@ -210,7 +230,7 @@ pub fn run_sweep(study: &Study) -> Result<SweepOutcome, Error> {
         files.push(path);
     }
     let files = out.commit(&files)?;
-    Ok(SweepOutcome { points, baseline, rebuilds: problem.rebuild_count(), seconds, files, warnings })
+    Ok(SweepOutcome { points, baseline, rebuilds, seconds, files, warnings })
 }
 
 /// Plot scale and axis label of a decision variable: lengths in micrometres, volume fractions
