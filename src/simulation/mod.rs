@@ -2,14 +2,19 @@
 //! step start, stiff integration, cut-off events, and the recorded outputs. Voltage holds
 //! append the current to the states ([`hold`]).
 
+mod drive;
 mod hold;
+mod record;
 
 use serde::Serialize;
 
 use crate::error::Error;
 use crate::models::Model;
-use crate::protocol::{Demand, Protocol, Step};
-use crate::solver::{Dae, DenseOutput, SolverOptions, SolverStats, Workspace, integrate};
+use crate::protocol::{Protocol, Step};
+pub(crate) use drive::UnderCurrent;
+use drive::Driven;
+use record::Recorder;
+use crate::solver::{DenseOutput, SolverOptions, SolverStats, Workspace, integrate};
 
 /// Options of a simulation.
 #[derive(Clone, Debug)]
@@ -104,97 +109,6 @@ impl Solution {
     }
 }
 
-/// A model driven by one protocol step's current.
-struct Driven<'a> {
-    model: &'a dyn Model,
-    step: &'a Step,
-    t0: f64,
-    capacity: f64,
-}
-
-impl Driven<'_> {
-    /// Current (A) at time `t` in state `y`: the step's current, for a power step the
-    /// smallest root of `I V(y, I) = P`, for a voltage hold the state after the model's.
-    fn current(&self, t: f64, y: &[f64]) -> f64 {
-        match self.step.demand_at(t - self.t0, self.capacity) {
-            Demand::Current(i) => i,
-            Demand::Power(p) => self.current_for_power(p, y),
-            Demand::Voltage(_) => y[self.model.len()],
-        }
-    }
-
-    /// Fixed-point iteration `I <- P / V(y, I)` (it contracts while `|I dV/dI| < V`), with a
-    /// bracketing fallback near the maximum-power point. When the cell cannot deliver `P`,
-    /// the current of maximum power is returned, as a power-limited cycler would do: the
-    /// voltage then falls through the cut-off and the step ends there.
-    fn current_for_power(&self, p: f64, y: &[f64]) -> f64 {
-        let sign = p.signum();
-        // Work with |P| on the discharge or charge branch: I = sign * x, x >= 0.
-        let g = |x: f64| sign * x * self.model.voltage(y, sign * x) - p.abs();
-        let v0 = self.model.voltage(y, 0.0);
-        let mut x = p.abs() / v0;
-        for _ in 0..30 {
-            let next = p.abs() / (sign * self.model.voltage(y, sign * x));
-            if !next.is_finite() || next < 0.0 {
-                break;
-            }
-            let done = (next - x).abs() <= 1e-13 * (1.0 + x);
-            x = next;
-            if done {
-                return sign * x;
-            }
-        }
-        // Expand a bracket from zero while the delivered power still rises.
-        let (mut lo, mut hi) = (0.0, p.abs() / v0);
-        let (mut glo, mut ghi) = (g(lo), g(hi));
-        while ghi < 0.0 && ghi > glo && hi < 1e6 {
-            lo = hi;
-            glo = ghi;
-            hi *= 1.5;
-            ghi = g(hi);
-        }
-        if ghi >= 0.0 {
-            for _ in 0..200 {
-                let mid = 0.5 * (lo + hi);
-                if g(mid) >= 0.0 { hi = mid } else { lo = mid }
-                if hi - lo <= 1e-13 * (1.0 + hi) {
-                    break;
-                }
-            }
-            return sign * 0.5 * (lo + hi);
-        }
-        // Not deliverable: golden-section search for the maximum-power current.
-        let (mut a, mut b) = (0.0, hi);
-        let r = 0.5 * (5f64.sqrt() - 1.0);
-        for _ in 0..80 {
-            let (c, d) = (b - r * (b - a), a + r * (b - a));
-            if g(c) > g(d) { b = d } else { a = c }
-        }
-        sign * 0.5 * (a + b)
-    }
-}
-
-/// A model as a DAE for the integrator, under the applied current `current(t, y)` (A).
-pub(crate) struct UnderCurrent<'a, F> {
-    pub model: &'a dyn Model,
-    pub current: F,
-}
-
-impl<F: Fn(f64, &[f64]) -> f64> Dae for UnderCurrent<'_, F> {
-    fn len(&self) -> usize {
-        self.model.len()
-    }
-    fn mass(&self) -> &[f64] {
-        self.model.mass()
-    }
-    fn scale(&self) -> &[f64] {
-        self.model.scale()
-    }
-    fn rhs(&self, t: f64, y: &[f64], out: &mut [f64]) {
-        self.model.rhs(y, (self.current)(t, y), out)
-    }
-}
-
 /// Solves the algebraic rows `f_alg(y) = 0` for the algebraic states by Newton's method,
 /// holding the differential states fixed.
 pub fn consistent_initialisation(
@@ -231,134 +145,6 @@ pub fn consistent_initialisation(
         }
     }
     Err(Error::Solver { t: 0.0, reason: "consistent initialisation of algebraic states did not converge".into() })
-}
-
-/// Running totals and recording of outputs.
-struct Recorder<'a> {
-    model: &'a dyn Model,
-    /// Called at every output with the state and the current (see [`simulate_observed`]).
-    on_output: &'a mut dyn FnMut(&[f64], f64),
-    /// The states that voltage and temperature read ([`Model::output_states`]), as runs of
-    /// consecutive indices.
-    outputs: Vec<std::ops::Range<usize>>,
-    keep_states: bool,
-    /// Relative tolerance of the energy quadrature: the solver's.
-    rtol: f64,
-    sol: Solution,
-    /// Discharged charge (A h) and delivered energy (W h) at the end of the last step.
-    q: f64,
-    e: f64,
-    /// Current (A) and power (W) at the end of the last step (right limits at a protocol
-    /// step start).
-    i: f64,
-    p: f64,
-}
-
-/// Values at the end of a quadrature interval.
-struct IntervalEnd {
-    /// Charge (A h) and energy (W h) over the interval.
-    dq: f64,
-    de: f64,
-    current: f64,
-    voltage: f64,
-}
-
-impl Recorder<'_> {
-    fn record(&mut self, t: f64, y: &[f64], i: f64, v: f64, q: f64, e: f64) {
-        let y = &y[..self.model.len()];
-        let s = &mut self.sol;
-        s.time.push(t);
-        s.current.push(i);
-        s.voltage.push(v);
-        s.capacity.push(q);
-        s.energy.push(e);
-        s.temperature.push(self.model.temperature(y));
-        if self.keep_states {
-            s.states.push(y.to_vec());
-        }
-        (self.on_output)(y, i);
-    }
-
-    /// Charge and energy over `[a, b]` by adaptive Simpson quadrature on the interpolant, from
-    /// the current and power (`self.i`, `self.p`) at `a`; leaves `y(b)` in `buf` (only the
-    /// output states unless every state is kept). A step is
-    /// halved until the two halves agree with the whole to `rtol` (the solver's: the integral
-    /// need not be more accurate than the trajectory it integrates) of the charge and energy
-    /// scales, so long solver steps on a curved voltage do not bias the energy.
-    /// `at_b`, when known, is the current and voltage at `b` (the cut-off event evaluated them).
-    /// Records the state, current and voltage at `t` inside the step of `dense`, with the
-    /// charge and energy accumulated to the step's start.
-    fn sample(&mut self, dense: &DenseOutput, drive: &Driven, t: f64, buf: &mut [f64]) {
-        if self.keep_states {
-            dense.eval(t, buf);
-        } else {
-            dense.eval_ranges(t, &self.outputs, buf);
-        }
-        let i = drive.current(t, buf);
-        let v = self.model.voltage(&buf[..self.model.len()], i);
-        let (q, e) = (self.q, self.e);
-        self.record(t, buf, i, v, q, e);
-    }
-
-    fn integrate_to(
-        &self,
-        dense: &DenseOutput,
-        drive: &Driven,
-        (a, b): (f64, f64),
-        at_b: Option<(f64, f64)>,
-        buf: &mut [f64],
-    ) -> IntervalEnd {
-        let mut sample = |t: f64, buf: &mut [f64]| {
-            dense.eval_ranges(t, &self.outputs, buf);
-            let i = drive.current(t, buf);
-            (i, i * self.model.voltage(&buf[..self.model.len()], i))
-        };
-        let mid = sample(0.5 * (a + b), buf);
-        let end = match at_b {
-            Some((i, v)) => (i, i * v),
-            None => sample(b, buf),
-        };
-        let voltage = if end.0 != 0.0 { end.1 / end.0 } else { self.model.voltage(&buf[..self.model.len()], 0.0) };
-        let (dq, de) = adaptive_simpson(&mut sample, buf, (a, b), [(self.i, self.p), mid, end], self.rtol, 12);
-        // `buf` was overwritten by interior samples: restore y(b).
-        if self.keep_states {
-            dense.eval(b, buf);
-        } else {
-            dense.eval_ranges(b, &self.outputs, buf);
-        }
-        IntervalEnd { dq: dq / 3600.0, de: de / 3600.0, current: end.0, voltage }
-    }
-}
-
-/// Adaptive Simpson quadrature of (current, power) over `[a, b]` given the samples at `a`,
-/// the midpoint and `b`, to relative tolerance `tol`; returns (A s, J).
-fn adaptive_simpson(
-    sample: &mut dyn FnMut(f64, &mut [f64]) -> (f64, f64),
-    buf: &mut [f64],
-    (a, b): (f64, f64),
-    [fa, fm, fb]: [(f64, f64); 3],
-    tol: f64,
-    depth: usize,
-) -> (f64, f64) {
-    let h = b - a;
-    let whole = (h / 6.0 * (fa.0 + 4.0 * fm.0 + fb.0), h / 6.0 * (fa.1 + 4.0 * fm.1 + fb.1));
-    let m = 0.5 * (a + b);
-    let fl = sample(0.5 * (a + m), buf);
-    let fr = sample(0.5 * (m + b), buf);
-    let left = (h / 12.0 * (fa.0 + 4.0 * fl.0 + fm.0), h / 12.0 * (fa.1 + 4.0 * fl.1 + fm.1));
-    let right = (h / 12.0 * (fm.0 + 4.0 * fr.0 + fb.0), h / 12.0 * (fm.1 + 4.0 * fr.1 + fb.1));
-    let halves = (left.0 + right.0, left.1 + right.1);
-    // Tolerances relative to the size of the integrand over the interval.
-    let scale_q = h * (fa.0.abs() + fb.0.abs() + 1e-12);
-    let scale_e = h * (fa.1.abs() + fb.1.abs() + 1e-12);
-    let converged = (halves.0 - whole.0).abs() <= tol * scale_q && (halves.1 - whole.1).abs() <= tol * scale_e;
-    if converged || depth == 0 {
-        // Richardson extrapolation of the two Simpson estimates.
-        return (halves.0 + (halves.0 - whole.0) / 15.0, halves.1 + (halves.1 - whole.1) / 15.0);
-    }
-    let l = adaptive_simpson(sample, buf, (a, m), [fa, fl, fm], tol, depth - 1);
-    let r = adaptive_simpson(sample, buf, (m, b), [fm, fr, fb], tol, depth - 1);
-    (l.0 + r.0, l.1 + r.1)
 }
 
 /// Simulates `model` through `protocol` from `y0` (or the model's initial state).
