@@ -300,6 +300,11 @@ impl Model for Dfn {
         self.temp(y)
     }
 
+    fn plating_margin(&self, y: &[f64], _current: f64) -> Option<f64> {
+        let l = &self.layout;
+        (0..l.nxn).map(|i| y[l.phis_n + i] - y[l.phie + i]).reduce(f64::min)
+    }
+
     fn solid_lithium(&self, y: &[f64]) -> f64 {
         let l = &self.layout;
         let mut total = 0.0;

@@ -105,6 +105,13 @@ pub trait Model: Send + Sync {
     fn solid_lithium(&self, y: &[f64]) -> f64;
     /// Open-circuit voltage at the particles' average stoichiometries (V).
     fn open_circuit_voltage(&self, y: &[f64]) -> f64;
+    /// The lithium-plating margin (V): the smallest `phi_s - phi_e` in the negative electrode,
+    /// the overpotential of lithium deposition against Li/Li+ (plating is favoured below 0),
+    /// x-averaged in the SPM and SPMe as PyBaMM's, the least over the volumes in the DFN;
+    /// `None` for a model without electrodes.
+    fn plating_margin(&self, _y: &[f64], _current: f64) -> Option<f64> {
+        None
+    }
     /// Indices of the states that [`Model::voltage`] and [`Model::temperature`] read: the
     /// energy quadrature interpolates only these (all states unless a model says fewer).
     fn output_states(&self) -> Vec<usize> {

@@ -42,6 +42,22 @@ impl Spm {
     }
 }
 
+impl Spm {
+    /// `phi_s - phi_e` (V) at an electrode's particle surface `c_s` (mol/m^3): its OCP plus
+    /// the reaction overpotential of the applied current.
+    fn surface_potential_difference(&self, side: Side, c_s: f64, y: &[f64], current: f64) -> f64 {
+        let ec = &self.ec;
+        let temp = self.temperature(y);
+        let e = ec.electrode(side);
+        let j = ec.mean_interfacial_current(side, current);
+        // PyBaMM 26.10's SPM regularises the particle factors of j0 but not the constant
+        // sqrt(c_e) (2.5e-7 of j0, 1e-5 mV): see docs/pybamm_equations.md, section 1.
+        let c_in = c_s.clamp(0.0, e.max_concentration);
+        let j0 = ec.rate_constant(side, temp) * ec.params.electrolyte.initial_concentration.sqrt() * particle_factor(c_in, e.max_concentration);
+        ec.ocp(side, c_s) + overpotential(j, j0, e.charge_transfer_coefficient, temp)
+    }
+}
+
 impl Model for Spm {
     fn name(&self) -> String {
         "SPM".into()
@@ -109,22 +125,14 @@ impl Model for Spm {
 
     fn voltage(&self, y: &[f64], current: f64) -> f64 {
         let ec = &self.ec;
-        let temp = self.temperature(y);
         let (sn, sp) = self.surface_concentrations(y);
-        let c_e = ec.params.electrolyte.initial_concentration;
-        let eta = |side: Side, c_s: f64| {
-            let e = ec.electrode(side);
-            let j = ec.mean_interfacial_current(side, current);
-            // PyBaMM 26.10's SPM regularises the particle factors of j0 but not the constant
-            // sqrt(c_e) (2.5e-7 of j0, 1e-5 mV): see docs/pybamm_equations.md, section 1.
-            let c_s = c_s.clamp(0.0, e.max_concentration);
-            let j0 = ec.rate_constant(side, temp) * c_e.sqrt() * particle_factor(c_s, e.max_concentration);
-            overpotential(j, j0, e.charge_transfer_coefficient, temp)
-        };
-        ec.ocp(Side::Positive, sp) + eta(Side::Positive, sp)
-            - ec.ocp(Side::Negative, sn)
-            - eta(Side::Negative, sn)
+        self.surface_potential_difference(Side::Positive, sp, y, current) - self.surface_potential_difference(Side::Negative, sn, y, current)
             - current * ec.contact_resistance()
+    }
+
+    fn plating_margin(&self, y: &[f64], current: f64) -> Option<f64> {
+        let (sn, _) = self.surface_concentrations(y);
+        Some(self.surface_potential_difference(Side::Negative, sn, y, current))
     }
 
     fn temperature(&self, y: &[f64]) -> f64 {

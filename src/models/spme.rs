@@ -195,6 +195,26 @@ impl Spme {
         concentration - current / self.ec.area() * k.ohmic_length / kappa
     }
 
+    /// `phi_s - phi_e` (V) x-averaged over an electrode with particle surface `c_s`
+    /// (mol/m^3): its OCP plus the reaction overpotential x-averaged with the local
+    /// electrolyte concentrations `ce` (mol/m^3) in the exchange current.
+    fn surface_potential_difference(&self, side: Side, c_s: f64, ce: &[f64], current: f64, temp: f64) -> f64 {
+        let ec = &self.ec;
+        let alpha = ec.electrode(side).charge_transfer_coefficient;
+        let j = ec.mean_interfacial_current(side, current);
+        // j0 is the particle factor, once per electrode, times the electrolyte factor.
+        // PyBaMM 26.10's SPMe regularises only the electrolyte factor: its regulariser
+        // does not recognise the x-averaged surface concentration and falls back to a
+        // scale of 1 mol/m^3, which leaves the particle square roots unchanged (2.6e-5
+        // of j0 at stoichiometry 0.9), so the plain product is used here.
+        let (k, c_max) = (ec.rate_constant(side, temp), ec.electrode(side).max_concentration);
+        let c_e_ref = ec.params.electrolyte.initial_concentration;
+        let c_in = c_s.clamp(0.0, c_max);
+        let j0_particle = k * (c_in * (c_max - c_in)).sqrt();
+        let j0 = ce[self.consts.electrode(side)].iter().map(|&c| j0_particle * electrolyte_factor(c, c_e_ref));
+        ec.ocp(side, c_s) + mean_overpotential(j, j0, alpha, temp)
+    }
+
     /// Solid-phase ohmic drop between the x-averaged and current-collector potentials (V).
     fn solid_ohmic(&self, current: f64) -> f64 {
         current / self.ec.area() * self.consts.solid_resistance
@@ -277,27 +297,16 @@ impl Model for Spme {
         let temp = self.temp(y);
         let (_, _, ce) = self.blocks(y);
         let (sn, sp) = self.surfaces(y);
-        // Reaction overpotential x-averaged over each electrode, with the local electrolyte
-        // concentration in the exchange current.
-        let eta = |side: Side, c_s: f64| {
-            let alpha = ec.electrode(side).charge_transfer_coefficient;
-            let j = ec.mean_interfacial_current(side, current);
-            // j0 is the particle factor, once per electrode, times the electrolyte factor.
-            // PyBaMM 26.10's SPMe regularises only the electrolyte factor: its regulariser
-            // does not recognise the x-averaged surface concentration and falls back to a
-            // scale of 1 mol/m^3, which leaves the particle square roots unchanged (2.6e-5
-            // of j0 at stoichiometry 0.9), so the plain product is used here.
-            let (k, c_max) = (ec.rate_constant(side, temp), ec.electrode(side).max_concentration);
-            let c_e_ref = ec.params.electrolyte.initial_concentration;
-            let c_s = c_s.clamp(0.0, c_max);
-            let j0_particle = k * (c_s * (c_max - c_s)).sqrt();
-            let j0 = ce[self.consts.electrode(side)].iter().map(|&c| j0_particle * electrolyte_factor(c, c_e_ref));
-            mean_overpotential(j, j0, alpha, temp)
-        };
-        ec.ocp(Side::Positive, sp) + eta(Side::Positive, sp) - ec.ocp(Side::Negative, sn) - eta(Side::Negative, sn)
+        self.surface_potential_difference(Side::Positive, sp, ce, current, temp) - self.surface_potential_difference(Side::Negative, sn, ce, current, temp)
             + self.electrolyte_overpotential(ce, current, temp)
             - self.solid_ohmic(current)
             - current * ec.contact_resistance()
+    }
+
+    fn plating_margin(&self, y: &[f64], current: f64) -> Option<f64> {
+        let (_, _, ce) = self.blocks(y);
+        let (sn, _) = self.surfaces(y);
+        Some(self.surface_potential_difference(Side::Negative, sn, ce, current, self.temp(y)))
     }
 
     fn temperature(&self, y: &[f64]) -> f64 {

@@ -42,6 +42,13 @@ impl StoichiometryWindow {
         p.positive.initial_concentration = y * p.positive.max_concentration;
     }
 
+    /// The charge (A h) the window holds: the lithium the negative electrode of `p` takes up
+    /// from 0 % to 100 %.
+    pub fn capacity(&self, p: &ParameterSet) -> f64 {
+        let n = &p.negative;
+        (self.x100 - self.x0) * n.active_fraction * n.thickness * n.max_concentration * p.cell.area() * super::FARADAY / 3600.0
+    }
+
     /// The window of `p` between its cut-offs where its lithium reaches them, else where an
     /// electrode fills or empties first (a design whose positive electrode is full before
     /// the OCV falls to the lower cut-off ends its discharge there): defined for any valid

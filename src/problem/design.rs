@@ -9,6 +9,7 @@ use crate::geometry::{BuilderPool, MeshSizes, ModelBuilder};
 use crate::models::{ModelKind, Submodels};
 use crate::params::{CellFormat, FARADAY, MassBasis, MassConvention, ParameterSet};
 use crate::protocol::{Protocol, Step};
+pub use super::fast_charge::{FastCharge, FastChargeSpec};
 pub use super::pulse::PulseSpec;
 use crate::simulation::{SimOptions, simulate};
 
@@ -28,6 +29,8 @@ pub enum Metric {
     GravimetricPulsePowerDensity,
     /// Pulse power ([`PulseSpec`]) per cell volume (W/L).
     VolumetricPulsePowerDensity,
+    /// The plating-free charge rate ([`FastChargeSpec`], 1/h).
+    FastChargeRate,
 }
 
 /// How a dependent parameter follows the decision variables: `target = constant - sum(of)`.
@@ -88,6 +91,8 @@ pub struct DesignMetrics {
     pub pulse_power: Option<f64>,
     pub gravimetric_pulse_power_density: Option<f64>,
     pub volumetric_pulse_power_density: Option<f64>,
+    /// The plating-free charge when the problem asks for it ([`FastChargeSpec`]).
+    pub fast_charge: Option<FastCharge>,
 }
 
 impl Metric {
@@ -100,12 +105,18 @@ impl Metric {
             Metric::VolumetricPowerDensity => "volumetric power density (W/L)",
             Metric::GravimetricPulsePowerDensity => "gravimetric pulse power density (W/kg)",
             Metric::VolumetricPulsePowerDensity => "volumetric pulse power density (W/L)",
+            Metric::FastChargeRate => "plating-free charge rate (C)",
         }
     }
 
     /// Whether the metric needs a pulse ([`PulseSpec`]) besides the discharge.
     pub fn needs_pulse(&self) -> bool {
         matches!(self, Metric::GravimetricPulsePowerDensity | Metric::VolumetricPulsePowerDensity)
+    }
+
+    /// Whether the metric needs a plating-free charge search ([`FastChargeSpec`]).
+    pub fn needs_fast_charge(&self) -> bool {
+        matches!(self, Metric::FastChargeRate)
     }
 }
 
@@ -124,6 +135,7 @@ impl DesignMetrics {
             Metric::VolumetricPowerDensity => self.volumetric_power_density,
             Metric::GravimetricPulsePowerDensity => self.gravimetric_pulse_power_density.unwrap_or(f64::NAN),
             Metric::VolumetricPulsePowerDensity => self.volumetric_pulse_power_density.unwrap_or(f64::NAN),
+            Metric::FastChargeRate => self.fast_charge.map_or(f64::NAN, |f| f.rate),
         }
     }
 }
@@ -160,6 +172,8 @@ pub struct DesignProblem {
     pub mass_convention: MassConvention,
     /// The pulse whose power is measured besides the discharge, when asked for.
     pub pulse: Option<PulseSpec>,
+    /// The charge whose plating-free rate is measured, when asked for.
+    pub fast_charge: Option<FastChargeSpec>,
     /// Builders re-used across evaluations (one per concurrent evaluation).
     pool: BuilderPool,
 }
@@ -192,6 +206,7 @@ impl DesignProblem {
             format: CellFormat::FreeArea,
             mass_convention: MassConvention::Cellstudio,
             pulse: None,
+            fast_charge: None,
             pool: BuilderPool::default(),
         })
     }
@@ -209,6 +224,13 @@ impl DesignProblem {
     pub fn with_pulse(mut self, pulse: PulseSpec) -> Result<Self, Error> {
         pulse.validate(&self.base)?;
         self.pulse = Some(pulse);
+        Ok(self)
+    }
+
+    /// Measures the plating-free charge of every candidate too ([`FastChargeSpec`]).
+    pub fn with_fast_charge(mut self, spec: FastChargeSpec) -> Result<Self, Error> {
+        spec.validate()?;
+        self.fast_charge = Some(spec);
         Ok(self)
     }
 
@@ -300,6 +322,10 @@ impl DesignProblem {
             Some(spec) => Some(spec.power(builder, p)?.0),
             None => None,
         };
+        let fast_charge = match &self.fast_charge {
+            Some(spec) => Some(spec.search(builder, p)?),
+            None => None,
+        };
         let built = builder.build(p)?;
         let sol = simulate(built.model.as_ref(), &mut built.workspace, &self.protocol(p), &SimOptions::for_cell(p), None)?;
         let budget = self.mass_basis(p)?;
@@ -324,6 +350,7 @@ impl DesignProblem {
             pulse_power,
             gravimetric_pulse_power_density: pulse_power.map(|w| w / budget.mass),
             volumetric_pulse_power_density: pulse_power.map(|w| w / (budget.volume * 1e3)),
+            fast_charge,
         })
     }
 

@@ -1,6 +1,7 @@
 //! Problems: what to simulate for a candidate parameter vector and what to measure.
 
 pub mod design;
+pub mod fast_charge;
 pub mod fit;
 pub mod fitting;
 pub mod joint;

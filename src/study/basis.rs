@@ -33,6 +33,21 @@ pub fn power_definition(problem: &DesignProblem, min_utilisation: f64) -> String
          so it is flagged and kept out of fronts and of the best design, as is a design whose simulation fails.",
         100.0 * min_utilisation
     ) + &pulse_definition(problem)
+        + &fast_charge_definition(problem)
+}
+
+/// How the plating-free charge rate is defined, when the problem measures it.
+fn fast_charge_definition(problem: &DesignProblem) -> String {
+    let Some(spec) = problem.fast_charge else { return String::new() };
+    format!(
+        " The plating-free charge rate is the largest constant charge rate (multiples of the design's 0-100 % window capacity \
+         per hour) that takes it from {:.0} % to {:.0} % state of charge without reaching the upper cut-off and with the \
+         negative electrode's phi_s - phi_e (the lithium-plating overpotential against Li/Li+; x-averaged in the SPM and SPMe, \
+         the least over the electrode in the DFN) never below {} V, found by bisection to 1e-4 of it.",
+        100.0 * spec.from_soc,
+        100.0 * spec.to_soc,
+        spec.margin
+    )
 }
 
 /// How pulse power is defined, when the problem measures it.

@@ -89,6 +89,9 @@ pub struct Operating {
     /// The pulse of the pulse-power metrics (10 s from 50 % SOC to the lower cut-off when a
     /// pulse metric is asked for without it).
     pub pulse: Option<crate::problem::pulse::PulseSpec>,
+    /// The charge of the plating-free charge rate (10 % to 80 %, margin 0 V when the metric is
+    /// asked for without it).
+    pub fast_charge: Option<crate::problem::fast_charge::FastChargeSpec>,
 }
 
 /// Default of [`Operating::min_utilisation`].
@@ -394,6 +397,11 @@ impl Study {
         let problem = match self.operating.pulse {
             Some(spec) => problem.with_pulse(spec)?,
             None if self.objective.maximise.iter().any(Metric::needs_pulse) => problem.with_pulse(Default::default())?,
+            None => problem,
+        };
+        let problem = match self.operating.fast_charge {
+            Some(spec) => problem.with_fast_charge(spec)?,
+            None if self.objective.maximise.iter().any(Metric::needs_fast_charge) => problem.with_fast_charge(Default::default())?,
             None => problem,
         };
         match self.operating.power {

@@ -144,6 +144,10 @@ impl Model for Augmented {
         self.base.open_circuit_voltage(&y[..self.n_base])
     }
 
+    fn plating_margin(&self, y: &[f64], current: f64) -> Option<f64> {
+        self.base.plating_margin(&y[..self.n_base], current)
+    }
+
     fn fields(&self, y: &[f64]) -> Vec<crate::models::Field> {
         self.base.fields(&y[..self.n_base])
     }
