@@ -308,6 +308,9 @@ fn run(cli: Cli) -> Result<(), Error> {
             println!("objective        maximise {}", m.label());
             println!("initial          {:.2} at {:?}", out.initial.get(m), out.initial_x);
             println!("optimised        {:.2} at {:?} ({:+.2} %)", out.optimised.get(m), out.result.x, out.improvement());
+            if !out.active_limits.is_empty() {
+                println!("active limits    {}", out.active_limits.join(", "));
+            }
             println!("search           {:?} after {} iterations, {} evaluations, {} model builds, {:.2} s ({:.0} evaluations/s)",
                 out.result.stop, out.result.iterations, out.result.evaluations, out.rebuilds, out.seconds, out.result.evaluations as f64 / out.seconds);
             for f in &out.files {

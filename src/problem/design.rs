@@ -31,6 +31,10 @@ pub enum Metric {
     VolumetricPulsePowerDensity,
     /// The plating-free charge rate ([`FastChargeSpec`], 1/h).
     FastChargeRate,
+    /// Discharged capacity (A h).
+    Capacity,
+    /// Delivered energy (W h).
+    Energy,
 }
 
 /// How a dependent parameter follows the decision variables: `target = constant - sum(of)`.
@@ -106,6 +110,8 @@ impl Metric {
             Metric::GravimetricPulsePowerDensity => "gravimetric pulse power density (W/kg)",
             Metric::VolumetricPulsePowerDensity => "volumetric pulse power density (W/L)",
             Metric::FastChargeRate => "plating-free charge rate (C)",
+            Metric::Capacity => "discharge capacity (A h)",
+            Metric::Energy => "discharge energy (W h)",
         }
     }
 
@@ -136,6 +142,8 @@ impl DesignMetrics {
             Metric::GravimetricPulsePowerDensity => self.gravimetric_pulse_power_density.unwrap_or(f64::NAN),
             Metric::VolumetricPulsePowerDensity => self.volumetric_pulse_power_density.unwrap_or(f64::NAN),
             Metric::FastChargeRate => self.fast_charge.map_or(f64::NAN, |f| f.rate),
+            Metric::Capacity => self.capacity,
+            Metric::Energy => self.energy,
         }
     }
 }

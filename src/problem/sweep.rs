@@ -33,6 +33,8 @@ pub enum Status {
     StoppedEarly,
     /// Outside the linear constraints: skipped, not evaluated.
     Infeasible,
+    /// Evaluated, but a simulated metric lies outside the study's limits.
+    OutsideLimits,
 }
 
 impl Status {
@@ -44,6 +46,7 @@ impl Status {
             Status::Degenerate => "degenerate",
             Status::StoppedEarly => "stopped_early",
             Status::Infeasible => "infeasible",
+            Status::OutsideLimits => "outside_limits",
         }
     }
 }

@@ -16,12 +16,19 @@ use crate::report::plot::{Series, line_plot};
 use crate::simulation::{SimOptions, simulate};
 
 /// Minimises minus the chosen metric; a failed simulation or a discharge that stops early
-/// (below `min_utilisation`) is penalised (+inf) and the search goes on.
+/// (below `min_utilisation`) is penalised (+inf) and the search goes on; a design outside the
+/// limits scores [`OUTSIDE_LIMITS`] plus its relative violation, worse than any inside.
 struct MaximiseMetric<'a> {
     problem: &'a DesignProblem,
     metric: Metric,
     min_utilisation: f64,
+    /// A design outside these is penalised like a failed one.
+    limits: &'a [super::limits::Limit],
 }
+
+/// The score of a design outside the limits before its violation is added: above minus any
+/// metric's value (densities are below 10^5).
+const OUTSIDE_LIMITS: f64 = 1e9;
 
 impl Objective for MaximiseMetric<'_> {
     fn dim(&self) -> usize {
@@ -29,7 +36,10 @@ impl Objective for MaximiseMetric<'_> {
     }
     fn evaluate(&self, x: &[f64]) -> f64 {
         match self.problem.evaluate(x) {
-            Ok(m) if !m.stopped_early(self.min_utilisation) => -m.get(self.metric),
+            Ok(m) if !m.stopped_early(self.min_utilisation) => match super::limits::violation(self.limits, &m) {
+                0.0 => -m.get(self.metric),
+                v => OUTSIDE_LIMITS + v,
+            },
             _ => f64::INFINITY,
         }
     }
@@ -47,6 +57,8 @@ pub struct DesignOutcome {
     pub files: Vec<PathBuf>,
     /// Warnings also written into the report (optimum on a bound).
     pub warnings: Vec<String>,
+    /// The study's limits active at the optimum, in words.
+    pub active_limits: Vec<String>,
 }
 
 impl DesignOutcome {
@@ -77,7 +89,7 @@ pub fn run_design(study: &Study) -> Result<DesignOutcome, Error> {
         .map_err(|e: toml::de::Error| Error::InvalidSetting { field: "optimiser".into(), reason: e.to_string() })?;
     let mut optimiser = by_name(&method, options.clone())?;
     let dir = study.output_dir()?;
-    let objective = MaximiseMetric { problem: &problem, metric, min_utilisation: study.operating.min_utilisation() };
+    let objective = MaximiseMetric { problem: &problem, metric, min_utilisation: study.operating.min_utilisation(), limits: &study.limits };
     let bounds = Bounds::new(
         study.variables.iter().map(|v| v.lower).collect(),
         study.variables.iter().map(|v| v.upper).collect(),
@@ -94,6 +106,13 @@ pub fn run_design(study: &Study) -> Result<DesignOutcome, Error> {
     let optimised = problem.evaluate(&result.x)
         .map_err(|e| Error::InvalidSetting { field: "design".into(), reason: format!("no valid design: the optimum at {:?} fails: {e}", result.x) })?;
     let value = optimised.get(metric);
+    if !super::limits::all_hold(&study.limits, &optimised) {
+        let limits: Vec<String> = study.limits.iter().filter(|l| !l.holds(&optimised)).map(super::limits::Limit::describe).collect();
+        return Err(Error::InvalidSetting {
+            field: "limits".into(),
+            reason: format!("no valid design: no candidate the search evaluated keeps {} (the best, at {:?}, does not)", limits.join(", "), result.x),
+        });
+    }
     if !(value > 0.0 && value.is_finite()) || super::degenerate(&optimised, &initial) {
         return Err(Error::InvalidSetting {
             field: "design".into(),
@@ -116,8 +135,23 @@ pub fn run_design(study: &Study) -> Result<DesignOutcome, Error> {
             warnings.push(format!("{what}'s discharge stops early: it delivers {:.1} % of its theoretical capacity (threshold {:.0} %)", 100.0 * m.utilisation, 100.0 * min_u));
         }
     }
-    let mut outcome =
-        DesignOutcome { metric, initial_x, initial, result, optimised, rebuilds: problem.rebuild_count(), seconds, files: Vec::new(), warnings };
+    if !super::limits::all_hold(&study.limits, &initial) {
+        let limits: Vec<String> = study.limits.iter().filter(|l| !l.holds(&initial)).map(super::limits::Limit::describe).collect();
+        warnings.push(format!("the baseline lies outside the limits ({}): the improvement compares with a design that does not qualify", limits.join(", ")));
+    }
+    let active_limits = super::limits::active(&study.limits, &optimised);
+    let mut outcome = DesignOutcome {
+        metric,
+        initial_x,
+        initial,
+        result,
+        optimised,
+        rebuilds: problem.rebuild_count(),
+        seconds,
+        files: Vec::new(),
+        warnings,
+        active_limits,
+    };
     write_outputs(study, &problem, &mut outcome, &method, dir.path())?;
     outcome.files = dir.commit(&outcome.files)?;
     Ok(outcome)
@@ -132,6 +166,7 @@ fn write_outputs(study: &Study, problem: &DesignProblem, out: &mut DesignOutcome
         "format": problem.format.label(),
         "mass_basis": { "initial": problem.mass_basis(&problem.parameters(&out.initial_x)?)?, "optimised": problem.mass_basis(&problem.parameters(&out.result.x)?)? },
         "result": out.result, "rebuilds": out.rebuilds, "seconds": out.seconds, "warnings": out.warnings,
+        "limits": study.limits, "active_limits": out.active_limits,
     });
     write_output(dir, "design.json", serde_json::to_string_pretty(&json).unwrap_or_default(), &mut out.files)?;
 
@@ -162,6 +197,11 @@ fn write_outputs(study: &Study, problem: &DesignProblem, out: &mut DesignOutcome
             m.gravimetric_power_density, m.volumetric_power_density);
     }
     let _ = writeln!(md, "\nImprovement: {:+.2} %.\n", out.improvement());
+    if !study.limits.is_empty() {
+        let all: Vec<String> = study.limits.iter().map(super::limits::Limit::describe).collect();
+        let active = if out.active_limits.is_empty() { "none".to_string() } else { out.active_limits.join(", ") };
+        let _ = writeln!(md, "Limits: {}; active at the optimum (within {:.0} % of the bound): {active}.\n", all.join(", "), 100.0 * super::limits::ACTIVE_WITHIN);
+    }
     for w in &out.warnings {
         let _ = writeln!(md, "**Warning:** {w}\n");
     }

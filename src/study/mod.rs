@@ -9,6 +9,7 @@ pub mod eis;
 pub mod fit;
 mod fit_data;
 pub mod joint_fit;
+pub mod limits;
 pub mod sample;
 pub mod shard;
 pub mod pareto;
@@ -44,6 +45,9 @@ pub struct Study {
     /// Linear constraints on the decision variables.
     #[serde(default)]
     pub constraints: Vec<Constraint>,
+    /// Bounds on simulated metrics ([`limits`]).
+    #[serde(default)]
+    pub limits: Vec<limits::Limit>,
     pub objective: Objectives,
     #[serde(default)]
     pub optimiser: toml::Table,
@@ -226,6 +230,11 @@ impl Study {
         Ok(study)
     }
 
+    /// The metrics the study evaluates: its objectives and those its limits bound.
+    pub fn metrics(&self) -> impl Iterator<Item = Metric> + '_ {
+        self.objective.maximise.iter().copied().chain(self.limits.iter().map(|l| l.metric))
+    }
+
     /// Checks bounds, paths and settings against the base parameter set.
     pub fn validate(&self) -> Result<(), Error> {
         let base = self.base_parameters()?;
@@ -241,6 +250,9 @@ impl Study {
         }
         if self.variables.is_empty() {
             return Err(Error::InvalidSetting { field: "variables".into(), reason: "at least one is needed".into() });
+        }
+        for (k, limit) in self.limits.iter().enumerate() {
+            limit.validate(k)?;
         }
         for (k, v) in self.variables.iter().enumerate() {
             base.get(&v.path).map_err(|_| Error::InvalidSetting {
@@ -396,12 +408,12 @@ impl Study {
         .with_mass_convention(self.cell.mass_convention()?)?;
         let problem = match self.operating.pulse {
             Some(spec) => problem.with_pulse(spec)?,
-            None if self.objective.maximise.iter().any(Metric::needs_pulse) => problem.with_pulse(Default::default())?,
+            None if self.metrics().any(|m| m.needs_pulse()) => problem.with_pulse(Default::default())?,
             None => problem,
         };
         let problem = match self.operating.fast_charge {
             Some(spec) => problem.with_fast_charge(spec)?,
-            None if self.objective.maximise.iter().any(Metric::needs_fast_charge) => problem.with_fast_charge(Default::default())?,
+            None if self.metrics().any(|m| m.needs_fast_charge()) => problem.with_fast_charge(Default::default())?,
             None => problem,
         };
         match self.operating.power {

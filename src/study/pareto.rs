@@ -68,7 +68,7 @@ pub fn run_pareto(study: &Study) -> Result<ParetoOutcome, Error> {
     let lower: Vec<f64> = study.variables.iter().map(|v| v.lower).collect();
     let upper: Vec<f64> = study.variables.iter().map(|v| v.upper).collect();
     let min_u = study.operating.min_utilisation();
-    let (failed, early, repaired) = (AtomicUsize::new(0), AtomicUsize::new(0), AtomicUsize::new(0));
+    let (failed, early, repaired, outside) = (AtomicUsize::new(0), AtomicUsize::new(0), AtomicUsize::new(0), AtomicUsize::new(0));
     // Objectives of the designs that stopped early, for the plot only.
     let truncated = std::sync::Mutex::new(Vec::new());
     let excluded = vec![f64::NEG_INFINITY; metrics.len()];
@@ -78,6 +78,10 @@ pub fn run_pareto(study: &Study) -> Result<ParetoOutcome, Error> {
             if let Ok(mut t) = truncated.lock() {
                 t.push((m.get(metrics[0]), m.get(metrics[1])));
             }
+            excluded.clone()
+        }
+        Ok(m) if !super::limits::all_hold(&study.limits, &m) => {
+            outside.fetch_add(1, Ordering::Relaxed);
             excluded.clone()
         }
         Ok(m) if feasibility.is_feasible(x) => metrics.iter().map(|&k| m.get(k)).collect(),
@@ -101,17 +105,21 @@ pub fn run_pareto(study: &Study) -> Result<ParetoOutcome, Error> {
     bar.finish_and_clear();
     let seconds = start.elapsed().as_secs_f64();
 
-    let (failed, stopped_early, repaired) = (failed.into_inner(), early.into_inner(), repaired.into_inner());
+    let (failed, stopped_early, repaired, outside) = (failed.into_inner(), early.into_inner(), repaired.into_inner(), outside.into_inner());
     let front: Vec<Individual> = front.into_iter().filter(|i| i.f.iter().all(|v| v.is_finite())).collect();
     if front.is_empty() {
         return Err(Error::InvalidSetting {
             field: "pareto".into(),
-            reason: format!("no valid design (nothing written): of {} designs {failed} failed and {stopped_early} stopped early", archive.len()),
+            reason: format!("no valid design (nothing written): of {} designs {failed} failed, {stopped_early} stopped early and {outside} lie outside the limits", archive.len()),
         });
     }
     let mut warnings = study.warnings();
     if failed > 0 {
         warnings.push(format!("{failed} of {} designs failed (kept out of the front)", archive.len()));
+    }
+    if outside > 0 {
+        let limits: Vec<String> = study.limits.iter().map(super::limits::Limit::describe).collect();
+        warnings.push(format!("{outside} of {} designs lie outside the limits ({}; kept out of the front)", archive.len(), limits.join(", ")));
     }
     if stopped_early > 0 {
         warnings.push(format!(

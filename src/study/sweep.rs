@@ -103,6 +103,7 @@ pub(super) fn evaluate_points(study: &Study, problem: &crate::problem::design::D
                 None => Status::Failed,
                 Some(m) if super::degenerate(&m, baseline) => Status::Degenerate,
                 Some(m) if m.stopped_early(min_u) => Status::StoppedEarly,
+                Some(m) if !super::limits::all_hold(&study.limits, &m) => Status::OutsideLimits,
                 Some(_) => Status::Valid,
             };
             p
@@ -142,6 +143,11 @@ pub(super) fn write_sweep(study: &Study, out: crate::output::OutputDir, baseline
     }
     if infeasible > 0 {
         warnings.push(format!("{infeasible} of {n} designs violate the linear constraints and were skipped (blank in the plots)"));
+    }
+    let outside = count(Status::OutsideLimits);
+    if outside > 0 {
+        let limits: Vec<String> = study.limits.iter().map(super::limits::Limit::describe).collect();
+        warnings.push(format!("{outside} of {n} designs lie outside the limits ({}; not a best design)", limits.join(", ")));
     }
     if let Some((p, _)) = best(&points, study.objective.maximise[0]) {
         let names: Vec<String> = study.variables.iter().map(|v| v.path.clone()).collect();
