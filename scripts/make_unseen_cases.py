@@ -257,7 +257,34 @@ def batch_z(root):
                 "note": "DFN data with 10 mOhm, SPM given, 2C pulses"}, seed=54)
 
 
-BATCHES = {"u": batch_u, "v": batch_v, "w": batch_w, "x": batch_x, "y": batch_y, "z": batch_z}
+
+def batch_q(root):
+    """Seventh batch: parameters off in the other direction (faster kinetics and diffusion
+    than the set's), negative LAM under a drive cycle, and a resistance in a self-heating cell
+    whose temperature is recorded (two effects)."""
+    p = chen()
+    p.update({"Contact resistance [Ohm]": 0.01, "Total heat transfer coefficient [W.m-2.K-1]": 20.0}, check_already_exists=False)
+    write_case(root, "q1_contact_in_warming_cell", lion.DFN(options={"thermal": "lumped", "contact resistance": "true"}), p,
+               ["Discharge at 2C for 2 minutes", "Rest for 5 minutes"] * 6,
+               {"effect": "contact_resistance+thermal", "candidate_model": "dfn", "accept": ["contact|series resistance", "thermal|heat"],
+                "note": "10 mOhm and lumped self-heating h = 20, 2C pulses, temperature recorded"}, temperature=True, seed=61)
+    p = scaled(chen(), "Negative electrode active material volume fraction", 0.92)
+    write_case(root, "q2_lam_negative_drive_spme", lion.SPMe(), p, drive_cycle(62, 120, -0.5, 2.0, 30),
+               {"effect": "active_material_loss", "candidate_model": "spme", "accept": ["active material", "capacity", "stoichiometr"],
+                "note": "8 % negative LAM, an hour of drive cycle from full"}, seed=62)
+    p = chen()
+    for side in ["Negative", "Positive"]:
+        p = scaled(p, f"{side} electrode exchange-current density [A.m-2]", 3.0)
+    write_case(root, "q3_faster_kinetics_pulses", lion.SPMe(), p, ["Discharge at 1C for 60 seconds", "Rest for 5 minutes", "Discharge at 2C for 30 seconds", "Rest for 5 minutes"] * 4,
+               {"effect": "kinetics", "candidate_model": "spme", "accept": ["kinetic", "charge transfer", "exchange"],
+                "note": "exchange currents x3 (faster than the set's), pulses at 1C and 2C from full"}, seed=63)
+    p = scaled(chen(), "Positive particle diffusivity [m2.s-1]", 3.0)
+    write_case(root, "q4_faster_diffusion_2C_dfn", lion.DFN(), p, discharge("2C"),
+               {"effect": "solid_diffusivity", "candidate_model": "dfn", "accept": ["diffusiv"],
+                "note": "positive particle diffusivity x3 (faster than the set's), 2C"}, seed=64)
+
+
+BATCHES = {"u": batch_u, "v": batch_v, "w": batch_w, "x": batch_x, "y": batch_y, "z": batch_z, "q": batch_q}
 
 if __name__ == "__main__":
     root = sys.argv[1] if len(sys.argv) > 1 else "out/unseen-cases"
