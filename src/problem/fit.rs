@@ -100,6 +100,8 @@ pub struct FitResult {
     pub std_errors: Vec<f64>,
     /// Correlation matrix of the model parameters.
     pub correlation: Vec<Vec<f64>>,
+    /// What the data determine of each model parameter ([`super::verdict`]).
+    pub standings: Vec<super::verdict::Standing>,
     pub evaluations: usize,
     pub gradient_evaluations: usize,
     pub iterations: usize,
@@ -135,7 +137,9 @@ pub(crate) struct Search {
 impl Search {
     pub(crate) fn into_result(self, id: Identifiability, voltage: Vec<f64>) -> FitResult {
         let r = self.result;
+        let standings = super::verdict::standings(&self.names, &r.x, &id.std_errors, &id.correlation);
         FitResult {
+            standings,
             names: self.names,
             x: r.x,
             cost: r.f,

@@ -10,3 +10,4 @@ pub mod posterior;
 pub mod pulse;
 pub mod sensitivity;
 pub mod sweep;
+pub mod verdict;

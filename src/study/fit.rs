@@ -430,12 +430,18 @@ fn report(study: &FitStudy, problem: &FittingProblem, r: &FitResult, initial_rms
     s
 }
 
-/// Markdown table of fitted values, standard errors and correlations.
+/// Markdown table of fitted values, standard errors, what the data determine
+/// ([`crate::problem::verdict`]) and correlations.
 pub fn parameter_table(r: &FitResult) -> String {
-    let mut s = String::from("| parameter | value | std. error | rel. error |\n|---|---|---|---|\n");
+    let mut s = String::from("| parameter | value | std. error | rel. error | verdict |\n|---|---|---|---|---|\n");
     for (k, name) in r.names.iter().enumerate() {
         let (v, e) = (r.x[k], r.std_errors.get(k).copied().unwrap_or(f64::NAN));
-        let _ = writeln!(s, "| {name} | {v:.5e} | {e:.3e} | {:.2}% |", 100.0 * e / v.abs());
+        let verdict = r.standings.get(k).map(|s| s.describe()).unwrap_or_default();
+        let _ = writeln!(s, "| {name} | {v:.5e} | {e:.3e} | {:.2}% | {verdict} |", 100.0 * e / v.abs());
+    }
+    if let Some((parts, rel)) = crate::problem::verdict::sloppiest(&r.names, &r.x, &r.std_errors, &r.correlation) {
+        let combination: Vec<String> = parts.iter().map(|(n, c)| format!("{c:+.2} ln {n}")).collect();
+        let _ = writeln!(s, "\nLeast determined combination: {} (relative standard error {:.1} %).", combination.join(" "), 100.0 * rel);
     }
     if r.correlation.len() > 1 {
         s.push_str("\nCorrelation matrix:\n\n|   |");
