@@ -29,3 +29,20 @@ fn seed_study_improves_gravimetric_energy_density() {
     }
     assert!(out.files.iter().all(|f| f.exists()));
 }
+
+#[test]
+fn more_starts_keep_the_best_end_and_report_every_one() {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/designs/gravimetric_chen2020.toml");
+    let mut study = Study::from_file(path.as_ref()).unwrap();
+    study.output.dir = std::env::temp_dir().join(format!("cellstudio-multistart-{}", std::process::id()));
+    study.optimiser.insert("starts".into(), toml::Value::Integer(3));
+    let out = run_design(&study).unwrap();
+    assert_eq!(out.start_values.len(), 3);
+    let best = out.start_values.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    assert_eq!(out.optimised.gravimetric_energy_density, best, "{:?}", out.start_values);
+    assert!(std::fs::read_to_string(out.files.iter().find(|f| f.ends_with("report.md")).unwrap()).unwrap().contains("Multi-start: 3 starts"));
+    std::fs::remove_dir_all(&study.output.dir).unwrap();
+    study.optimiser.insert("starts".into(), toml::Value::Integer(0));
+    let e = run_design(&study).err().unwrap().to_string();
+    assert!(e.contains("optimiser.starts"), "{e}");
+}

@@ -30,6 +30,10 @@ struct MaximiseMetric<'a> {
 /// metric's value (densities are below 10^5).
 const OUTSIDE_LIMITS: f64 = 1e9;
 
+/// Starts that end further apart than this fraction of the best are reported as different
+/// local optima.
+const MULTI_START_SPREAD: f64 = 1e-3;
+
 impl Objective for MaximiseMetric<'_> {
     fn dim(&self) -> usize {
         self.problem.variables.len()
@@ -59,6 +63,9 @@ pub struct DesignOutcome {
     pub warnings: Vec<String>,
     /// The study's limits active at the optimum, in words.
     pub active_limits: Vec<String>,
+    /// The metric each start of the search ended at (`[optimiser] starts`), the baseline's
+    /// first.
+    pub start_values: Vec<f64>,
 }
 
 impl DesignOutcome {
@@ -84,6 +91,13 @@ pub fn run_design(study: &Study) -> Result<DesignOutcome, Error> {
         .remove("method")
         .and_then(|v| v.as_str().map(str::to_string))
         .unwrap_or_else(|| "nelder-mead".into());
+    let starts = match table.remove("starts") {
+        None => 1,
+        Some(v) => v.as_integer().filter(|n| *n >= 1).ok_or_else(|| Error::InvalidSetting {
+            field: "optimiser.starts".into(),
+            reason: format!("must be a whole number of at least 1, got {v}"),
+        })? as usize,
+    };
     let options: OptimOptions = table
         .try_into()
         .map_err(|e: toml::de::Error| Error::InvalidSetting { field: "optimiser".into(), reason: e.to_string() })?;
@@ -101,8 +115,21 @@ pub fn run_design(study: &Study) -> Result<DesignOutcome, Error> {
     let initial = problem.evaluate(&initial_x)?;
     let x0 = opt_problem.project(&initial_x)?;
     let mut observer = ProgressObserver::new("design", options.max_iterations, |f| format!("best {:.3}", -f));
-    let result = optimiser.minimise(&opt_problem, &x0, &mut observer)?;
+    let mut result = optimiser.minimise(&opt_problem, &x0, &mut observer)?;
     observer.finish();
+    // More starts, when asked: seeded Latin-hypercube points over the bounds, each searched
+    // the same way; the best end is kept and the spread of the ends reported.
+    let mut start_values = vec![-result.f];
+    if starts > 1 {
+        let (lo, hi): (Vec<f64>, Vec<f64>) = study.variables.iter().map(|v| (v.lower, v.upper)).unzip();
+        for x in crate::problem::sweep::latin_hypercube(&lo, &hi, starts - 1, options.seed) {
+            let other = by_name(&method, options.clone())?.minimise(&opt_problem, &opt_problem.project(&x)?, &mut crate::optim::NoObserver)?;
+            start_values.push(-other.f);
+            if other.f < result.f {
+                result = other;
+            }
+        }
+    }
     let optimised = problem.evaluate(&result.x)
         .map_err(|e| Error::InvalidSetting { field: "design".into(), reason: format!("no valid design: the optimum at {:?} fails: {e}", result.x) })?;
     let value = optimised.get(metric);
@@ -139,6 +166,15 @@ pub fn run_design(study: &Study) -> Result<DesignOutcome, Error> {
         let limits: Vec<String> = study.limits.iter().filter(|l| !l.holds(&initial)).map(super::limits::Limit::describe).collect();
         warnings.push(format!("the baseline lies outside the limits ({}): the improvement compares with a design that does not qualify", limits.join(", ")));
     }
+    let (worst, best) = start_values.iter().filter(|v| v.is_finite()).fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| (a.min(*v), b.max(*v)));
+    if starts > 1 && best - worst > MULTI_START_SPREAD * best.abs() {
+        warnings.push(format!(
+            "the {starts} starts ended between {} and {} ({}): the search finds different local optima; the best is kept",
+            crate::error::number(worst),
+            crate::error::number(best),
+            metric.label()
+        ));
+    }
     let active_limits = super::limits::active(&study.limits, &optimised);
     let mut outcome = DesignOutcome {
         metric,
@@ -151,6 +187,7 @@ pub fn run_design(study: &Study) -> Result<DesignOutcome, Error> {
         files: Vec::new(),
         warnings,
         active_limits,
+        start_values,
     };
     write_outputs(study, &problem, &mut outcome, &method, dir.path())?;
     outcome.files = dir.commit(&outcome.files)?;
@@ -166,7 +203,7 @@ fn write_outputs(study: &Study, problem: &DesignProblem, out: &mut DesignOutcome
         "format": problem.format.label(),
         "mass_basis": { "initial": problem.mass_basis(&problem.parameters(&out.initial_x)?)?, "optimised": problem.mass_basis(&problem.parameters(&out.result.x)?)? },
         "result": out.result, "rebuilds": out.rebuilds, "seconds": out.seconds, "warnings": out.warnings,
-        "limits": study.limits, "active_limits": out.active_limits,
+        "limits": study.limits, "active_limits": out.active_limits, "start_values": out.start_values,
     });
     write_output(dir, "design.json", serde_json::to_string_pretty(&json).unwrap_or_default(), &mut out.files)?;
 
@@ -197,6 +234,10 @@ fn write_outputs(study: &Study, problem: &DesignProblem, out: &mut DesignOutcome
             m.gravimetric_power_density, m.volumetric_power_density);
     }
     let _ = writeln!(md, "\nImprovement: {:+.2} %.\n", out.improvement());
+    if out.start_values.len() > 1 {
+        let ends: Vec<String> = out.start_values.iter().map(|v| format!("{v:.2}")).collect();
+        let _ = writeln!(md, "Multi-start: {} starts (the baseline, then seeded Latin-hypercube points) ended at {}; the best is reported.\n", ends.len(), ends.join(", "));
+    }
     if !study.limits.is_empty() {
         let all: Vec<String> = study.limits.iter().map(super::limits::Limit::describe).collect();
         let active = if out.active_limits.is_empty() { "none".to_string() } else { out.active_limits.join(", ") };
