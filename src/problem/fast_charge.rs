@@ -104,18 +104,8 @@ impl FastChargeSpec {
         if !feasible(1e-2)? {
             return Err(Error::invalid("operating.fast_charge.margin", self.margin, "not held even at C/100"));
         }
-        let (mut lo, mut hi) = (1e-2, 1.0);
-        while feasible(hi)? {
-            lo = hi;
-            hi *= 2.0;
-            if hi > 1e3 {
-                return Err(Error::Solver { t: 0.0, reason: "a plating-free charge faster than 1000C: check the cell".into() });
-            }
-        }
-        while hi - lo > RATE_TOLERANCE * hi {
-            let mid = 0.5 * (lo + hi);
-            if feasible(mid)? { lo = mid } else { hi = mid }
-        }
+        let too_far = |_| Error::Solver { t: 0.0, reason: "a plating-free charge faster than 1000C: check the cell".into() };
+        let (lo, _) = super::bracket::edge(&mut feasible, 1e-2, 1.0, 1e3, RATE_TOLERANCE, too_far)?;
         // The fastest rate known to hold.
         Ok(FastCharge { rate: lo, current: lo * capacity, seconds: span / lo * 3600.0 })
     }

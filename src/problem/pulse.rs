@@ -94,18 +94,8 @@ impl PulseSpec {
             return Err(Error::invalid("operating.pulse.soc", self.soc, format!("the cell rests at or below the pulse's limit of {v_min} V there")));
         }
         let one_c = p.cell.nominal_capacity;
-        let (mut lo, mut hi) = (0.0, one_c);
-        while end_margin(hi)? > 0.0 {
-            lo = hi;
-            hi *= 2.0;
-            if hi > 1e3 * one_c {
-                return Err(Error::Solver { t: self.seconds, reason: format!("no pulse current up to {hi:.0} A reaches {v_min} V in {} s", self.seconds) });
-            }
-        }
-        while hi - lo > CURRENT_TOLERANCE * hi {
-            let mid = 0.5 * (lo + hi);
-            if end_margin(mid)? > 0.0 { lo = mid } else { hi = mid }
-        }
+        let too_far = |hi: f64| Error::Solver { t: self.seconds, reason: format!("no pulse current up to {hi:.0} A reaches {v_min} V in {} s", self.seconds) };
+        let (lo, hi) = super::bracket::edge(|i| Ok(end_margin(i)? > 0.0), 0.0, one_c, 1e3 * one_c, CURRENT_TOLERANCE, too_far)?;
         if lo == 0.0 && hi < 1e-3 * one_c {
             return Err(Error::Solver { t: 0.0, reason: format!("no pulse current above {hi:.2e} A holds {v_min} V for {} s", self.seconds) });
         }
