@@ -34,9 +34,10 @@
 //! 6 of 6 at its first run. A sixth batch (z1-z4) has two effects each, judged as b8: kinetics
 //! with a contact resistance (pulses at 1C and 3C), 10 % positive LAM with self-heating, lithium
 //! loss with a slow negative diffusivity, and electrolyte transport with a contact resistance
-//! (SPM given DFN data). 3 of 4 at the first run; z2 (LAM with self-heating at 1.5C) is
-//! "unexplained" and left out: after the nuisance initial state the two leave 4.7 mV that no
-//! single candidate removes (each alone is refitted, not the pair). A seventh batch (q1-q4:
+//! (SPM given DFN data). 3 of 4 at the first run; z2 (LAM with self-heating at 1.5C) was
+//! "unexplained": after the nuisance initial state the two leave 4.7 mV that no single
+//! candidate removes. It is named since a round that explains nothing refits the candidates in
+//! pairs (`diagnose::pairs`). A seventh batch (q1-q4:
 //! a resistance in a self-heating cell with its temperature recorded, negative LAM under an
 //! hour of drive cycle, kinetics and positive diffusion three times faster than the set's)
 //! named 4 of 4 at its first run.
@@ -341,4 +342,9 @@ fn q3_faster_kinetics_spme() {
 #[test]
 fn q4_faster_positive_diffusion_dfn() {
     run_case("diagnosis-extra/q4_faster_diffusion_2C_dfn");
+}
+
+#[test]
+fn z2_active_material_loss_and_self_heating_dfn() {
+    run_case("diagnosis-extra/z2_lam_and_thermal");
 }

@@ -24,6 +24,7 @@ mod baseline;
 pub mod candidates;
 pub mod features;
 pub mod locate;
+mod pairs;
 pub mod refit;
 pub mod report;
 pub mod select;
@@ -389,7 +390,15 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
     let structured = (analysis.structured || baseline.rmse_all > 2.0 * noise) && !no_room;
     let standings: Vec<select::Standing> =
         outcomes.iter().map(|c| select::Standing { candidate: c.candidate, comparison: c.comparison, named: c.named }).collect();
-    let verdict = select::verdict(&standings, structured, options.margins.min_delta_bic);
+    let mut verdict = select::verdict(&standings, structured, options.margins.min_delta_bic);
+    // No single effect: two may be hiding each other.
+    if matches!(verdict, Verdict::Unexplained) {
+        let round = pairs::Round { options, base, data: &data, split: &split, baseline: &baseline, fitted_paths: &fitted_paths, noise };
+        if let Some(pair) = pairs::best_pair(&outcomes, &round) {
+            verdict = Verdict::Found { candidate: pair.candidate, class: pair.class };
+            outcomes.insert(0, pair);
+        }
+    }
     let residual_after = outcomes.first().and_then(|c| c.fit.as_ref()).map(|f| {
         let r: Vec<f64> = data.voltage.iter().zip(&f.voltage).map(|(d, m)| d - m).collect();
         locate::analyse(&data, &features, &r, q)

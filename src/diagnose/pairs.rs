@@ -1,0 +1,92 @@
+//! Two effects at once: when no single candidate explains a structured residual, two
+//! effects may be hiding each other (a lost electrode capacity and self-heating pull the
+//! voltage opposite ways). Every pair of candidates whose own fit lowered the training error
+//! at all is refitted together, the second added to the first's model, and counted and
+//! judged as a single candidate is (both effects' parameters and structural changes count).
+
+use rayon::prelude::*;
+
+use super::{Candidate, CandidateOutcome, DiagnoseOptions, FitOutcome, Split, refit_candidate, select};
+use crate::data::Recording;
+use crate::params::ParameterSet;
+
+/// What the pair search needs from the round.
+pub(super) struct Round<'a> {
+    pub options: &'a DiagnoseOptions,
+    pub base: &'a ParameterSet,
+    pub data: &'a Recording,
+    pub split: &'a Split,
+    pub baseline: &'a FitOutcome,
+    pub fitted_paths: &'a [String],
+    pub noise: f64,
+}
+
+/// The best named pair of `singles` (refitted candidates), as one candidate outcome named
+/// "A together with B"; `None` when no pair clears the margins with plausible values.
+pub(super) fn best_pair(singles: &[CandidateOutcome], round: &Round) -> Option<CandidateOutcome> {
+    let useful: Vec<&CandidateOutcome> =
+        singles.iter().filter(|c| c.next.is_some() && c.fit.as_ref().is_some_and(|f| f.rmse_train < round.baseline.rmse_train)).collect();
+    let pairs: Vec<(&CandidateOutcome, &CandidateOutcome)> = useful
+        .iter()
+        .enumerate()
+        .flat_map(|(i, a)| useful[i + 1..].iter().map(move |b| (*a, *b)))
+        .filter(|(a, b)| !(electrolyte(a.candidate) && electrolyte(b.candidate)))
+        .collect();
+    let n_train = round.split.train_points();
+    pairs
+        .into_par_iter()
+        .filter_map(|(a, b)| {
+            let next_a = a.next.as_ref()?;
+            let paths: Vec<String> = next_a.fitted.iter().map(|p| p.path.clone()).collect();
+            let aug = b.candidate.augment(&next_a.spec, &next_a.base, &paths)?;
+            // The first effect's fixed structural parameters count too.
+            let structural_a = a.candidate.augment(&round.options.spec, round.base, round.fitted_paths).map_or(0, |x| x.structural_parameters);
+            let change = format!("{}; {}", a.change, aug.change);
+            let (fit, _, next) = refit_candidate(b.candidate, aug, &next_a.fitted, &[], round.options, round.data, round.split);
+            let mut fit = fit?;
+            fit.parameters += structural_a;
+            let comparison = select::compare(round.baseline, &fit, n_train);
+            let m = &round.options.margins;
+            let clears = comparison.delta_bic > m.min_delta_bic
+                && comparison.ln_bayes_factor > 0.0
+                && comparison.holdout_gain >= m.min_holdout_gain
+                && comparison.explained >= m.size_floor(round.noise);
+            let (names, values): (Vec<String>, Vec<f64>) =
+                fit.names.iter().zip(&fit.values).filter(|(n, _)| !round.baseline.names.contains(n)).map(|(n, v)| (n.clone(), *v)).unzip();
+            // Twice the parameters: each must also be determined by the recording.
+            let undetermined = names.iter().zip(&values).filter_map(|(n, v)| {
+                let se = fit.std_errors[fit.names.iter().position(|m| m == n)?];
+                let relative = se / v.abs().max(f64::MIN_POSITIVE);
+                (!(relative <= crate::problem::verdict::MAX_RELATIVE_ERROR)).then(|| format!("{n} is not determined by this recording (±{:.0} %)", 100.0 * relative))
+            });
+            let implausible = [a.candidate, b.candidate]
+                .iter()
+                .find_map(|c| c.implausible(&names, &values, round.base).or_else(|| c.unresolved(&names, &values, round.data)))
+                .or_else(|| undetermined.into_iter().next());
+            // Named by the pair's own values (e.g. the share of capacity lost).
+            let name = format!("{} together with {}", a.candidate.named_by_values(&fit.names, &fit.values, round.base), b.candidate.named_by_values(&fit.names, &fit.values, round.base));
+            Some(CandidateOutcome {
+                candidate: a.candidate,
+                name,
+                class: if a.class == b.class { a.class } else { super::Class::MissingPhysics },
+                signature: format!("{}; {}", a.signature, b.signature),
+                plausible_range: format!("{}; {}", a.plausible_range, b.plausible_range),
+                change,
+                fit: Some(fit),
+                note: Some("two effects refitted together: neither alone explains the recording".into()),
+                comparison,
+                clears_margins: clears,
+                named: clears && implausible.is_none(),
+                implausible,
+                next,
+            })
+        })
+        .filter(|p| p.named)
+        .max_by(|p, q| p.comparison.delta_bic.total_cmp(&q.comparison.delta_bic))
+}
+
+/// The electrolyte candidates describe one physics (the electrolyte model and its
+/// properties): a pair of them is one effect, not two.
+fn electrolyte(c: Candidate) -> bool {
+    matches!(c, Candidate::Electrolyte | Candidate::ElectrolyteComposite | Candidate::ElectrolyteTransport)
+}
