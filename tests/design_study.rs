@@ -20,6 +20,10 @@ fn seed_study_improves_gravimetric_energy_density() {
         out.seconds
     );
     assert!(out.improvement() > 1.0, "no improvement: {:+.3} %", out.improvement());
+    // The study's 13 x 13 sweep is the check: its best grid point (269.29) does not beat the
+    // search's optimum (269.47).
+    let (_, grid_best) = out.sweep_best.clone().expect("the seed study has a [sweep] table");
+    assert!(out.optimised.gravimetric_energy_density >= grid_best, "{} < {grid_best}", out.optimised.gravimetric_energy_density);
     let p = study.problem().unwrap().parameters(&out.result.x).unwrap();
     let e = &p.positive;
     assert!((e.active_fraction + e.porosity + e.inactive_fraction() - 1.0).abs() < 1e-12);

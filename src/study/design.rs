@@ -66,6 +66,9 @@ pub struct DesignOutcome {
     /// The metric each start of the search ended at (`[optimiser] starts`), the baseline's
     /// first.
     pub start_values: Vec<f64>,
+    /// When the study has a `[sweep]` table: the best valid grid point and its metric, a
+    /// check that the search did not stop short of what a grid finds.
+    pub sweep_best: Option<(Vec<f64>, f64)>,
 }
 
 impl DesignOutcome {
@@ -175,6 +178,22 @@ pub fn run_design(study: &Study) -> Result<DesignOutcome, Error> {
             metric.label()
         ));
     }
+    let sweep_best = match &study.sweep {
+        Some(_) => {
+            let points = super::sweep::evaluate_points(study, &problem, &initial, super::sweep::sweep_candidates(study)?)?;
+            points
+                .into_iter()
+                .filter(|p| p.status == crate::problem::sweep::Status::Valid)
+                .filter_map(|p| p.metrics.map(|m| (p.x, m.get(metric))))
+                .max_by(|a, b| a.1.total_cmp(&b.1))
+        }
+        None => None,
+    };
+    if let Some((x, v)) = &sweep_best {
+        if *v > value * (1.0 + MULTI_START_SPREAD) {
+            warnings.push(format!("the sweep's best grid point, {} at {x:?}, beats the search's optimum ({}): the search stopped short", crate::error::number(*v), crate::error::number(value)));
+        }
+    }
     let active_limits = super::limits::active(&study.limits, &optimised);
     let mut outcome = DesignOutcome {
         metric,
@@ -188,6 +207,7 @@ pub fn run_design(study: &Study) -> Result<DesignOutcome, Error> {
         warnings,
         active_limits,
         start_values,
+        sweep_best,
     };
     write_outputs(study, &problem, &mut outcome, &method, dir.path())?;
     outcome.files = dir.commit(&outcome.files)?;
@@ -203,7 +223,7 @@ fn write_outputs(study: &Study, problem: &DesignProblem, out: &mut DesignOutcome
         "format": problem.format.label(),
         "mass_basis": { "initial": problem.mass_basis(&problem.parameters(&out.initial_x)?)?, "optimised": problem.mass_basis(&problem.parameters(&out.result.x)?)? },
         "result": out.result, "rebuilds": out.rebuilds, "seconds": out.seconds, "warnings": out.warnings,
-        "limits": study.limits, "active_limits": out.active_limits, "start_values": out.start_values,
+        "limits": study.limits, "active_limits": out.active_limits, "start_values": out.start_values, "sweep_best": out.sweep_best,
     });
     write_output(dir, "design.json", serde_json::to_string_pretty(&json).unwrap_or_default(), &mut out.files)?;
 
@@ -234,6 +254,10 @@ fn write_outputs(study: &Study, problem: &DesignProblem, out: &mut DesignOutcome
             m.gravimetric_power_density, m.volumetric_power_density);
     }
     let _ = writeln!(md, "\nImprovement: {:+.2} %.\n", out.improvement());
+    if let Some((x, v)) = &out.sweep_best {
+        let xs: Vec<String> = x.iter().map(|v| format!("{v:.4e}")).collect();
+        let _ = writeln!(md, "Against the study's sweep: its best valid grid point is {v:.2} at [{}]; the search's optimum is {:.2}.\n", xs.join(", "), out.optimised.get(out.metric));
+    }
     if out.start_values.len() > 1 {
         let ends: Vec<String> = out.start_values.iter().map(|v| format!("{v:.2}")).collect();
         let _ = writeln!(md, "Multi-start: {} starts (the baseline, then seeded Latin-hypercube points) ended at {}; the best is reported.\n", ends.len(), ends.join(", "));
