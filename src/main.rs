@@ -462,7 +462,7 @@ fn run(cli: Cli) -> Result<(), Error> {
             let protocol = match &protocol_file {
                 Some(path) => read_toml::<Protocol>(path)?,
                 None if !experiment.is_empty() => cellstudio::protocol::experiment::parse(&experiment, p.cell.nominal_capacity)?,
-                None => Protocol::discharge(c_rate),
+                None => Protocol::discharge_within(c_rate, p.discharge_time_limit(c_rate)),
             };
             let staged = OutputDir::create(&out, &[params.as_deref(), protocol_file.as_deref()].into_iter().flatten().collect::<Vec<_>>())?;
             let dir = staged.path();
@@ -486,6 +486,13 @@ fn run(cli: Cli) -> Result<(), Error> {
                 times.push(t.elapsed().as_secs_f64());
             }
             let sol = sol.expect("at least one run");
+            if protocol_file.is_none() && experiment.is_empty() && sol.cutoff_times.is_empty() {
+                eprintln!(
+                    "warning: the {c_rate} C discharge ended at its time limit ({:.0} s), not at the lower cut-off ({} V): it is cut short",
+                    sol.time.last().copied().unwrap_or(0.0),
+                    p.cell.lower_cutoff
+                );
+            }
             times.sort_by(f64::total_cmp);
             let median = times[times.len() / 2];
             let stem = format!("{}_simulation", model.to_string().to_lowercase());

@@ -83,3 +83,15 @@ fn protocol_with_negative_duration_is_named() {
         .to_string();
     assert!(err.contains("protocol.steps[0].duration") && err.contains("-5"), "{err}");
 }
+
+#[test]
+fn temperatures_in_celsius_are_named() {
+    let e = build_error(|p| p.thermal.ambient_temperature = 25.0);
+    assert!(e.contains("thermal.ambient_temperature") && e.contains("25") && e.contains("kelvin"), "{e}");
+    let dir = std::env::temp_dir().join(format!("cellstudio-bad-temperature-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let celsius = dir.join("celsius.csv");
+    std::fs::write(&celsius, "time_s,current_A,voltage_V,temperature_K\n0,5,4.1,298.1\n1,5,4.0,25.3\n").unwrap();
+    let e = Recording::from_csv(&celsius).unwrap_err().to_string();
+    assert!(e.contains("line 3") && e.contains("temperature_K") && e.contains("25.3"), "{e}");
+}

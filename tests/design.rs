@@ -2,7 +2,7 @@
 
 use cellstudio::models::ModelKind;
 use cellstudio::params::chen2020;
-use cellstudio::problem::design::{DesignProblem, Tie, theoretical_capacity};
+use cellstudio::problem::design::{DesignProblem, Tie};
 
 fn seed_problem() -> DesignProblem {
     let base = chen2020();
@@ -98,5 +98,19 @@ fn design_loop_rebuilds_only_for_geometry() {
         problem.evaluate(&[60e-6 + 5e-6 * k as f64, 0.665]).unwrap();
     }
     assert_eq!(problem.rebuild_count(), 5);
-    assert!(theoretical_capacity(&chen2020()) > 5.0);
+    assert!(chen2020().theoretical_capacity() > 5.0);
+}
+
+/// A design holding far more than its nominal capacity still discharges to the cut-off: the
+/// time limit follows its theoretical capacity (it was 1.5 h of the nominal current, which
+/// reported 1.5 x nominal capacity for any larger cell).
+#[test]
+fn discharge_reaches_the_cutoff_whatever_the_nominal_capacity() {
+    let mut base = chen2020();
+    base.cell.nominal_capacity = 2.5;
+    let full = seed_problem().evaluate(&[75.6e-6, 0.665]).unwrap();
+    let problem = DesignProblem::new(base, vec!["positive.thickness".into()], vec![], ModelKind::Spme, 1.0, false).unwrap();
+    let m = problem.evaluate(&[75.6e-6]).unwrap();
+    // At C/2 of the real cell it delivers a little more than at 1C, never 1.5 x 2.5 A h.
+    assert!(m.capacity > full.capacity && m.capacity < 1.02 * full.capacity, "{} A h vs {} A h at 1C", m.capacity, full.capacity);
 }

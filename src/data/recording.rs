@@ -5,6 +5,7 @@ use std::path::Path;
 
 use super::CsvFormat;
 use crate::error::Error;
+use crate::params::check::TEMPERATURE_RANGE;
 use crate::params::function::interpolate;
 
 /// A recording: time (s, non-decreasing; a repeated time marks a current step, as PyBaMM
@@ -74,7 +75,14 @@ impl Recording {
             }
             rec.voltage.push(v);
             if let (Some(c), Some(t)) = (ctemp, rec.temperature.as_mut()) {
-                t.push(format.temperature_in_kelvin(value(c)?)?);
+                let kelvin = format.temperature_in_kelvin(value(c)?)?;
+                if !TEMPERATURE_RANGE.contains(&kelvin) {
+                    return Err(parse_err(format!(
+                        "line {line}: `{}` = {kelvin} K is not a cell temperature (check temperature_unit = `{}`: degC reads as K)",
+                        &headers[c], format.temperature_unit
+                    )));
+                }
+                t.push(kelvin);
             }
         }
         if rec.time.len() < 2 {

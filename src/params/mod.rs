@@ -2,6 +2,7 @@
 //! the cell's mass and volume budget, and cell formats (can or pouch) that size the stack.
 
 pub(crate) mod check;
+mod capacity;
 mod chen2020;
 pub mod bpx;
 pub mod format;

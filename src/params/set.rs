@@ -3,7 +3,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::function::Function1D;
-use super::check::{check, non_negative, open_unit, positive};
+use super::check::{check, non_negative, open_unit, positive, temperature};
 use crate::error::Error;
 
 /// Gas constant (J/(mol K)).
@@ -309,9 +309,9 @@ impl ParameterSet {
         positive("cell.hysteresis_rate", c.hysteresis_rate)?;
         check("cell.hysteresis_initial", c.hysteresis_initial, c.hysteresis_initial.abs() <= 1.0, "must lie in [-1, 1]")?;
         let t = &self.thermal;
-        positive("thermal.reference_temperature", t.reference_temperature)?;
-        positive("thermal.ambient_temperature", t.ambient_temperature)?;
-        positive("thermal.initial_temperature", t.initial_temperature)?;
+        temperature("thermal.reference_temperature", t.reference_temperature)?;
+        temperature("thermal.ambient_temperature", t.ambient_temperature)?;
+        temperature("thermal.initial_temperature", t.initial_temperature)?;
         non_negative("thermal.heat_transfer_coefficient", t.heat_transfer_coefficient)?;
         non_negative("thermal.cooling_area", t.cooling_area)?;
         positive("thermal.cell_volume", t.cell_volume)?;

@@ -7,7 +7,7 @@ use serde::{Deserialize, Serialize};
 use crate::error::Error;
 use crate::geometry::{BuilderPool, MeshSizes, ModelBuilder};
 use crate::models::{ModelKind, Submodels};
-use crate::params::{CellFormat, FARADAY, MassBasis, MassConvention, ParameterSet};
+use crate::params::{CellFormat, MassBasis, MassConvention, ParameterSet};
 use crate::protocol::{Protocol, Step};
 pub use super::fast_charge::{FastCharge, FastChargeSpec};
 pub use super::pulse::PulseSpec;
@@ -79,7 +79,7 @@ pub struct DesignMetrics {
     pub volume: f64,
     /// Mean discharge current (A).
     pub current: f64,
-    /// Theoretical capacity of the design (A h), see [`theoretical_capacity`].
+    /// Theoretical capacity of the design (A h), see [`ParameterSet::theoretical_capacity`].
     pub theoretical_capacity: f64,
     /// Delivered over theoretical capacity (-): far below the baseline's when the discharge
     /// stops early (a design limited by transport at this rate).
@@ -146,18 +146,6 @@ impl DesignMetrics {
             Metric::Energy => self.energy,
         }
     }
-}
-
-/// Theoretical capacity (A h) of a cell from its initial state: the smaller of the lithium
-/// the negative electrode can release (down to stoichiometry 0) and the positive electrode
-/// can accept (up to stoichiometry 1).
-pub fn theoretical_capacity(p: &ParameterSet) -> f64 {
-    let a = p.cell.area();
-    let neg = &p.negative;
-    let pos = &p.positive;
-    let releasable = neg.active_fraction * neg.thickness * a * neg.initial_concentration;
-    let acceptable = pos.active_fraction * pos.thickness * a * (pos.max_concentration - pos.initial_concentration);
-    releasable.min(acceptable) * FARADAY / 3600.0
 }
 
 /// A design problem: decision variables (dotted parameter paths), ties, and the discharge.
@@ -273,12 +261,15 @@ impl DesignProblem {
         let step = match self.power {
             Some(power) => {
                 // Long enough for any design: the theoretical energy at the upper cut-off.
-                let energy = theoretical_capacity(p) * p.cell.upper_cutoff * 3600.0;
+                let energy = p.theoretical_capacity() * p.cell.upper_cutoff * 3600.0;
                 Step::Power { power, duration: 1.5 * energy / power, until_voltage: None }
             }
             None => {
-                let one_c = if self.rate_from_theoretical_capacity { theoretical_capacity(p) } else { p.cell.nominal_capacity };
-                Step::Current { current: self.c_rate * one_c, duration: 1.5 * 3600.0 / self.c_rate, until_voltage: None }
+                let one_c = if self.rate_from_theoretical_capacity { p.theoretical_capacity() } else { p.cell.nominal_capacity };
+                let current = self.c_rate * one_c;
+                // Long enough for any design: 1.5 times its theoretical capacity at this current.
+                let duration = 1.5 * 3600.0 * p.theoretical_capacity().max(one_c) / current;
+                Step::Current { current, duration, until_voltage: None }
             }
         };
         Protocol { steps: vec![step] }
@@ -336,6 +327,11 @@ impl DesignProblem {
         };
         let built = builder.build(p)?;
         let sol = simulate(built.model.as_ref(), &mut built.workspace, &self.protocol(p), &SimOptions::for_cell(p), None)?;
+        if sol.cutoff_times.is_empty() {
+            // Only a cut-off ends a design's discharge; a time limit would report a part of it.
+            let t = sol.time.last().copied().unwrap_or(0.0);
+            return Err(Error::Solver { t, reason: format!("the discharge reached its time limit at {t:.0} s before the lower cut-off ({} V)", p.cell.lower_cutoff) });
+        }
         let budget = self.mass_basis(p)?;
         let energy = sol.final_energy();
         let duration = sol.time.last().copied().unwrap_or(0.0);
@@ -348,8 +344,8 @@ impl DesignProblem {
             mass: budget.mass,
             volume: budget.volume,
             current,
-            theoretical_capacity: theoretical_capacity(p),
-            utilisation: sol.final_capacity() / theoretical_capacity(p),
+            theoretical_capacity: p.theoretical_capacity(),
+            utilisation: sol.final_capacity() / p.theoretical_capacity(),
             area: p.cell.area(),
             gravimetric_energy_density: energy / budget.mass,
             volumetric_energy_density: energy / (budget.volume * 1e3),

@@ -124,7 +124,13 @@ impl Step {
 impl Protocol {
     /// Constant-current discharge at `rate` C until the lower cut-off (at most `1.5 / rate` h).
     pub fn discharge(rate: f64) -> Self {
-        Self { steps: vec![Step::CRate { rate, duration: 1.5 * 3600.0 / rate.abs(), until_voltage: None }] }
+        Self::discharge_within(rate, 1.5 * 3600.0 / rate.abs())
+    }
+
+    /// Constant-current discharge at `rate` C until the lower cut-off or `duration` (s), e.g.
+    /// [`crate::params::ParameterSet::discharge_time_limit`], which only a cut-short run reaches.
+    pub fn discharge_within(rate: f64, duration: f64) -> Self {
+        Self { steps: vec![Step::CRate { rate, duration, until_voltage: None }] }
     }
 
     /// Total duration (s).

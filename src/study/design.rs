@@ -156,6 +156,19 @@ pub fn run_design(study: &Study) -> Result<DesignOutcome, Error> {
             ),
         });
     }
+    let min_u = study.operating.min_utilisation();
+    if optimised.stopped_early(min_u) {
+        // The search ranks such designs below every valid one: none it evaluated was valid.
+        return Err(Error::InvalidSetting {
+            field: "design".into(),
+            reason: format!(
+                "no valid design: the optimum at {:?} stops early, delivering {:.1} % of its theoretical capacity (threshold {:.0} %, operating.min_utilisation); lower operating.c_rate or widen the variables' bounds",
+                result.x,
+                100.0 * optimised.utilisation,
+                100.0 * min_u
+            ),
+        });
+    }
     let seconds = start.elapsed().as_secs_f64();
     let names: Vec<String> = study.variables.iter().map(|v| v.path.clone()).collect();
     let lower: Vec<f64> = study.variables.iter().map(|v| v.lower).collect();
@@ -163,11 +176,8 @@ pub fn run_design(study: &Study) -> Result<DesignOutcome, Error> {
     let mut warnings = study.warnings();
     warnings.extend(super::at_bound_warnings("the optimum", &names, &result.x, &lower, &upper));
     warnings.extend(super::truncation_warning("the design search", &result.stop, result.iterations, result.evaluations));
-    let min_u = study.operating.min_utilisation();
-    for (what, m) in [("the baseline", &initial), ("the optimum", &optimised)] {
-        if m.stopped_early(min_u) {
-            warnings.push(format!("{what}'s discharge stops early: it delivers {:.1} % of its theoretical capacity (threshold {:.0} %)", 100.0 * m.utilisation, 100.0 * min_u));
-        }
+    if initial.stopped_early(min_u) {
+        warnings.push(format!("the baseline's discharge stops early: it delivers {:.1} % of its theoretical capacity (threshold {:.0} %)", 100.0 * initial.utilisation, 100.0 * min_u));
     }
     if !super::limits::all_hold(&study.limits, &initial) {
         let limits: Vec<String> = study.limits.iter().filter(|l| !l.holds(&initial)).map(super::limits::Limit::describe).collect();

@@ -54,6 +54,8 @@ impl Shard {
 #[derive(Serialize, Deserialize)]
 struct ShardFile {
     study: String,
+    /// The study's settings as the shard ran them: shards of one sweep must agree on all.
+    settings: serde_json::Value,
     /// Candidates of the whole sweep.
     candidates: usize,
     shard: usize,
@@ -80,7 +82,7 @@ pub fn run_shard(study: &Study, shard: Shard) -> Result<(PathBuf, usize, f64), E
     let mine: Vec<Vec<f64>> = candidates[range.clone()].to_vec();
     let points = evaluate_points(study, &problem, &baseline, mine)?;
     let seconds = start.elapsed().as_secs_f64();
-    let file = ShardFile { study: study.name.clone(), candidates: m, shard: shard.k, shards: shard.n, first: range.start, rebuilds: problem.rebuild_count(), seconds, points };
+    let file = ShardFile { study: study.name.clone(), settings: settings(study)?, candidates: m, shard: shard.k, shards: shard.n, first: range.start, rebuilds: problem.rebuild_count(), seconds, points };
     let path = out.path().join(SHARD_FILE);
     let text = serde_json::to_string(&file).map_err(|e| Error::Io { path: path.display().to_string(), source: e.into() })?;
     crate::error::write_file(&path, text)?;
@@ -94,6 +96,7 @@ pub fn run_shard(study: &Study, shard: Shard) -> Result<(PathBuf, usize, f64), E
 pub fn merge_shards(study: &Study, shards: &[PathBuf]) -> Result<SweepOutcome, Error> {
     let candidates = sweep_candidates(study)?;
     let m = candidates.len();
+    let mine = settings(study)?;
     let bad = |path: &Path, why: String| Error::InvalidSetting { field: "--merge".into(), reason: format!("{}: {why}", path.display()) };
     let mut files: Vec<(PathBuf, ShardFile)> = Vec::new();
     for given in shards {
@@ -102,6 +105,9 @@ pub fn merge_shards(study: &Study, shards: &[PathBuf]) -> Result<SweepOutcome, E
         let file: ShardFile = serde_json::from_str(&text).map_err(|e| Error::Parse { path: path.display().to_string(), message: e.to_string() })?;
         if file.study != study.name || file.candidates != m {
             return Err(bad(&path, format!("a shard of \"{}\" with {} candidates, not of this study's {m}", file.study, file.candidates)));
+        }
+        if let Some((key, theirs, ours)) = first_difference(&file.settings, &mine, "") {
+            return Err(bad(&path, format!("ran with `{key}` = {theirs}, where this study has {ours}: not a shard of this sweep")));
         }
         files.push((path, file));
     }
@@ -128,6 +134,32 @@ pub fn merge_shards(study: &Study, shards: &[PathBuf]) -> Result<SweepOutcome, E
     write_sweep(study, out, baseline, points, rebuilds, seconds)
 }
 
+/// The study's settings as JSON, without its output section (shards write beside it).
+fn settings(study: &Study) -> Result<serde_json::Value, Error> {
+    let mut value = serde_json::to_value(study).map_err(|e| Error::InvalidSetting { field: "study".into(), reason: e.to_string() })?;
+    if let Some(map) = value.as_object_mut() {
+        map.remove("output");
+    }
+    Ok(value)
+}
+
+/// The first key (dotted, `[k]` for list items) whose values differ, with both values.
+fn first_difference(a: &serde_json::Value, b: &serde_json::Value, at: &str) -> Option<(String, String, String)> {
+    use serde_json::Value;
+    let key = |k: &str| if at.is_empty() { k.to_string() } else { format!("{at}.{k}") };
+    match (a, b) {
+        (Value::Object(x), Value::Object(y)) => {
+            let keys: std::collections::BTreeSet<&String> = x.keys().chain(y.keys()).collect();
+            keys.into_iter().find_map(|k| first_difference(x.get(k).unwrap_or(&Value::Null), y.get(k).unwrap_or(&Value::Null), &key(k)))
+        }
+        (Value::Array(x), Value::Array(y)) if x.len() == y.len() => {
+            x.iter().zip(y).enumerate().find_map(|(i, (u, v))| first_difference(u, v, &format!("{at}[{i}]")))
+        }
+        _ if a == b => None,
+        _ => Some((if at.is_empty() { "study".into() } else { at.to_string() }, a.to_string(), b.to_string())),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -145,5 +177,15 @@ mod tests {
         for bad in ["0/4", "5/4", "2", "a/4", "2/0"] {
             assert!(bad.parse::<Shard>().unwrap_err().to_string().contains("--shard"), "{bad}");
         }
+    }
+
+    #[test]
+    fn the_first_differing_setting_is_named() {
+        let a = serde_json::json!({"operating": {"c_rate": 1.0, "temperature": 298.15}, "variables": [{"lower": 1.0}]});
+        assert_eq!(first_difference(&a, &a, ""), None);
+        let b = serde_json::json!({"operating": {"c_rate": 1.0, "temperature": 25.0}, "variables": [{"lower": 1.0}]});
+        assert_eq!(first_difference(&b, &a, ""), Some(("operating.temperature".into(), "25.0".into(), "298.15".into())));
+        let c = serde_json::json!({"operating": {"c_rate": 1.0, "temperature": 298.15}, "variables": [{"lower": 2.0}]});
+        assert_eq!(first_difference(&c, &a, "").map(|d| d.0), Some("variables[0].lower".into()));
     }
 }
