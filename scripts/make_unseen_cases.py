@@ -284,7 +284,76 @@ def batch_q(root):
                 "note": "positive particle diffusivity x3 (faster than the set's), 2C"}, seed=64)
 
 
-BATCHES = {"u": batch_u, "v": batch_v, "w": batch_w, "x": batch_x, "y": batch_y, "z": batch_z, "q": batch_q}
+def urban_drive(seed, segments):
+    """A structured drive: each segment accelerates (1.5-3C, 5-11 s), cruises (0.3-1C, 10-39 s),
+    brakes with regeneration (charge 0.5-1.5C, 4-9 s) and idles (5-29 s)."""
+    rng = np.random.default_rng(seed)
+    steps = []
+    for _ in range(segments):
+        steps.append(f"Discharge at {rng.uniform(1.5, 3.0):.2f}C for {int(rng.integers(5, 12))} seconds")
+        steps.append(f"Discharge at {rng.uniform(0.3, 1.0):.2f}C for {int(rng.integers(10, 40))} seconds")
+        steps.append(f"Charge at {rng.uniform(0.5, 1.5):.2f}C for {int(rng.integers(4, 10))} seconds")
+        steps.append(f"Rest for {int(rng.integers(5, 30))} seconds")
+    return steps
+
+
+def batch_r(root):
+    """Eighth batch, made blind (before any run of the diagnosis on it): ambients of 40 and
+    10 degC, a constant-power discharge, a CC-CV charge, effects near the detection limit
+    (4 mOhm at C/2, 7 % lithium at low SOC), a structured drive cycle, a GITT sampled every 3 s,
+    two effects in a partial-discharge/HPPC protocol, and a charge-then-discharge DFN control.
+    Lithium loss and active-material loss are accepted only by their own words ("inventory",
+    "active material"), not by the shared "capacity"/"stoichiometr" of earlier batches."""
+    p = scaled(chen(), "Positive particle diffusivity [m2.s-1]", 0.4)
+    p.update({"Ambient temperature [K]": 313.15, "Initial temperature [K]": 313.15})
+    write_case(root, "r1_diffusivity_positive_power_40C", lion.SPMe(), p, ["Discharge at 18 W until 2.7 V", "Rest for 40 minutes"],
+               {"effect": "solid_diffusivity", "candidate_model": "spme", "accept": ["diffusiv"], "ambient_temperature_K": 313.15,
+                "note": "positive particle diffusivity x0.4 at 40 degC (isothermal), constant-power 18 W discharge from full"}, seed=71)
+    p = scaled(chen(), "Negative particle diffusivity [m2.s-1]", 0.3)
+    write_case(root, "r2_diffusivity_negative_cccv_charge", lion.DFN(), p,
+               ["Rest for 10 minutes", "Charge at 0.7C until 4.2 V", "Hold at 4.2 V until C/20", "Rest for 30 minutes"],
+               {"effect": "solid_diffusivity", "candidate_model": "dfn", "accept": ["diffusiv"],
+                "note": "negative particle diffusivity x0.3, seen only in a CC-CV charge (0.7C to 4.2 V, hold to C/20) from 10 % SOC"},
+               initial_soc=0.1, seed=72)
+    p = chen(); p.update({"Contact resistance [Ohm]": 0.004}, check_already_exists=False)
+    write_case(root, "r3_contact_4mohm_c2_pulses", lion.DFN(options={"contact resistance": "true"}), p,
+               ["Discharge at C/2 for 60 seconds", "Rest for 3 minutes", "Charge at C/2 for 60 seconds", "Rest for 3 minutes"] * 10,
+               {"effect": "contact_resistance", "candidate_model": "dfn", "accept": ["contact", "series resistance"],
+                "note": "4 mOhm contact resistance (10 mV at C/2), symmetric C/2 pulses at 50 % SOC, 1 mV noise"},
+               initial_soc=0.5, seed=73)
+    p = scaled(chen(), "Initial concentration in negative electrode [mol.m-3]", 0.93)
+    write_case(root, "r4_inventory_low_soc_pulses_spm", lion.SPM(), p,
+               ["Discharge at 1C for 36 minutes", "Rest for 20 minutes"] + ["Discharge at 1C for 60 seconds or until 2.7 V", "Rest for 5 minutes"] * 18,
+               {"effect": "lithium_inventory_loss", "candidate_model": "spm", "accept": ["inventory"],
+                "note": "7 % less lithium in the negative electrode; 1C for 36 min (3 A h), then 18 pulses of 1C for 60 s with 5 min rests at low SOC (the last down to 2.84 V)"}, seed=74)
+    p = scaled(chen(), "Electrolyte conductivity [S.m-1]", 0.4)
+    p.update({"Ambient temperature [K]": 283.15, "Initial temperature [K]": 283.15})
+    write_case(root, "r5_conductivity_urban_drive_10C", lion.SPMe(), p, urban_drive(75, 40),
+               {"effect": "electrolyte_transport", "candidate_model": "spme", "accept": ["electrolyte"], "ambient_temperature_K": 283.15,
+                "note": "electrolyte conductivity x0.4 at 10 degC (isothermal), structured drive (accelerate/cruise/regen/idle) to 3C from 75 % SOC"},
+               initial_soc=0.75, seed=75)
+    p = scaled(chen(), "Positive electrode active material volume fraction", 0.9)
+    write_case(root, "r6_lam_positive_gitt_3s", lion.DFN(), p,
+               ["Discharge at C/3 for 15 minutes or until 2.7 V", "Rest for 25 minutes"] * 11 + ["Discharge at C/3 until 2.7 V", "Rest for 30 minutes"],
+               {"effect": "active_material_loss", "candidate_model": "dfn", "accept": ["active material"],
+                "note": "10 % loss of positive active material, C/3 GITT (15 min on, 25 min rest) from full, sampled every 3 s"},
+               seed=76, period=3)
+    p = chen()
+    for side in ["Negative", "Positive"]:
+        p = scaled(p, f"{side} electrode exchange-current density [A.m-2]", 0.4)
+    p = scaled(p, "Initial concentration in negative electrode [mol.m-3]", 0.95)
+    block = ["Discharge at 0.8C for 15 minutes or until 2.7 V", "Rest for 10 minutes", "Discharge at 2C for 20 seconds", "Rest for 5 minutes",
+             "Charge at 1C for 20 seconds", "Rest for 5 minutes"]
+    write_case(root, "r7_kinetics_and_inventory_hppc", lion.SPMe(), p, block * 4 + ["Discharge at 0.8C until 2.7 V", "Rest for 20 minutes"],
+               {"effect": "kinetics+lithium_inventory_loss", "candidate_model": "spme", "accept": ["kinetic|charge transfer|exchange", "inventory"],
+                "note": "exchange currents x0.4 and 5 % less lithium; 0.8C partial discharges each followed by 2C/1C pulses, then to 2.7 V"}, seed=77)
+    write_case(root, "r8_control_cccv_then_discharge_dfn", lion.DFN(), chen(),
+               ["Rest for 5 minutes", "Charge at C/2 until 4.1 V", "Hold at 4.1 V until C/20", "Rest for 20 minutes", "Discharge at 1C until 3.0 V", "Rest for 20 minutes"],
+               {"effect": "none", "candidate_model": "dfn", "accept": ["no missing"],
+                "note": "negative control: DFN data, DFN model, CC-CV charge from 20 % SOC then 1C discharge to 3.0 V"}, initial_soc=0.2, seed=78)
+
+
+BATCHES = {"u": batch_u, "v": batch_v, "w": batch_w, "x": batch_x, "y": batch_y, "z": batch_z, "q": batch_q, "r": batch_r}
 
 if __name__ == "__main__":
     root = sys.argv[1] if len(sys.argv) > 1 else "out/unseen-cases"
