@@ -130,6 +130,9 @@ impl Recording {
                 _ => out.push(fatal(format!("{message}: {hint}"))),
             }
         }
+        if let Some(f) = self.sign_finding() {
+            out.push(f);
+        }
         if s.peak_c_rate > 20.0 && !out.iter().any(|f| f.unit_error) {
             out.push(Finding { unit_error: false, message: format!("the peak current is {:.0}C: an unusually high rate", s.peak_c_rate) });
         }
@@ -140,6 +143,59 @@ impl Recording {
             });
         }
         out
+    }
+
+    /// The current's sign against the voltage's response at current steps: a cell's voltage
+    /// drops when its discharge current rises. When it rises at most steps (at least two, over
+    /// 80 %), or, with fewer steps, moves with the current over the longest load, the current
+    /// is charge-positive as read: a unit error.
+    ///
+    /// ```
+    /// use cellstudio::data::Recording;
+    /// // A discharge pulse logged charge-positive: -5 A while the voltage drops.
+    /// let time = vec![0.0, 0.0, 10.0, 10.0, 20.0];
+    /// let current = vec![0.0, -5.0, -5.0, 0.0, 0.0];
+    /// let voltage = vec![3.70, 3.65, 3.64, 3.69, 3.695];
+    /// let f = Recording { time, current, voltage, temperature: None }.sign_finding().unwrap();
+    /// assert!(f.unit_error && f.message.contains("discharge_positive"), "{f:?}");
+    /// ```
+    pub fn sign_finding(&self) -> Option<Finding> {
+        let (i, v) = (&self.current, &self.voltage);
+        let peak = i.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        // A step: the current moves by a fifth of its peak between two samples.
+        let (mut steps, mut rising) = (0usize, 0usize);
+        for k in 1..i.len() {
+            let (di, dv) = (i[k] - i[k - 1], v[k] - v[k - 1]);
+            if di.abs() > 0.2 * peak && dv != 0.0 {
+                steps += 1;
+                rising += usize::from(di * dv > 0.0);
+            }
+        }
+        let fix = "is the current charge-positive (flip the sign of the current column, or `[data.format] discharge_positive = false`)?";
+        if steps >= 2 {
+            return (rising as f64 > 0.8 * steps as f64).then(|| Finding {
+                unit_error: true,
+                message: format!("the voltage rises when the discharge current rises at {rising} of {steps} current steps: {fix}"),
+            });
+        }
+        // Too few steps: the longest load of one sign (by charge) must move the voltage against
+        // its current (down on discharge, up on charge); 20 mV the other way is a sign error.
+        let (mut best, mut start, mut charge) = ((0.0f64, 0.0f64), 0usize, 0.0f64);
+        for k in 1..=i.len() {
+            let same = k < i.len() && i[k] != 0.0 && i[k].signum() == i[start].signum();
+            if same {
+                charge += 0.5 * (i[k] + i[k - 1]).abs() * (self.time[k] - self.time[k - 1]);
+                continue;
+            }
+            if i[start] != 0.0 && charge > best.0 {
+                best = (charge, i[start].signum() * (v[k - 1] - v[start]));
+            }
+            (start, charge) = (k.min(i.len() - 1), 0.0);
+        }
+        (best.1 > 0.02).then(|| Finding {
+            unit_error: true,
+            message: format!("over its longest load the voltage moves {:.3} V with the current instead of against it: {fix}", best.1),
+        })
     }
 
     /// [`check_against_cell`](Self::check_against_cell) for a cell of nominal capacity
