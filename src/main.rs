@@ -272,6 +272,12 @@ fn run(cli: Cli) -> Result<(), Error> {
     match cli.command {
         Command::Diagnose { overrides, model, data, params, contact_resistance, thermal, fit, refits, start_at_rest, max_rounds, out } => {
             use cellstudio::diagnose::{DiagnoseOptions, default_fit_parameter, diagnose_rounds, report};
+            if refits == Some(0) {
+                return Err(Error::invalid("--refits", 0.0, "must be at least 1: with no candidate refitted nothing can be named or ruled out"));
+            }
+            if max_rounds == 0 {
+                return Err(Error::invalid("--max-rounds", 0.0, "must be at least 1"));
+            }
             let p = load_parameters(params.as_deref(), &overrides)?;
             let staged = OutputDir::create(&out, &[Some(data.as_path()), params.as_deref()].into_iter().flatten().collect::<Vec<_>>())?;
             let rec = cellstudio::data::cycler::read_recording(&data, &Default::default())?;

@@ -23,6 +23,32 @@ pub struct Nsga2Options {
     pub eta_mutation: f64,
 }
 
+impl Nsga2Options {
+    /// A population of at least 4 (even: pairs of parents), one or more generations, finite
+    /// positive distribution indices; errors name the `[optimiser]` key.
+    ///
+    /// ```
+    /// use cellstudio::pareto::Nsga2Options;
+    /// let e = Nsga2Options { generations: 0, ..Default::default() }.validate().unwrap_err();
+    /// assert!(e.to_string().contains("optimiser.generations"), "{e}");
+    /// ```
+    pub fn validate(&self) -> Result<(), crate::error::Error> {
+        use crate::error::Error;
+        if self.population < 4 || self.population % 2 != 0 {
+            return Err(Error::invalid("optimiser.population", self.population as f64, "must be an even number of at least 4"));
+        }
+        if self.generations == 0 {
+            return Err(Error::invalid("optimiser.generations", 0.0, "must be at least 1 (0 would report the random first sample as the front)"));
+        }
+        for (key, eta) in [("optimiser.eta_crossover", self.eta_crossover), ("optimiser.eta_mutation", self.eta_mutation)] {
+            if !(eta > 0.0 && eta.is_finite()) {
+                return Err(Error::invalid(key, eta, "must be positive"));
+            }
+        }
+        Ok(())
+    }
+}
+
 impl Default for Nsga2Options {
     fn default() -> Self {
         Self { population: 24, generations: 15, seed: 1, eta_crossover: 15.0, eta_mutation: 20.0 }
@@ -120,7 +146,7 @@ pub fn nsga2_repaired(
     progress: &mut dyn FnMut(usize),
 ) -> (Vec<Individual>, Vec<Individual>) {
     let dim = lower.len();
-    let pop_size = opts.population.max(4) & !1;
+    let pop_size = opts.population.max(4) & !1; // validated by Nsga2Options::validate in studies
     let mut rng = StdRng::seed_from_u64(opts.seed);
     let eval_all = |xs: Vec<Vec<f64>>| -> Vec<Individual> {
         xs.into_par_iter()

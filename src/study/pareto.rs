@@ -47,7 +47,9 @@ fn nsga2_options(study: &Study) -> Result<Nsga2Options, Error> {
             });
         }
     }
-    table.try_into().map_err(|e: toml::de::Error| Error::InvalidSetting { field: "optimiser".into(), reason: e.to_string() })
+    let opts: Nsga2Options = table.try_into().map_err(|e: toml::de::Error| Error::InvalidSetting { field: "optimiser".into(), reason: e.to_string() })?;
+    opts.validate()?;
+    Ok(opts)
 }
 
 /// Runs NSGA-II with the study's `[optimiser]` table as [`Nsga2Options`]: candidates outside
@@ -60,6 +62,9 @@ pub fn run_pareto(study: &Study) -> Result<ParetoOutcome, Error> {
             field: "objective.maximise".into(),
             reason: format!("pareto needs two or more objectives, got {}", metrics.len()),
         });
+    }
+    if let Some((k, m)) = metrics.iter().enumerate().find(|(k, m)| metrics[..*k].contains(m)) {
+        return Err(Error::InvalidSetting { field: format!("objective.maximise[{k}]"), reason: format!("{} is listed twice", m.label()) });
     }
     let opts = nsga2_options(study)?;
     let problem = study.problem()?;

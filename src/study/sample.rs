@@ -52,6 +52,10 @@ impl FitStudy {
     }
 }
 
+/// Largest split R-hat (-) and least effective sample size of converged chains.
+const MAX_RHAT: f64 = 1.01;
+const MIN_ESS: f64 = 100.0;
+
 /// Fits the study (writing its fit report), then samples the posterior and writes
 /// `posterior.md`, `posterior.json`, `samples.csv`, `trace.svg` and `marginals.svg`.
 pub fn run_sample(study: &FitStudy, data: Option<&Path>) -> Result<SampleOutcome, Error> {
@@ -138,7 +142,17 @@ pub fn run_sample(study: &FitStudy, data: Option<&Path>) -> Result<SampleOutcome
         result.acceptance_rates().iter().map(|a| (a * 1000.0).round() / 1000.0).collect::<Vec<_>>()
     );
     let _ = writeln!(md, "```\n{}\n```", summary.table());
+    let mut warnings = fitted.warnings;
+    // Vehtari et al. (2021): R-hat below 1.01 and at least 100 effective draws.
+    let (rhat, ess) = (summary.max_rhat(), summary.min_ess());
+    if !(rhat < MAX_RHAT && ess >= MIN_ESS) {
+        let warning = format!(
+            "the chains have not converged: R-hat up to {rhat:.3} (needs < {MAX_RHAT}), effective sample size down to {ess:.0} (needs >= {MIN_ESS}); the posterior summary is not reliable: raise [sampler] iterations and warmup"
+        );
+        let _ = writeln!(md, "\n**Warning:** {warning}.");
+        warnings.push(warning);
+    }
     write_output(dir, "posterior.md", md, &mut files)?;
     let files = out.commit(&files)?;
-    Ok(SampleOutcome { names, result: in_model, summary, seconds, files, notes: fitted.notes, warnings: fitted.warnings })
+    Ok(SampleOutcome { names, result: in_model, summary, seconds, files, notes: fitted.notes, warnings })
 }
