@@ -391,6 +391,7 @@ fn run(cli: Cli) -> Result<(), Error> {
                 inputs: params.into_iter().collect(),
             };
             let outcome = eis::run_eis(&run)?;
+            warn(&outcome.warnings);
             if let Some((names, x, result, seconds)) = &outcome.fit {
                 println!("fit: {} evaluations in {seconds:.2} s, cost {:.3e}, stop {:?}", result.evaluations, result.f, result.stop);
                 for (n, v) in names.iter().zip(x) {

@@ -66,6 +66,8 @@ pub struct EisOutcome {
     /// Fitted values with the optimiser's result, when fitting.
     pub fit: Option<(Vec<String>, Vec<f64>, OptimResult, f64)>,
     pub files: Vec<PathBuf>,
+    /// A fit cut short by its evaluation cap.
+    pub warnings: Vec<String>,
 }
 
 pub fn run_eis(run: &EisRun) -> Result<EisOutcome, Error> {
@@ -80,6 +82,7 @@ pub fn run_eis(run: &EisRun) -> Result<EisOutcome, Error> {
         EisFit::new(base.clone(), variables.to_vec(), probe, run.kind)?.with_submodels(run.submodels).model_spectrum(x)
     };
     let mut files = Vec::new();
+    let mut warnings = Vec::new();
     let nyquist = out.path().join("nyquist.svg");
     let title = format!("{} impedance at {:.0} % SOC", run.kind, 100.0 * run.soc);
     let (spectrum, fit) = match &run.fit {
@@ -90,19 +93,36 @@ pub fn run_eis(run: &EisRun) -> Result<EisOutcome, Error> {
         }
         Some((data_path, variables)) => {
             let data = Spectrum::from_csv(data_path)?;
+            // Two numbers (real, imaginary) per frequency; a fit needs more than it has unknowns.
+            if data.len() <= variables.len() {
+                return Err(Error::InvalidSetting {
+                    field: "--fit".into(),
+                    reason: format!("{}: {} frequencies cannot determine {} parameters: needs at least {}", data_path.display(), data.len(), variables.len(), variables.len() + 1),
+                });
+            }
             let objective = EisFit::new(base.clone(), variables.clone(), data.clone(), run.kind)?.with_submodels(run.submodels);
             let x0: Vec<f64> = variables.iter().map(|v| base.get(v)).collect::<Result<_, _>>()?;
             if let Some((v, x)) = variables.iter().zip(&x0).find(|(_, x)| !(**x > 0.0)) {
                 return Err(Error::invalid(v.clone(), *x, "must be positive to be fitted on a log scale"));
             }
             let bounds = Bounds::new(x0.iter().map(|x| x / 10.0).collect(), x0.iter().map(|x| x * 10.0).collect())?;
-            let problem = Problem::new(&objective, bounds)?.with_transforms(vec![Transform::Log; x0.len()])?;
+            let problem = Problem::new(&objective, bounds.clone())?.with_transforms(vec![Transform::Log; x0.len()])?;
             let options = OptimOptions::default().with_seed(1).with_max_evaluations(2000)?.with_f_tolerance(1e-12)?;
             let start = std::time::Instant::now();
             let mut progress = ProgressObserver::new("EIS fit", options.max_iterations, |f| format!("cost {f:.4e}"));
             let result = by_name(&run.optimiser, options)?.minimise(&problem, &x0, &mut progress)?;
             progress.finish();
             let seconds = start.elapsed().as_secs_f64();
+            // The search box is one decade either side of the set's value: an end on its edge
+            // is no estimate (nothing is written, as for a fit).
+            let on_bound = super::at_bound_warnings("the impedance fit", variables, &result.x, bounds.lower(), bounds.upper());
+            if !on_bound.is_empty() {
+                return Err(Error::InvalidSetting {
+                    field: "--parameters".into(),
+                    reason: format!("{}; it searches one decade either side of the set's value: set a starting value nearer the data with --set (nothing written)", on_bound.join("; ")),
+                });
+            }
+            warnings.extend(super::truncation_warning("the impedance fit", &result.stop, result.iterations, result.evaluations));
             let (initial, fitted) = (spectrum_of(variables, &x0)?, spectrum_of(variables, &result.x)?);
             nyquist_plot(&nyquist, &title, Some(("data", &data)), &[("initial", &initial), ("fitted", &fitted)])?;
             (fitted, Some((variables.clone(), result.x.clone(), result, seconds)))
@@ -113,5 +133,5 @@ pub fn run_eis(run: &EisRun) -> Result<EisOutcome, Error> {
     spectrum.write_csv(&csv)?;
     files.push(csv);
     let files = out.commit(&files)?;
-    Ok(EisOutcome { spectrum, fit, files })
+    Ok(EisOutcome { spectrum, fit, files, warnings })
 }
