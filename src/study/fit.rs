@@ -113,6 +113,13 @@ impl FitStudy {
 
     /// The study with `--set` overrides of the cell's parameters, checked again.
     pub fn with_overrides(mut self, overrides: Vec<crate::params::Override>) -> Result<Self, Error> {
+        // A fitted parameter takes its value from the fit, so a `--set` of it would be ignored.
+        if let Some((o, k)) = overrides.iter().find_map(|o| self.parameters.iter().position(|p| p.path == o.path).map(|k| (o, k))) {
+            return Err(Error::InvalidSetting {
+                field: format!("--set {}", o.path),
+                reason: format!("this study fits it (parameters[{k}]): set its starting value with parameters[{k}].initial instead"),
+            });
+        }
         if !overrides.is_empty() {
             self.cell.overrides = overrides;
             self.validate()?;
@@ -280,6 +287,9 @@ pub fn run_fit(study: &FitStudy, data: Option<&Path>) -> Result<FitOutcome, Erro
     Ok(outcome)
 }
 
+/// Fewest residual degrees of freedom (points less fitted parameters) without a warning.
+const MIN_DEGREES_OF_FREEDOM: usize = 10;
+
 /// [`run_fit`] writing into `dir` (a staged output folder).
 pub(crate) fn fit_into(study: &FitStudy, data: Option<&Path>, dir: &Path) -> Result<FitOutcome, Error> {
     if study.is_joint() {
@@ -297,6 +307,14 @@ pub(crate) fn fit_into(study: &FitStudy, data: Option<&Path>, dir: &Path) -> Res
     let mut warnings = super::at_bound_warnings("the fit", &names, &result.x, &lower, &upper);
     let at_bound: Vec<String> = super::on_bounds(&result.x, &lower, &upper).into_iter().map(|(k, _)| names[k].clone()).collect();
     warnings.extend(super::truncation_warning("the fit", &result.stop, result.iterations, result.evaluations));
+    let points = problem.weights.iter().filter(|w| **w > 0.0).count();
+    if points < problem.dim() + MIN_DEGREES_OF_FREEDOM {
+        warnings.push(format!(
+            "{points} points for {} fitted parameters leave {} degrees of freedom: the fit can follow the noise, and its standard errors are not reliable",
+            problem.dim(),
+            points.saturating_sub(problem.dim())
+        ));
+    }
     let mut files = fit_plots(dir, &study.name, "", &problem, &initial_voltage, &result.voltage)?;
     if let (Some(l), true) = (&study.landscape, problem.dim() >= 2) {
         let path = dir.join("landscape.svg");

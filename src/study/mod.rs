@@ -259,7 +259,12 @@ impl Study {
                 field: format!("variables[{k}].path"),
                 reason: format!("`{}` is not a scalar parameter", v.path),
             })?;
-            if !(v.lower < v.upper) || !v.lower.is_finite() || !v.upper.is_finite() {
+            for (side, b) in [("lower", v.lower), ("upper", v.upper)] {
+                if !b.is_finite() {
+                    return Err(Error::invalid(format!("variables[{k}].{side}"), b, "must be a finite number"));
+                }
+            }
+            if !(v.lower < v.upper) {
                 return Err(Error::invalid(format!("variables[{k}].upper"), v.upper, format!("must exceed lower = {}", v.lower)));
             }
             if v.log && (v.scale.is_some() || v.offset.is_some()) {
