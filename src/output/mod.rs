@@ -2,96 +2,37 @@
 //!
 //! Every command that writes a folder goes through [`OutputDir`]:
 //! - before any work, its input files are checked against the output folder (canonicalised
-//!   paths): an input inside the folder is refused, so no run writes over what it reads;
+//!   paths): an input inside it is refused, so no run writes over what it reads;
 //! - results are written into a temporary sibling folder (`.NAME.partial-PID`) and moved into
 //!   place only when the whole run succeeded ([`OutputDir::commit`]); a failed run removes the
 //!   temporary folder and leaves the previous results untouched;
-//! - a folder the run creates is renamed into place in one step. Into an existing folder the
-//!   files are renamed one by one; the files a previous run listed in the folder's manifest
-//!   (`.cellstudio-outputs`) and this run did not write are removed (no stale plots beside a new
-//!   report), and a file of the same name that no previous run wrote (a user's own file) is
-//!   never replaced: the run fails and says which file.
+//! - a folder the run creates is renamed into place in one step. Into an existing folder,
+//!   every destination is checked before anything moves: a folder, a link, or a file that no
+//!   earlier run listed in the folder's manifest (`.cellstudio-outputs`, so a user's own file)
+//!   fails the run, naming it, with nothing moved. Then the files are renamed in, the manifest
+//!   replaced, and the files the previous manifest listed that this run did not write are
+//!   removed, only where the manifest's rules allow ([`manifest`]: plain regular files of the
+//!   folder itself, none of the run's inputs); any other entry is left, with a warning.
+
+mod manifest;
+mod paths;
 
 use std::collections::BTreeSet;
-use std::path::{Component, Path, PathBuf};
+use std::path::{Path, PathBuf};
 
 use crate::error::{Error, Result};
 
-/// Name of the manifest listing the files a run wrote into its output folder.
-pub const MANIFEST: &str = ".cellstudio-outputs";
+pub use manifest::MANIFEST;
+pub use paths::{canonical, check_inputs, is_plain_relative};
 
 /// A run's output folder, staged in a temporary sibling until [`commit`](Self::commit).
 #[derive(Debug)]
 pub struct OutputDir {
     target: PathBuf,
     staging: PathBuf,
+    /// The run's inputs, canonicalised: never removed as stale results.
+    inputs: Vec<PathBuf>,
     committed: bool,
-}
-
-/// `path` made absolute with symbolic links resolved, also when its last components do not
-/// exist yet (the nearest existing ancestor is canonicalised, the rest appended).
-pub fn canonical(path: &Path) -> PathBuf {
-    let absolute = if path.is_absolute() {
-        path.to_path_buf()
-    } else {
-        std::env::current_dir().map(|d| d.join(path)).unwrap_or_else(|_| path.to_path_buf())
-    };
-    let mut tail = Vec::new();
-    let mut head = absolute.as_path();
-    loop {
-        if let Ok(c) = head.canonicalize() {
-            let mut out = c;
-            for part in tail.iter().rev() {
-                match part {
-                    Component::ParentDir => {
-                        out.pop();
-                    }
-                    Component::CurDir => {}
-                    other => out.push(other.as_os_str()),
-                }
-            }
-            return out;
-        }
-        match (head.parent(), head.components().next_back()) {
-            (Some(parent), Some(last)) => {
-                tail.push(last);
-                head = parent;
-            }
-            _ => return absolute,
-        }
-    }
-}
-
-/// Refuses an output folder that holds (or is) one of the run's inputs.
-///
-/// ```
-/// let dir = std::env::temp_dir().join(format!("cellstudio-doc-inputs-{}", std::process::id()));
-/// std::fs::create_dir_all(&dir).unwrap();
-/// let input = dir.join("spectrum.csv");
-/// std::fs::write(&input, "f").unwrap();
-/// let e = cellstudio::output::check_inputs(&dir, &[input.as_path()]).unwrap_err().to_string();
-/// assert!(e.contains("spectrum.csv") && e.contains("lies inside the output folder"), "{e}");
-/// assert!(cellstudio::output::check_inputs(&dir.join("elsewhere"), &[input.as_path()]).is_ok());
-/// std::fs::remove_dir_all(&dir).unwrap();
-/// ```
-pub fn check_inputs(target: &Path, inputs: &[&Path]) -> Result<()> {
-    let out = canonical(target);
-    for input in inputs {
-        // An input that does not exist is reported by its reader, with its own message.
-        let Ok(inp) = input.canonicalize() else { continue };
-        if inp.starts_with(&out) {
-            return Err(Error::InvalidSetting {
-                field: "output folder".into(),
-                reason: format!(
-                    "input `{}` lies inside the output folder `{}`, whose results this run replaces; \
-                     move the input or choose another output folder",
-                    input.display(),
-                    target.display()
-                ),
-            });
-        }
-    }
-    Ok(())
 }
 
 impl OutputDir {
@@ -118,7 +59,8 @@ impl OutputDir {
             std::fs::remove_dir_all(&staging).map_err(Error::io(&staging))?;
         }
         std::fs::create_dir(&staging).map_err(Error::io(&staging))?;
-        Ok(Self { target: target.to_path_buf(), staging, committed: false })
+        let inputs = inputs.iter().filter_map(|p| p.canonicalize().ok()).collect();
+        Ok(Self { target: target.to_path_buf(), staging, inputs, committed: false })
     }
 
     /// The folder to write into until [`commit`](Self::commit).
@@ -131,51 +73,37 @@ impl OutputDir {
         &self.target
     }
 
-    /// Moves the staged results into place and returns `files` (paths in the staging folder)
-    /// as they are named there.
-    pub fn commit(mut self, files: &[PathBuf]) -> Result<Vec<PathBuf>> {
+    /// Moves the staged results into the target folder and returns `files` (paths in the
+    /// staging folder) as they are named there.
+    pub fn commit(self, files: &[PathBuf]) -> Result<Vec<PathBuf>> {
+        let to = self.target.clone();
+        self.move_to(&to, files)
+    }
+
+    fn move_to(mut self, dest: &Path, files: &[PathBuf]) -> Result<Vec<PathBuf>> {
         let new = relative_files(&self.staging)?;
-        if !self.target.exists() {
-            write_manifest(&self.staging, &new)?;
-            std::fs::rename(&self.staging, &self.target).map_err(Error::io(&self.target))?;
+        manifest::write(&self.staging, &new)?;
+        if dest.symlink_metadata().is_err() {
+            std::fs::rename(&self.staging, dest).map_err(Error::io(dest))?;
+        } else if !dest.is_dir() {
+            return Err(Error::InvalidSetting { field: "output folder".into(), reason: format!("`{}` exists and is not a folder", dest.display()) });
         } else {
-            let old = read_manifest(&self.target);
-            let foreign: Vec<String> = new
-                .iter()
-                .filter(|f| !old.contains(*f) && self.target.join(f).exists())
-                .map(|f| format!("`{}`", self.target.join(f).display()))
-                .collect();
-            if !foreign.is_empty() {
-                return Err(Error::InvalidSetting {
-                    field: "output folder".into(),
-                    reason: format!(
-                        "{} would be replaced but no earlier cellstudio run wrote it (not in `{MANIFEST}`); \
-                         move it or choose another output folder (nothing was written)",
-                        foreign.join(", ")
-                    ),
-                });
-            }
-            for stale in old.difference(&new) {
-                let path = self.target.join(stale);
-                if path.is_file() {
-                    std::fs::remove_file(&path).map_err(Error::io(&path))?;
-                }
-            }
+            let old = manifest::read(dest);
+            manifest::check_destinations(dest, &new, &old)?;
             for f in &new {
-                let (from, to) = (self.staging.join(f), self.target.join(f));
+                let (from, to) = (self.staging.join(f), dest.join(f));
                 if let Some(parent) = to.parent() {
                     std::fs::create_dir_all(parent).map_err(Error::io(parent))?;
                 }
                 std::fs::rename(&from, &to).map_err(Error::io(&to))?;
             }
-            write_manifest(&self.target, &new)?;
+            let listing = dest.join(MANIFEST);
+            std::fs::rename(self.staging.join(MANIFEST), &listing).map_err(Error::io(&listing))?;
+            manifest::remove_stale(dest, old.difference(&new), &self.inputs);
             std::fs::remove_dir_all(&self.staging).map_err(Error::io(&self.staging))?;
         }
         self.committed = true;
-        Ok(files
-            .iter()
-            .map(|f| f.strip_prefix(&self.staging).map_or_else(|_| f.clone(), |rel| self.target.join(rel)))
-            .collect())
+        Ok(files.iter().map(|f| f.strip_prefix(&self.staging).map_or_else(|_| f.clone(), |rel| dest.join(rel))).collect())
     }
 }
 
@@ -205,19 +133,6 @@ fn relative_files(dir: &Path) -> Result<BTreeSet<String>> {
         }
     }
     Ok(out)
-}
-
-fn read_manifest(dir: &Path) -> BTreeSet<String> {
-    std::fs::read_to_string(dir.join(MANIFEST))
-        .map(|t| t.lines().filter(|l| !l.is_empty() && !l.contains("..")).map(str::to_string).collect())
-        .unwrap_or_default()
-}
-
-fn write_manifest(dir: &Path, files: &BTreeSet<String>) -> Result<()> {
-    let text: String = files.iter().map(|f| format!("{f}\n")).collect();
-    let (tmp, path) = (dir.join(format!("{MANIFEST}.tmp")), dir.join(MANIFEST));
-    crate::error::write_file(&tmp, text)?;
-    std::fs::rename(&tmp, &path).map_err(Error::io(&path))
 }
 
 #[cfg(test)]
@@ -286,14 +201,6 @@ mod tests {
         assert!(!target.join("design.json").exists(), "half the results were moved in");
         let names: Vec<_> = std::fs::read_dir(&root).unwrap().map(|e| e.unwrap().file_name()).collect();
         assert_eq!(names, vec![std::ffi::OsString::from("out")]);
-        std::fs::remove_dir_all(&root).unwrap();
-    }
-
-    #[test]
-    fn canonical_handles_missing_tails_and_dot_dot() {
-        let root = scratch("canon");
-        let a = canonical(&root.join("x/../y/z"));
-        assert_eq!(a, root.canonicalize().unwrap().join("y/z"));
         std::fs::remove_dir_all(&root).unwrap();
     }
 }

@@ -1,0 +1,82 @@
+//! End-to-end tests of how runs write their output folder (`src/output/`), one per finding of
+//! the output-folder audit: a manifest that names files outside the folder or behind a link,
+//! and a commit that replaced half the results before failing.
+
+use std::collections::BTreeMap;
+use std::path::Path;
+use std::process::Output;
+
+mod cli_support;
+
+use cli_support::*;
+
+/// A fast simulation (SPM, 5 volumes) into `out`, with `extra` arguments.
+fn simulate(s: &Scratch, out: &str, extra: &[&str]) -> Output {
+    let mut args = vec!["simulate", "--model", "spm", "--mesh", "5", "--out", out];
+    args.extend_from_slice(extra);
+    run(&s.0, &args)
+}
+
+/// Every regular file directly in `dir` with its bytes.
+fn contents(dir: &Path) -> BTreeMap<String, Vec<u8>> {
+    std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.symlink_metadata().unwrap().is_file())
+        .map(|p| (p.file_name().unwrap().to_string_lossy().into_owned(), std::fs::read(&p).unwrap()))
+        .collect()
+}
+
+#[test]
+fn the_manifest_never_removes_a_file_outside_the_folder_behind_a_link_or_not_a_file() {
+    let s = Scratch::new("manifest");
+    std::fs::create_dir_all(s.path("victim")).unwrap();
+    let thesis = s.write("victim/thesis.txt", "important");
+    let params = s.write("victim/set.toml", "base = \"chen2020\"\n");
+    std::fs::create_dir_all(s.path("out/sub")).unwrap();
+    s.write("out/sub/mine.txt", "mine");
+    s.write("out/old.svg", "a stale result");
+    std::os::unix::fs::symlink("../victim", s.path("out/linked")).unwrap();
+    std::os::unix::fs::symlink("../victim/thesis.txt", s.path("out/link.txt")).unwrap();
+    let listed = [thesis.to_str().unwrap(), "../victim/thesis.txt", "linked/thesis.txt", "linked/set.toml", "link.txt", "sub", "old.svg"];
+    s.write("out/.cellstudio-outputs", &listed.map(|l| format!("{l}\n")).concat());
+
+    let o = simulate(&s, "out", &["--params", params.to_str().unwrap()]);
+    succeeds(&o);
+    assert_eq!(std::fs::read_to_string(&thesis).unwrap(), "important");
+    assert!(params.exists(), "the parameter file this run read was removed");
+    assert!(s.path("out/link.txt").symlink_metadata().unwrap().file_type().is_symlink(), "a user's link was removed");
+    assert!(s.path("out/linked").is_dir());
+    assert_eq!(std::fs::read_to_string(s.path("out/sub/mine.txt")).unwrap(), "mine");
+    assert!(!s.path("out/old.svg").exists(), "a stale result the manifest names plainly stayed");
+    let e = stderr(&o);
+    for entry in &listed[..6] {
+        assert!(e.lines().any(|l| l.starts_with("warning:") && l.contains(&format!("`{entry}`"))), "no warning names `{entry}`: {e}");
+    }
+    assert!(!e.contains("`old.svg`"), "{e}");
+    let manifest = std::fs::read_to_string(s.path("out/.cellstudio-outputs")).unwrap();
+    assert!(!manifest.contains("victim") && !manifest.contains("old.svg"), "{manifest}");
+}
+
+#[test]
+fn a_commit_checks_every_destination_before_moving_anything() {
+    let s = Scratch::new("commit");
+    succeeds(&simulate(&s, "out", &[]));
+    let svg = "spm_simulation_voltage.svg";
+    let mut before = contents(&s.path("out"));
+    before.remove(svg);
+    std::fs::remove_file(s.path("out").join(svg)).unwrap();
+    std::fs::create_dir_all(s.path("out").join(svg).join("x")).unwrap();
+    let o = simulate(&s, "out", &["--c-rate", "2"]);
+    fails_with(&o, &[svg, "not a regular file", "nothing was moved"]);
+    assert_eq!(contents(&s.path("out")), before, "a failed run replaced earlier results");
+    assert_eq!(s.entries(), vec!["out"], "a partial folder was left behind");
+
+    // A link where a result was is not replaced either.
+    std::fs::remove_dir_all(s.path("out").join(svg)).unwrap();
+    s.write("elsewhere.svg", "not a result");
+    std::os::unix::fs::symlink("../elsewhere.svg", s.path("out").join(svg)).unwrap();
+    fails_with(&simulate(&s, "out", &["--c-rate", "2"]), &[svg, "not a regular file"]);
+    assert_eq!(contents(&s.path("out")), before);
+    assert_eq!(std::fs::read_to_string(s.path("elsewhere.svg")).unwrap(), "not a result");
+}
