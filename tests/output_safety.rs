@@ -1,10 +1,12 @@
 //! End-to-end tests of how runs write their output folder (`src/output/`), one per finding of
 //! the output-folder audit: a manifest that names files outside the folder or behind a link,
-//! and a commit that replaced half the results before failing.
+//! partial folders left by interrupted runs, and a commit that replaced half the results
+//! before failing.
 
 use std::collections::BTreeMap;
 use std::path::Path;
-use std::process::Output;
+use std::process::{Command, Output, Stdio};
+use std::time::{Duration, Instant};
 
 mod cli_support;
 
@@ -56,6 +58,37 @@ fn the_manifest_never_removes_a_file_outside_the_folder_behind_a_link_or_not_a_f
     assert!(!e.contains("`old.svg`"), "{e}");
     let manifest = std::fs::read_to_string(s.path("out/.cellstudio-outputs")).unwrap();
     assert!(!manifest.contains("victim") && !manifest.contains("old.svg"), "{manifest}");
+}
+
+#[test]
+fn the_next_run_removes_the_partial_folders_of_interrupted_runs() {
+    let s = Scratch::new("interrupted");
+    let mut child = Command::new(env!("CARGO_BIN_EXE_cellstudio"))
+        .args(["simulate", "--model", "spm", "--mesh", "5", "--repeat", "100000000", "--out", "out"])
+        .current_dir(&s.0)
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let partial = format!(".out.partial-{}", child.id());
+    let start = Instant::now();
+    while !s.path(&partial).exists() {
+        assert!(start.elapsed() < Duration::from_secs(60), "the run never staged its folder");
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    // SAFETY: kill(2) on the child's own process id.
+    assert_eq!(unsafe { libc::kill(child.id() as libc::pid_t, libc::SIGINT) }, 0);
+    assert!(!child.wait().unwrap().success());
+    // Left beside it: the folder of a live process (this test's) and one of another target.
+    let live = format!(".out.partial-{}", std::process::id());
+    std::fs::create_dir_all(s.path(&live)).unwrap();
+    std::fs::create_dir_all(s.path(".other.partial-2147483646")).unwrap();
+
+    let o = simulate(&s, "out", &[]);
+    succeeds(&o);
+    assert!(!s.path(&partial).exists(), "the interrupted run's partial folder is still there: {:?}", s.entries());
+    assert!(stderr(&o).contains(&partial), "the removal is not mentioned: {}", stderr(&o));
+    assert_eq!(s.entries(), vec![".other.partial-2147483646".to_string(), live, "out".to_string()]);
 }
 
 #[test]

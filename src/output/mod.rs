@@ -3,6 +3,8 @@
 //! Every command that writes a folder goes through [`OutputDir`]:
 //! - before any work, its input files are checked against the output folder (canonicalised
 //!   paths): an input inside it is refused, so no run writes over what it reads;
+//! - the temporary folders that interrupted runs left beside the target (`.NAME.partial-PID`
+//!   of a process that no longer exists) are removed, with a note on stderr ([`partial`]);
 //! - results are written into a temporary sibling folder (`.NAME.partial-PID`) and moved into
 //!   place only when the whole run succeeded ([`OutputDir::commit`]); a failed run removes the
 //!   temporary folder and leaves the previous results untouched;
@@ -15,6 +17,7 @@
 //!   folder itself, none of the run's inputs); any other entry is left, with a warning.
 
 mod manifest;
+mod partial;
 mod paths;
 
 use std::collections::BTreeSet;
@@ -36,7 +39,8 @@ pub struct OutputDir {
 }
 
 impl OutputDir {
-    /// Checks `inputs` against `target` and creates the temporary sibling folder.
+    /// Checks `inputs` against `target`, removes the temporary folders of interrupted runs
+    /// beside it and creates this run's temporary sibling folder.
     pub fn create(target: &Path, inputs: &[&Path]) -> Result<Self> {
         check_inputs(target, inputs)?;
         if target.exists() && !target.is_dir() {
@@ -54,7 +58,9 @@ impl OutputDir {
             _ => PathBuf::from("."),
         };
         std::fs::create_dir_all(&parent).map_err(Error::io(&parent))?;
-        let staging = parent.join(format!(".{}.partial-{}", name.to_string_lossy(), std::process::id()));
+        let name = name.to_string_lossy();
+        partial::remove_abandoned(&parent, &name);
+        let staging = partial::staging(&parent, &name);
         if staging.exists() {
             std::fs::remove_dir_all(&staging).map_err(Error::io(&staging))?;
         }
