@@ -257,8 +257,8 @@ fn a_fit_pinned_on_a_bound_fails_and_a_truncated_fit_says_so() {
     std::fs::write(&study, text).unwrap();
     let o = run(&s.0, &["fit", study.to_str().unwrap()]);
     fails_with(&o, &["parameters.cell.contact_resistance", "ended on a bound", "no estimate"]);
-    // Written for inspection, with the bound named in the report.
-    let report = std::fs::read_to_string(s.path("out/report.md")).unwrap();
+    // Written for inspection beside the output folder, with the bound named in the report.
+    let report = std::fs::read_to_string(s.path("out.rejected/report.md")).unwrap();
     assert!(report.contains("cell.contact_resistance = 0.002 at its upper bound"), "{report}");
 
     // One iteration from a start 2x away: a result, but the report says the search was cut short.

@@ -1,7 +1,7 @@
 //! End-to-end tests of how runs write their output folder (`src/output/`), one per finding of
 //! the output-folder audit: a manifest that names files outside the folder or behind a link,
-//! partial folders left by interrupted runs, and a commit that replaced half the results
-//! before failing.
+//! partial folders left by interrupted runs, a commit that replaced half the results before
+//! failing, and a rejected fit that replaced the previous valid results.
 
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -112,4 +112,30 @@ fn a_commit_checks_every_destination_before_moving_anything() {
     fails_with(&simulate(&s, "out", &["--c-rate", "2"]), &[svg, "not a regular file"]);
     assert_eq!(contents(&s.path("out")), before);
     assert_eq!(std::fs::read_to_string(s.path("elsewhere.svg")).unwrap(), "not a result");
+}
+
+#[test]
+fn a_rejected_fit_keeps_the_previous_results_and_writes_name_rejected() {
+    let s = Scratch::new("rejected");
+    let study = fit_study(&s, "[cost]\nkind = \"sse\"\n");
+    let study = study.to_str().unwrap();
+    succeeds(&run(&s.0, &["fit", study]));
+    let good = contents(&s.path("out"));
+    // The seed recording has R = 10 mOhm; a search range that ends at 2 mOhm pins the fit there.
+    let pinned = std::fs::read_to_string(study).unwrap().replace("initial = 0.005\n", "initial = 0.001\n").replace("upper = 0.1\n", "upper = 0.002\n");
+    std::fs::write(study, format!("{pinned}[landscape]\npoints = 3\n")).unwrap();
+    let o = run(&s.0, &["fit", study]);
+    fails_with(&o, &["ended on a bound", "no estimate", "`out.rejected`", "`out` are left as they were"]);
+    assert_eq!(contents(&s.path("out")), good, "a rejected fit replaced the previous results");
+    let report = std::fs::read_to_string(s.path("out.rejected/report.md")).unwrap();
+    assert!(report.contains("cell.contact_resistance = 0.002 at its upper bound"), "{report}");
+    assert!(s.path("out.rejected/landscape.svg").exists());
+
+    // The next rejected run replaces the folder: its stale landscape goes.
+    std::fs::write(study, pinned).unwrap();
+    fails_with(&run(&s.0, &["fit", study]), &["`out.rejected`"]);
+    assert!(!s.path("out.rejected/landscape.svg").exists(), "a stale file of the last rejected run stayed");
+    assert!(s.path("out.rejected/report.md").exists());
+    assert_eq!(contents(&s.path("out")), good);
+    assert_eq!(s.entries(), vec!["fit.toml", "out", "out.rejected"]);
 }

@@ -1,13 +1,16 @@
 //! Output folders that never lose a user's data.
 //!
 //! Every command that writes a folder goes through [`OutputDir`]:
-//! - before any work, its input files are checked against the output folder (canonicalised
-//!   paths): an input inside it is refused, so no run writes over what it reads;
+//! - before any work, its input files are checked against the output folder `NAME` and its
+//!   sibling `NAME.rejected` (canonicalised paths): an input inside either is refused, so no
+//!   run writes over what it reads;
 //! - the temporary folders that interrupted runs left beside the target (`.NAME.partial-PID`
 //!   of a process that no longer exists) are removed, with a note on stderr ([`partial`]);
 //! - results are written into a temporary sibling folder (`.NAME.partial-PID`) and moved into
 //!   place only when the whole run succeeded ([`OutputDir::commit`]); a failed run removes the
-//!   temporary folder and leaves the previous results untouched;
+//!   temporary folder and leaves the previous results untouched, and a run that ends in an
+//!   error after writing something worth inspecting moves it to `NAME.rejected` instead
+//!   ([`OutputDir::reject`]), never over the previous results;
 //! - a folder the run creates is renamed into place in one step. Into an existing folder,
 //!   every destination is checked before anything moves: a folder, a link, or a file that no
 //!   earlier run listed in the folder's manifest (`.cellstudio-outputs`, so a user's own file)
@@ -21,6 +24,7 @@ mod partial;
 mod paths;
 
 use std::collections::BTreeSet;
+use std::ffi::OsString;
 use std::path::{Path, PathBuf};
 
 use crate::error::{Error, Result};
@@ -28,10 +32,12 @@ use crate::error::{Error, Result};
 pub use manifest::MANIFEST;
 pub use paths::{canonical, check_inputs, is_plain_relative};
 
-/// A run's output folder, staged in a temporary sibling until [`commit`](Self::commit).
+/// A run's output folder, staged in a temporary sibling until [`commit`](Self::commit) (or
+/// [`reject`](Self::reject)).
 #[derive(Debug)]
 pub struct OutputDir {
     target: PathBuf,
+    rejected: PathBuf,
     staging: PathBuf,
     /// The run's inputs, canonicalised: never removed as stale results.
     inputs: Vec<PathBuf>,
@@ -39,20 +45,23 @@ pub struct OutputDir {
 }
 
 impl OutputDir {
-    /// Checks `inputs` against `target`, removes the temporary folders of interrupted runs
-    /// beside it and creates this run's temporary sibling folder.
+    /// Checks `inputs` against `target` and its `NAME.rejected` sibling, removes the temporary
+    /// folders of interrupted runs beside it and creates this run's temporary sibling folder.
     pub fn create(target: &Path, inputs: &[&Path]) -> Result<Self> {
-        check_inputs(target, inputs)?;
-        if target.exists() && !target.is_dir() {
-            return Err(Error::InvalidSetting {
-                field: "output folder".into(),
-                reason: format!("`{}` exists and is not a folder", target.display()),
-            });
-        }
         let name = target.file_name().ok_or_else(|| Error::InvalidSetting {
             field: "output folder".into(),
             reason: format!("`{}` does not name a folder", target.display()),
         })?;
+        let rejected = target.with_file_name([name, ".rejected".as_ref()].into_iter().collect::<OsString>());
+        for folder in [target, &rejected] {
+            check_inputs(folder, inputs)?;
+            if folder.exists() && !folder.is_dir() {
+                return Err(Error::InvalidSetting {
+                    field: "output folder".into(),
+                    reason: format!("`{}` exists and is not a folder", folder.display()),
+                });
+            }
+        }
         let parent = match target.parent() {
             Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
             _ => PathBuf::from("."),
@@ -66,7 +75,7 @@ impl OutputDir {
         }
         std::fs::create_dir(&staging).map_err(Error::io(&staging))?;
         let inputs = inputs.iter().filter_map(|p| p.canonicalize().ok()).collect();
-        Ok(Self { target: target.to_path_buf(), staging, inputs, committed: false })
+        Ok(Self { target: target.to_path_buf(), rejected, staging, inputs, committed: false })
     }
 
     /// The folder to write into until [`commit`](Self::commit).
@@ -79,10 +88,23 @@ impl OutputDir {
         &self.target
     }
 
+    /// Where [`reject`](Self::reject) moves the results: `NAME.rejected` beside the target.
+    pub fn rejected(&self) -> &Path {
+        &self.rejected
+    }
+
     /// Moves the staged results into the target folder and returns `files` (paths in the
     /// staging folder) as they are named there.
     pub fn commit(self, files: &[PathBuf]) -> Result<Vec<PathBuf>> {
         let to = self.target.clone();
+        self.move_to(&to, files)
+    }
+
+    /// For a run that ends in an error after writing outputs worth inspecting: moves them into
+    /// [`rejected`](Self::rejected) under the same rules as [`commit`](Self::commit) (the last
+    /// rejected run's files are replaced, stale ones removed) and leaves the target as it was.
+    pub fn reject(self, files: &[PathBuf]) -> Result<Vec<PathBuf>> {
+        let to = self.rejected.clone();
         self.move_to(&to, files)
     }
 
@@ -167,6 +189,23 @@ mod tests {
         assert_eq!(std::fs::read_to_string(target.join("report.md")).unwrap(), "first");
         let names: Vec<_> = std::fs::read_dir(&root).unwrap().map(|e| e.unwrap().file_name()).collect();
         assert_eq!(names, vec![std::ffi::OsString::from("out")]);
+        std::fs::remove_dir_all(&root).unwrap();
+    }
+
+    #[test]
+    fn a_rejected_run_goes_to_name_rejected_and_leaves_the_results() {
+        let root = scratch("reject");
+        let target = root.join("out");
+        let out = OutputDir::create(&target, &[]).unwrap();
+        crate::error::write_file(&out.path().join("report.md"), "good").unwrap();
+        out.commit(&[]).unwrap();
+        let out = OutputDir::create(&target, &[]).unwrap();
+        assert_eq!(out.rejected(), root.join("out.rejected"));
+        let report = out.path().join("report.md");
+        crate::error::write_file(&report, "pinned").unwrap();
+        assert_eq!(out.reject(&[report]).unwrap(), vec![root.join("out.rejected/report.md")]);
+        assert_eq!(std::fs::read_to_string(target.join("report.md")).unwrap(), "good");
+        assert_eq!(std::fs::read_to_string(root.join("out.rejected/report.md")).unwrap(), "pinned");
         std::fs::remove_dir_all(&root).unwrap();
     }
 
