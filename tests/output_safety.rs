@@ -73,7 +73,13 @@ fn the_next_run_removes_the_partial_folders_of_interrupted_runs() {
     let partial = format!(".out.partial-{}", child.id());
     let start = Instant::now();
     while !s.path(&partial).exists() {
-        assert!(start.elapsed() < Duration::from_secs(60), "the run never staged its folder");
+        if let Some(status) = child.try_wait().unwrap() {
+            panic!("the run ended ({status}) before it was interrupted");
+        }
+        if start.elapsed() > Duration::from_secs(60) {
+            child.kill().unwrap();
+            panic!("the run never staged its folder");
+        }
         std::thread::sleep(Duration::from_millis(10));
     }
     // SAFETY: kill(2) on the child's own process id.
