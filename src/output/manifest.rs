@@ -91,7 +91,7 @@ pub(super) fn replace_problem(dir: &Path, name: &str, listed: &BTreeSet<String>)
     }
     match path.symlink_metadata() {
         Err(_) => None,
-        Ok(meta) if !meta.is_file() => Some(format!("`{}` is not a regular file (a folder or a link)", path.display())),
+        Ok(meta) if !meta.is_file() => Some(not_a_file(&path)),
         Ok(_) if !listed.contains(name) => {
             Some(format!("`{}` would be replaced but no earlier cellstudio run wrote it (not in `{MANIFEST}`)", path.display()))
         }
@@ -99,10 +99,19 @@ pub(super) fn replace_problem(dir: &Path, name: &str, listed: &BTreeSet<String>)
     }
 }
 
-/// Fails, naming every destination, when any of `names` cannot replace what is in `dir`
-/// (whose manifest lists `listed`).
+/// Why `path` cannot be replaced: something other than a regular file is there.
+fn not_a_file(path: &Path) -> String {
+    format!("`{}` is not a regular file (a folder or a link)", path.display())
+}
+
+/// Fails, naming every destination, when any of `names` or the manifest itself cannot replace
+/// what is in `dir` (whose manifest lists `listed`).
 pub(super) fn check_destinations(dir: &Path, names: &BTreeSet<String>, listed: &BTreeSet<String>) -> Result<()> {
-    let problems: Vec<String> = names.iter().filter_map(|n| replace_problem(dir, n, listed)).collect();
+    let mut problems: Vec<String> = names.iter().filter_map(|n| replace_problem(dir, n, listed)).collect();
+    let manifest = dir.join(MANIFEST);
+    if manifest.symlink_metadata().is_ok_and(|m| !m.is_file()) {
+        problems.push(not_a_file(&manifest));
+    }
     if problems.is_empty() {
         return Ok(());
     }
@@ -167,6 +176,12 @@ mod tests {
         assert!(replace_problem(&out, "mine.txt", &listed).unwrap().contains("no earlier cellstudio run wrote it"));
         assert!(replace_problem(&out, "dir.svg", &listed).unwrap().contains("not a regular file"));
         assert!(replace_problem(&out, "plots/v.svg", &listed).unwrap().contains("plots` is not a folder"));
+        // A manifest that is not a file would stop the run after the moves: it is checked too.
+        let new: BTreeSet<String> = ["ours.svg".to_string()].into();
+        assert!(check_destinations(&out, &new, &listed).is_ok());
+        std::fs::create_dir(out.join(MANIFEST)).unwrap();
+        let e = check_destinations(&out, &new, &listed).unwrap_err().to_string();
+        assert!(e.contains(".cellstudio-outputs` is not a regular file") && e.contains("nothing was moved"), "{e}");
         std::fs::remove_dir_all(&root).unwrap();
     }
 }

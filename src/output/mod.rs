@@ -56,10 +56,7 @@ impl OutputDir {
         for folder in [target, &rejected] {
             check_inputs(folder, inputs)?;
             if folder.exists() && !folder.is_dir() {
-                return Err(Error::InvalidSetting {
-                    field: "output folder".into(),
-                    reason: format!("`{}` exists and is not a folder", folder.display()),
-                });
+                return Err(not_a_folder(folder));
             }
         }
         let parent = match target.parent() {
@@ -108,13 +105,15 @@ impl OutputDir {
         self.move_to(&to, files)
     }
 
+    /// Moves the staged results into `dest`: in one rename when nothing is there, else file by
+    /// file after every destination was checked, then the manifest, then the stale files.
     fn move_to(mut self, dest: &Path, files: &[PathBuf]) -> Result<Vec<PathBuf>> {
         let new = relative_files(&self.staging)?;
         manifest::write(&self.staging, &new)?;
         if dest.symlink_metadata().is_err() {
             std::fs::rename(&self.staging, dest).map_err(Error::io(dest))?;
         } else if !dest.is_dir() {
-            return Err(Error::InvalidSetting { field: "output folder".into(), reason: format!("`{}` exists and is not a folder", dest.display()) });
+            return Err(not_a_folder(dest));
         } else {
             let old = manifest::read(dest);
             manifest::check_destinations(dest, &new, &old)?;
@@ -141,6 +140,11 @@ impl Drop for OutputDir {
             let _ = std::fs::remove_dir_all(&self.staging);
         }
     }
+}
+
+/// The error for an output folder whose name is taken by something else (a file).
+fn not_a_folder(path: &Path) -> Error {
+    Error::InvalidSetting { field: "output folder".into(), reason: format!("`{}` exists and is not a folder", path.display()) }
 }
 
 /// Files under `dir`, relative, with `/` separators (the manifest excluded).
