@@ -347,17 +347,8 @@ fn run(cli: Cli) -> Result<(), Error> {
             for f in &out.files {
                 println!("wrote {}", f.display());
             }
-            match out.at_bound.first() {
-                // Written for inspection, but not an estimate: exit non-zero.
-                Some(name) => Err(Error::InvalidSetting {
-                    field: format!("parameters.{name}"),
-                    reason: format!(
-                        "the fit ended on a bound of the search range, so it gives no estimate ({} parameter(s) on a bound; the report is written for inspection); widen lower/upper or check the recording's units",
-                        out.at_bound.len()
-                    ),
-                }),
-                None => Ok(()),
-            }
+            // Written for inspection to NAME.rejected, but not an estimate: exit non-zero.
+            out.rejection.map_or(Ok(()), Err)
         }
         Command::Sample { overrides, study, data } => {
             let study = FitStudy::from_file(&study)?.with_overrides(overrides.set)?;

@@ -3,104 +3,11 @@
 //! half-written folders, exit 0 on nonsense, panics, messages naming fields the user never
 //! wrote, no parameter overrides).
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::path::Path;
 
-const REPO: &str = env!("CARGO_MANIFEST_DIR");
+mod cli_support;
 
-/// A fresh scratch folder per test, removed when dropped.
-struct Scratch(PathBuf);
-
-impl Scratch {
-    fn new(tag: &str) -> Self {
-        let dir = std::env::temp_dir().join(format!("cellstudio-cli-{tag}-{}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
-        std::fs::create_dir_all(&dir).unwrap();
-        Self(dir)
-    }
-    fn path(&self, name: &str) -> PathBuf {
-        self.0.join(name)
-    }
-    fn write(&self, name: &str, text: &str) -> PathBuf {
-        let p = self.path(name);
-        std::fs::write(&p, text).unwrap();
-        p
-    }
-    /// Entries of the scratch folder (to see leftovers such as `.out.partial-PID`).
-    fn entries(&self) -> Vec<String> {
-        let mut v: Vec<String> =
-            std::fs::read_dir(&self.0).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
-        v.sort();
-        v
-    }
-}
-
-impl Drop for Scratch {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.0);
-    }
-}
-
-/// Runs the binary in `cwd`.
-fn run(cwd: &Path, args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_cellstudio")).args(args).current_dir(cwd).output().expect("binary runs")
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
-
-/// Exit code 1 (an error, not a panic's 101) with every `needles` in stderr, on one line.
-fn fails_with(o: &Output, needles: &[&str]) -> String {
-    let e = stderr(o);
-    assert_eq!(o.status.code(), Some(1), "expected a clean failure, got {:?}: {e}", o.status);
-    let line = e.lines().find(|l| l.starts_with("error:")).unwrap_or_else(|| panic!("no error line in: {e}"));
-    for n in needles {
-        assert!(line.contains(n), "`{n}` not in the error line: {e}");
-    }
-    e
-}
-
-fn succeeds(o: &Output) {
-    assert!(o.status.success(), "failed: {}\n{}", stderr(o), String::from_utf8_lossy(&o.stdout));
-}
-
-/// A small fitting study of the seed recording; `extra` is appended (more sections).
-fn fit_study(s: &Scratch, extra: &str) -> PathBuf {
-    let data = Path::new(REPO).join("tests/data/spm_contact_resistance_seed.csv");
-    s.write(
-        "fit.toml",
-        &format!(
-            r#"name = "cli fit"
-[model]
-kind = "spm"
-submodels = {{ contact_resistance = true }}
-[data]
-file = "{}"
-synthetic_noise = 0.002
-noise_seed = 7
-[[parameters]]
-path = "negative.diffusivity"
-initial = 6.6e-14
-lower = 1e-15
-upper = 1e-12
-log = true
-[[parameters]]
-path = "cell.contact_resistance"
-initial = 0.005
-lower = 1e-4
-upper = 0.1
-log = true
-[optimiser]
-method = "lbfgsb"
-seed = 1
-[output]
-dir = "out"
-{extra}"#,
-            data.display()
-        ),
-    )
-}
+use cli_support::*;
 
 fn fitted_rmse(s: &Scratch) -> f64 {
     let json: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(s.path("out/fit.json")).unwrap()).unwrap();
@@ -350,8 +257,8 @@ fn a_fit_pinned_on_a_bound_fails_and_a_truncated_fit_says_so() {
     std::fs::write(&study, text).unwrap();
     let o = run(&s.0, &["fit", study.to_str().unwrap()]);
     fails_with(&o, &["parameters.cell.contact_resistance", "ended on a bound", "no estimate"]);
-    // Written for inspection, with the bound named in the report.
-    let report = std::fs::read_to_string(s.path("out/report.md")).unwrap();
+    // Written for inspection beside the output folder, with the bound named in the report.
+    let report = std::fs::read_to_string(s.path("out.rejected/report.md")).unwrap();
     assert!(report.contains("cell.contact_resistance = 0.002 at its upper bound"), "{report}");
 
     // One iteration from a start 2x away: a result, but the report says the search was cut short.

@@ -276,14 +276,34 @@ pub struct FitOutcome {
     pub at_bound: Vec<String>,
     /// Each experiment's share of a joint fit (empty for one experiment).
     pub experiments: Vec<crate::problem::joint::ExperimentFit>,
+    /// Why the run gives no estimate and must exit with an error (a parameter on a bound);
+    /// its outputs then went to the output folder's `NAME.rejected` sibling, which it names.
+    pub rejection: Option<Error>,
 }
 
 /// Fits the study's problem, then writes `report.md`, `fit.json`, `fit_voltage.svg`,
-/// `fit_residual.svg` and (with `[landscape]`) `landscape.svg`.
+/// `fit_residual.svg` and (with `[landscape]`) `landscape.svg`. A fit with a parameter on a
+/// bound is no estimate: its files go to `NAME.rejected` beside the output folder, whose
+/// previous results stay, and [`FitOutcome::rejection`] says so.
 pub fn run_fit(study: &FitStudy, data: Option<&Path>) -> Result<FitOutcome, Error> {
     let out = crate::output::OutputDir::create(&study.output.dir, &study.inputs(data))?;
     let mut outcome = fit_into(study, data, out.path())?;
-    outcome.files = out.commit(&outcome.files)?;
+    let Some(name) = outcome.at_bound.first() else {
+        outcome.files = out.commit(&outcome.files)?;
+        return Ok(outcome);
+    };
+    outcome.rejection = Some(Error::InvalidSetting {
+        field: format!("parameters.{name}"),
+        reason: format!(
+            "the fit ended on a bound of the search range, so it gives no estimate ({} parameter(s) on a bound); \
+             its outputs are written for inspection to `{}` and the results in `{}` are left as they were; \
+             widen lower/upper or check the recording's units",
+            outcome.at_bound.len(),
+            out.rejected().display(),
+            out.target().display()
+        ),
+    });
+    outcome.files = out.reject(&outcome.files)?;
     Ok(outcome)
 }
 
@@ -324,7 +344,7 @@ pub(crate) fn fit_into(study: &FitStudy, data: Option<&Path>, dir: &Path) -> Res
     write_output(dir, "fit.json", serde_json::to_string_pretty(&result).expect("serialisable"), &mut files)?;
     let md = report(study, &problem, &result, initial_rmse);
     write_output(dir, "report.md", with_notes(md, &notes, &warnings), &mut files)?;
-    Ok(FitOutcome { result, initial_rmse, files, notes, warnings, at_bound, experiments: Vec::new() })
+    Ok(FitOutcome { result, initial_rmse, files, notes, warnings, at_bound, experiments: Vec::new(), rejection: None })
 }
 
 /// `fit_voltage<suffix>.svg` (data, initial and fitted voltage) and `fit_residual<suffix>.svg`

@@ -47,7 +47,7 @@ pub(crate) fn joint_fit_into(study: &FitStudy, data: Option<&Path>, dir: &Path) 
     let md = report(study, data, &problem, &fit, &method);
     write_output(dir, "report.md", with_notes(md, &notes, &warnings), &mut files)?;
     let initial_rmse = combined_initial_rmse(&fit);
-    Ok(FitOutcome { result: fit.result, initial_rmse, files, notes, warnings, at_bound, experiments: fit.experiments })
+    Ok(FitOutcome { result: fit.result, initial_rmse, files, notes, warnings, at_bound, experiments: fit.experiments, rejection: None })
 }
 
 /// The RMS residual (V) at the initial parameters over every experiment's points, each
