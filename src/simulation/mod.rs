@@ -221,19 +221,24 @@ pub fn simulate_observed(
         let mut buf = vec![0.0; y.len()];
         let i0 = drive.current(t0, &y);
         let v0 = model.voltage(&y[..n], i0);
-        if step.has_cutoffs() && i0 > 0.0 && v0 <= lower {
-            return Err(Error::invalid(
-                "cell.lower_cutoff",
-                lower,
-                format!("voltage at the start of step {k} (t = {t0} s) is {v0:.4} V, already at or below the cut-off"),
-            ));
-        }
-        if step.has_cutoffs() && i0 < 0.0 && v0 >= upper {
-            return Err(Error::invalid(
-                "cell.upper_cutoff",
-                upper,
-                format!("voltage at the start of step {k} (t = {t0} s) is {v0:.4} V, already at or above the cut-off"),
-            ));
+        let crossed = if !step.has_cutoffs() {
+            None
+        } else if i0 > 0.0 && v0 <= lower {
+            Some(("lower", lower, opts.cutoffs.0, "below"))
+        } else if i0 < 0.0 && v0 >= upper {
+            Some(("upper", upper, opts.cutoffs.1, "above"))
+        } else {
+            None
+        };
+        if let Some((side, limit, cell_limit, beyond)) = crossed {
+            // Name the limit the user set: the step's own `until_voltage` or the cell's cut-off.
+            let field = if limit != cell_limit { format!("steps[{k}].until_voltage") } else { format!("cell.{side}_cutoff") };
+            let why = if !(0.0..10.0).contains(&v0) {
+                ": the cell cannot carry this current (check the current or C-rate, the resistances and the electrode thicknesses)"
+            } else {
+                ""
+            };
+            return Err(Error::invalid(field, limit, format!("voltage at the start of step {k} (t = {t0} s) is {v0:.4} V, already at or {beyond} it{why}")));
         }
         rec.i = i0;
         rec.p = i0 * v0;
