@@ -4,11 +4,11 @@
 //! The step, order and error-control logic follows Shampine & Reichelt's NDF
 //! (the scheme of MATLAB `ode15s` and SciPy `BDF`), written on a backward-difference array so
 //! that step-size changes are O(order^2) and dense output is free. Newton matrices are
-//! sparse (see [`SparseSystem`]) and the Jacobian is a coloured finite difference (see
-//! [`ColouredPattern`]); both are reused across steps until Newton convergence slows.
+//! sparse (see [`SparseSystem`](super::sparse::SparseSystem)) and the Jacobian is a coloured finite difference (see
+//! [`ColouredPattern`](super::jacobian::ColouredPattern)); both are reused across steps until Newton convergence slows.
 
-use super::jacobian::ColouredPattern;
-use super::sparse::SparseSystem;
+pub use super::dense::DenseOutput;
+pub use super::workspace::Workspace;
 use crate::error::Error;
 
 const MAX_ORDER: usize = 5;
@@ -81,111 +81,6 @@ pub enum StopReason {
     EndTime,
     /// The event function crossed zero at this time (s).
     Event(f64),
-}
-
-/// The interpolating polynomial of the last step, valid on `[t_old, end]`.
-pub struct DenseOutput<'a> {
-    t: f64,
-    h: f64,
-    order: usize,
-    d: &'a [Vec<f64>],
-    end: f64,
-}
-
-impl DenseOutput<'_> {
-    /// End of the interval this step covers (s): the step end, or the event time.
-    pub fn t_end(&self) -> f64 {
-        self.end
-    }
-
-    /// Writes the states in `ranges` (of indices) at `t` into the same places of `out`; other
-    /// entries are left alone.
-    pub fn eval_ranges(&self, t: f64, ranges: &[std::ops::Range<usize>], out: &mut [f64]) {
-        for r in ranges {
-            out[r.clone()].copy_from_slice(&self.d[0][r.clone()]);
-        }
-        let mut p = 1.0;
-        for j in 0..self.order {
-            let shift = self.t - self.h * j as f64;
-            p *= (t - shift) / (self.h * (j + 1) as f64);
-            for r in ranges {
-                for (o, dj) in out[r.clone()].iter_mut().zip(&self.d[j + 1][r.clone()]) {
-                    *o += dj * p;
-                }
-            }
-        }
-    }
-
-    /// Writes `y(t)` into `out`.
-    pub fn eval(&self, t: f64, out: &mut [f64]) {
-        self.eval_ranges(t, &[0..out.len()], out)
-    }
-}
-
-/// Reusable work space for one model build: Jacobian pattern, colouring and sparse LU.
-pub struct Workspace {
-    pattern: ColouredPattern,
-    system: SparseSystem,
-    jac: Vec<f64>,
-    /// The algebraic block (algebraic rows and columns) with its own, smaller colouring, and
-    /// each of its entries' place in `pattern`; built at the first consistent initialisation.
-    algebraic: Option<(ColouredPattern, Vec<usize>)>,
-    algebraic_jac: Vec<f64>,
-}
-
-impl Workspace {
-    /// Builds the work space for `n` states and Jacobian entries `(row, col)` (duplicates
-    /// are merged).
-    pub fn new(n: usize, mut entries: Vec<(usize, usize)>) -> Result<Self, Error> {
-        entries.sort_unstable();
-        entries.dedup();
-        let system = SparseSystem::new(n, &entries)?;
-        let jac = vec![0.0; entries.len()];
-        Ok(Self { pattern: ColouredPattern::new(n, entries), system, jac, algebraic: None, algebraic_jac: Vec::new() })
-    }
-
-    /// Residual evaluations per Jacobian.
-    pub fn n_colours(&self) -> usize {
-        self.pattern.n_colours()
-    }
-
-    /// Entries of the LU factors of the Newton matrix, fill included (zero fill means the
-    /// factors have as many entries as the pattern plus the diagonal).
-    pub fn factor_nnz(&self) -> usize {
-        self.system.factor_nnz()
-    }
-
-    /// Factorises the Newton matrix of the algebraic rows alone, `diag(mass) + J_aa`
-    /// (identity on differential rows), for consistent initialisation; `f0 = f(y)`. Only the
-    /// algebraic columns are perturbed, so a Jacobian costs the colours of the algebraic block
-    /// (the DFN's potentials) instead of those of the whole pattern.
-    pub fn factorise_algebraic(
-        &mut self,
-        f: &mut dyn FnMut(&[f64], &mut [f64]),
-        y: &[f64],
-        f0: &[f64],
-        scale: &[f64],
-        mass: &[f64],
-    ) -> Result<(), Error> {
-        let full = &self.pattern.entries;
-        let (block, place) = self.algebraic.get_or_insert_with(|| {
-            let (place, entries): (Vec<usize>, Vec<(usize, usize)>) =
-                full.iter().enumerate().filter(|&(_, &(r, c))| mass[r] == 0.0 && mass[c] == 0.0).unzip();
-            (ColouredPattern::new(y.len(), entries), place)
-        });
-        self.algebraic_jac.resize(place.len(), 0.0);
-        block.evaluate(f, y, f0, scale, &mut self.algebraic_jac);
-        self.jac.iter_mut().for_each(|v| *v = 0.0);
-        for (&k, &v) in place.iter().zip(&self.algebraic_jac) {
-            self.jac[k] = v;
-        }
-        self.system.factorise(mass, -1.0, &self.jac)
-    }
-
-    /// Solves with the last factorisation.
-    pub fn solve(&mut self, rhs: &mut [f64]) {
-        self.system.solve(rhs)
-    }
 }
 
 fn rms(x: &[f64], scale: &[f64]) -> f64 {

@@ -2,9 +2,11 @@
 //! dense output and event location.
 
 pub mod bdf;
+mod dense;
 pub mod jacobian;
 pub mod ordering;
 pub mod sparse;
 pub mod static_lu;
+mod workspace;
 
 pub use bdf::{Dae, DenseOutput, SolverOptions, SolverStats, StopReason, Workspace, integrate};
