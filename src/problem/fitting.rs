@@ -152,6 +152,8 @@ pub struct FittingProblem {
     /// may still override the initial concentrations); `None` keeps the set's initial state.
     pub initial_ocv: Option<f64>,
     protocol: Protocol,
+    /// Parameters held at a value (a profile's fixed one), applied with the fitted ones.
+    pinned: Vec<(FitParameter, f64)>,
     /// Distinct output times (s, from the recording's start) and each point's output index.
     t_eval: Vec<f64>,
     output_of_point: Vec<usize>,
@@ -203,10 +205,44 @@ impl FittingProblem {
             solver: SolverOptions::default(),
             initial_ocv: None,
             protocol,
+            pinned: Vec::new(),
             t_eval,
             output_of_point,
             pool: Mutex::new(Vec::new()),
         })
+    }
+
+    /// The same problem with fitted parameter `k` held at `value` (parameter units) and the
+    /// others still fitted, e.g. for a profile likelihood.
+    pub fn pinned(&self, k: usize, value: f64) -> Result<Self, Error> {
+        let mut parameters = self.parameters.clone();
+        let fixed = parameters.remove(k);
+        if !(value >= fixed.lower && value <= fixed.upper) {
+            return Err(Error::invalid(fixed.path.clone(), value, format!("must lie within [{}, {}] to be held", fixed.lower, fixed.upper)));
+        }
+        let mut pinned = self.pinned.clone();
+        pinned.push((fixed, value));
+        Ok(Self {
+            spec: self.spec,
+            base: self.base.clone(),
+            parameters,
+            data: self.data.clone(),
+            weights: self.weights.clone(),
+            solver: self.solver.clone(),
+            initial_ocv: self.initial_ocv,
+            protocol: self.protocol.clone(),
+            pinned,
+            t_eval: self.t_eval.clone(),
+            output_of_point: self.output_of_point.clone(),
+            pool: Mutex::new(Vec::new()),
+        })
+    }
+
+    /// Applies the fitted values `x` and the pinned ones to `p` (the initial state of charge
+    /// last, as it depends on the others).
+    fn apply_all(&self, p: &mut ParameterSet, x: &[f64]) -> Result<(), Error> {
+        let (fixed, values): (Vec<FitParameter>, Vec<f64>) = self.pinned.iter().cloned().unzip();
+        apply(p, &[self.parameters.as_slice(), &fixed].concat(), &[x, &values].concat())
     }
 
     /// Starts from the rest state whose open-circuit voltage is the first recorded voltage
@@ -276,7 +312,7 @@ impl FittingProblem {
         if let Some(v) = self.initial_ocv {
             p.set_initial_ocv(v)?;
         }
-        apply(&mut p, &self.parameters, x)?;
+        self.apply_all(&mut p, x)?;
         p.validate()?;
         Ok(p)
     }
@@ -335,7 +371,7 @@ impl FittingProblem {
             }
             let mut xk = x.to_vec();
             xk[k] += steps[k];
-            apply(&mut q, &self.parameters, &xk)?;
+            self.apply_all(&mut q, &xk)?;
             perturbed.push(b.build(&q)?.model.as_ref());
         }
         let model = Sensitivities::new(base.model.as_ref(), perturbed, scales.clone(), steps);

@@ -8,6 +8,7 @@ pub mod fitting;
 pub mod joint;
 pub mod least_squares;
 pub mod posterior;
+pub mod profile;
 pub mod pulse;
 pub mod sensitivity;
 pub mod sweep;

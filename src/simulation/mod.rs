@@ -232,13 +232,13 @@ pub fn simulate_observed(
         };
         if let Some((side, limit, cell_limit, beyond)) = crossed {
             // Name the limit the user set: the step's own `until_voltage` or the cell's cut-off.
-            let field = if limit != cell_limit { format!("steps[{k}].until_voltage") } else { format!("cell.{side}_cutoff") };
+            let (field, which) = if limit != cell_limit { (format!("steps[{k}].until_voltage"), "the step's limit") } else { (format!("cell.{side}_cutoff"), "the cut-off") };
             let why = if !(0.0..10.0).contains(&v0) {
                 ": the cell cannot carry this current (check the current or C-rate, the resistances and the electrode thicknesses)"
             } else {
                 ""
             };
-            return Err(Error::invalid(field, limit, format!("voltage at the start of step {k} (t = {t0} s) is {v0:.4} V, already at or {beyond} it{why}")));
+            return Err(Error::invalid(field, limit, format!("voltage at the start of step {k} (t = {t0} s) is {v0:.4} V, already at or {beyond} {which}{why}")));
         }
         rec.i = i0;
         rec.p = i0 * v0;

@@ -52,6 +52,9 @@ pub struct FitStudy {
     /// Cost landscape over the first two parameters.
     #[serde(default)]
     pub landscape: Option<Landscape>,
+    /// Profile likelihood of every fitted parameter.
+    #[serde(default)]
+    pub profile: Option<super::profiles::ProfileSettings>,
     #[serde(default)]
     pub output: Output,
 }
@@ -95,6 +98,12 @@ impl FitStudy {
         if let Some(l) = &self.landscape {
             if l.points < 2 || l.points > 200 {
                 return Err(Error::invalid("landscape.points", l.points as f64, "must lie in 2..=200"));
+            }
+        }
+        if let Some(p) = &self.profile {
+            p.validate()?;
+            if self.data.len() > 1 {
+                return Err(Error::InvalidSetting { field: "profile".into(), reason: "profile likelihoods take one [data] entry, not a joint fit".into() });
             }
         }
         for (k, d) in self.data.iter().enumerate() {
@@ -342,7 +351,13 @@ pub(crate) fn fit_into(study: &FitStudy, data: Option<&Path>, dir: &Path) -> Res
         files.push(path);
     }
     write_output(dir, "fit.json", serde_json::to_string_pretty(&result).expect("serialisable"), &mut files)?;
-    let md = report(study, &problem, &result, initial_rmse);
+    let mut md = report(study, &problem, &result, initial_rmse);
+    if let Some(settings) = &study.profile {
+        let profiles = super::profiles::write_profiles(dir, &study.name, &problem, &result, settings)?;
+        md.push_str(&profiles.section);
+        files.extend(profiles.files);
+        warnings.extend(profiles.warnings);
+    }
     write_output(dir, "report.md", with_notes(md, &notes, &warnings), &mut files)?;
     Ok(FitOutcome { result, initial_rmse, files, notes, warnings, at_bound, experiments: Vec::new(), rejection: None })
 }

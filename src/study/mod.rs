@@ -10,6 +10,7 @@ pub mod fit;
 mod fit_data;
 pub mod joint_fit;
 pub mod limits;
+pub mod profiles;
 pub mod sample;
 pub mod shard;
 pub mod pareto;
