@@ -43,7 +43,14 @@ impl FitStudy {
                 run.insert(key.into(), v);
             }
         }
-        let bad = |e: toml::de::Error| Error::InvalidSetting { field: "sampler".into(), reason: e.to_string() };
+        // The run's own keys are taken out first, so name them beside the sampler's.
+        let bad = |e: toml::de::Error| {
+            let mut reason = e.to_string().trim_end().to_string();
+            if reason.contains("unknown field") {
+                reason.push_str(&format!(", or a run key: `{}`", RUN_KEYS.join("`, `")));
+            }
+            Error::InvalidSetting { field: "sampler".into(), reason }
+        };
         let sampler: SamplerOptions = table.try_into().map_err(bad)?;
         let run: SampleOptions = run.try_into().map_err(bad)?;
         sampler.validate()?;
