@@ -35,6 +35,13 @@ pub enum Metric {
     Capacity,
     /// Delivered energy (W h).
     Energy,
+    /// N/P ratio (-): the negative electrode's capacity (stoichiometry 0 to 1) over the
+    /// capacity the cell cycles between its cut-offs, `1 / (x100 - x0)`; near 1 the negative
+    /// electrode fills at full charge (plating risk).
+    NpRatio,
+    /// Largest rise of the cell temperature over its start during the discharge (K); needs
+    /// the lumped thermal submodel.
+    TemperatureRise,
 }
 
 /// How a dependent parameter follows the decision variables: `target = constant - sum(of)`.
@@ -97,6 +104,10 @@ pub struct DesignMetrics {
     pub volumetric_pulse_power_density: Option<f64>,
     /// The plating-free charge when the problem asks for it ([`FastChargeSpec`]).
     pub fast_charge: Option<FastCharge>,
+    /// N/P ratio (-), see [`Metric::NpRatio`].
+    pub np_ratio: f64,
+    /// Largest temperature rise over the start during the discharge (K; 0 when isothermal).
+    pub temperature_rise: f64,
 }
 
 impl Metric {
@@ -112,6 +123,8 @@ impl Metric {
             Metric::FastChargeRate => "plating-free charge rate (C)",
             Metric::Capacity => "discharge capacity (A h)",
             Metric::Energy => "discharge energy (W h)",
+            Metric::NpRatio => "N/P capacity ratio (-)",
+            Metric::TemperatureRise => "temperature rise (K)",
         }
     }
 
@@ -144,6 +157,8 @@ impl DesignMetrics {
             Metric::FastChargeRate => self.fast_charge.map_or(f64::NAN, |f| f.rate),
             Metric::Capacity => self.capacity,
             Metric::Energy => self.energy,
+            Metric::NpRatio => self.np_ratio,
+            Metric::TemperatureRise => self.temperature_rise,
         }
     }
 }
@@ -355,6 +370,8 @@ impl DesignProblem {
             gravimetric_pulse_power_density: pulse_power.map(|w| w / budget.mass),
             volumetric_pulse_power_density: pulse_power.map(|w| w / (budget.volume * 1e3)),
             fast_charge,
+            np_ratio: p.negative.areal_capacity() * p.cell.area() / 3600.0 / crate::params::soc::StoichiometryWindow::within_reach(p).capacity(p),
+            temperature_rise: sol.temperature.iter().fold(0.0f64, |m, t| m.max(t - sol.temperature[0])),
         })
     }
 

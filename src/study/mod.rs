@@ -63,11 +63,14 @@ pub struct Study {
 pub struct ModelChoice {
     /// spm, spme or dfn.
     pub kind: ModelKind,
+    /// Optional submodels, e.g. `{ thermal = true }` for a temperature-rise limit.
+    #[serde(default)]
+    pub submodels: crate::models::Submodels,
 }
 
 impl Default for ModelChoice {
     fn default() -> Self {
-        Self { kind: ModelKind::Spme }
+        Self { kind: ModelKind::Spme, submodels: Default::default() }
     }
 }
 
@@ -238,6 +241,12 @@ impl Study {
 
     /// Checks bounds, paths and settings against the base parameter set.
     pub fn validate(&self) -> Result<(), Error> {
+        if !self.model.submodels.thermal && self.metrics().any(|m| m == Metric::TemperatureRise) {
+            return Err(Error::InvalidSetting {
+                field: "model.submodels".into(),
+                reason: "temperature_rise needs the lumped thermal submodel: submodels = { thermal = true }".into(),
+            });
+        }
         let base = self.base_parameters()?;
         let fixed = self.cell.format_outputs();
         let mut set_paths: Vec<(String, &str)> = self.variables.iter().enumerate().map(|(k, v)| (format!("variables[{k}].path"), v.path.as_str())).collect();
@@ -412,6 +421,8 @@ impl Study {
         )?
         .with_format(self.cell.cell_format()?)?
         .with_mass_convention(self.cell.mass_convention()?)?;
+        let mut problem = problem;
+        problem.submodels = self.model.submodels;
         let problem = match self.operating.pulse {
             Some(spec) => problem.with_pulse(spec)?,
             None if self.metrics().any(|m| m.needs_pulse()) => problem.with_pulse(Default::default())?,
