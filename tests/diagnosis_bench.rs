@@ -45,7 +45,12 @@
 //! kinetics from pulses at one rate, and electrolyte conductivity x0.4 at 10 degC against a
 //! series resistance under a drive cycle). Six are here; r2 (negative diffusivity from a DFN
 //! CC-CV charge) and r3 (4 mOhm in a DFN under C/2 pulses) take about a minute each and are
-//! judged by the script only, to keep CI short.
+//! judged by the script only, to keep CI short. A ninth batch (s1-s8), blind in the same way
+//! and made to look measured (cycler-like current noise, 0.1 mV resolution, 30-60 s sampling on
+//! long stretches, 3 mV noise, 0 and 45 degC, parameters outside the candidate list: a
+//! Bruggeman exponent, a particle radius, an electrode thickness, activation energies), named
+//! 8 of 8 at its first run (s4, positive exchange current x0.8 near the noise, as a tie with a
+//! 0.56 mOhm resistance). s2, s3, s4 and s8 are here; the others take 25-47 s each.
 
 use std::path::{Path, PathBuf};
 
@@ -382,4 +387,24 @@ fn r7_kinetics_and_lithium_inventory_hppc_spme() {
 #[test]
 fn r8_negative_control_cccv_then_discharge_dfn() {
     run_case("diagnosis-extra/r8_control_cccv_then_discharge_dfn");
+}
+
+#[test]
+fn s2_positive_particle_radius_charge_only_spme() {
+    run_case("diagnosis-extra/s2_radius_positive_charge_only");
+}
+
+#[test]
+fn s3_thinner_positive_electrode_3mv_noise_dfn() {
+    run_case("diagnosis-extra/s3_thickness_positive_3mV");
+}
+
+#[test]
+fn s4_positive_kinetics_near_the_noise_spme() {
+    run_case("diagnosis-extra/s4_kinetics_positive_near_limit");
+}
+
+#[test]
+fn s8_negative_control_rpt_dfn() {
+    run_case("diagnosis-extra/s8_control_rpt_dfn");
 }
