@@ -4,7 +4,7 @@
 use serde::Serialize;
 
 use super::features::Features;
-use super::stats::{TestResult, least_squares, ljung_box, noise_from_differences, runs_test};
+use super::stats::{TestResult, least_squares, ljung_box, noise_from_dense_differences, runs_test};
 use crate::data::Recording;
 
 /// Straight-line fit `r ≈ a + b x`.
@@ -162,7 +162,7 @@ pub fn analyse(rec: &Recording, features: &Features, residual: &[f64], nominal_c
     let total_sq: f64 = r.iter().map(|v| v * v).sum::<f64>().max(f64::MIN_POSITIVE);
     let rmse = rms(&r);
     let (k_max, max_abs) = r.iter().enumerate().fold((0, 0.0f64), |m, (k, v)| if v.abs() > m.1 { (k, v.abs()) } else { m });
-    let noise = noise_from_differences(&r).max(1e-9);
+    let noise = noise_from_dense_differences(&r, &time).max(1e-9);
     let lags = (n / 5).clamp(1, 20);
     let lb = ljung_box(&r, lags);
     let runs = runs_test(&r);
