@@ -11,6 +11,7 @@ use crate::params::{CellFormat, MassBasis, MassConvention, ParameterSet};
 use crate::protocol::{Protocol, Step};
 pub use super::fast_charge::{FastCharge, FastChargeSpec};
 pub use super::pulse::PulseSpec;
+pub use super::timed_energy::TimedEnergySpec;
 use crate::simulation::{SimOptions, simulate};
 
 /// A figure of merit of a discharged design.
@@ -42,6 +43,11 @@ pub enum Metric {
     /// Largest rise of the cell temperature over its start during the discharge (K); needs
     /// the lumped thermal submodel.
     TemperatureRise,
+    /// Energy of a constant-power discharge lasting a fixed time ([`TimedEnergySpec`]) per
+    /// cell mass (W h/kg).
+    GravimetricTimedEnergyDensity,
+    /// The same per cell volume (W h/L).
+    VolumetricTimedEnergyDensity,
 }
 
 /// How a dependent parameter follows the decision variables: `target = constant - sum(of)`.
@@ -108,6 +114,11 @@ pub struct DesignMetrics {
     pub np_ratio: f64,
     /// Largest temperature rise over the start during the discharge (K; 0 when isothermal).
     pub temperature_rise: f64,
+    /// Energy (W h) of the timed discharge and its densities (W h/kg, W h/L), when the
+    /// problem asks for them ([`TimedEnergySpec`]).
+    pub timed_energy: Option<f64>,
+    pub gravimetric_timed_energy_density: Option<f64>,
+    pub volumetric_timed_energy_density: Option<f64>,
 }
 
 impl Metric {
@@ -125,7 +136,14 @@ impl Metric {
             Metric::Energy => "discharge energy (W h)",
             Metric::NpRatio => "N/P capacity ratio (-)",
             Metric::TemperatureRise => "temperature rise (K)",
+            Metric::GravimetricTimedEnergyDensity => "gravimetric energy density at a fixed discharge time (W h/kg)",
+            Metric::VolumetricTimedEnergyDensity => "volumetric energy density at a fixed discharge time (W h/L)",
         }
+    }
+
+    /// Whether the metric needs a timed discharge ([`TimedEnergySpec`]) besides the discharge.
+    pub fn needs_timed_energy(&self) -> bool {
+        matches!(self, Metric::GravimetricTimedEnergyDensity | Metric::VolumetricTimedEnergyDensity)
     }
 
     /// Whether the metric needs a pulse ([`PulseSpec`]) besides the discharge.
@@ -159,6 +177,8 @@ impl DesignMetrics {
             Metric::Energy => self.energy,
             Metric::NpRatio => self.np_ratio,
             Metric::TemperatureRise => self.temperature_rise,
+            Metric::GravimetricTimedEnergyDensity => self.gravimetric_timed_energy_density.unwrap_or(f64::NAN),
+            Metric::VolumetricTimedEnergyDensity => self.volumetric_timed_energy_density.unwrap_or(f64::NAN),
         }
     }
 }
@@ -185,6 +205,8 @@ pub struct DesignProblem {
     pub pulse: Option<PulseSpec>,
     /// The charge whose plating-free rate is measured, when asked for.
     pub fast_charge: Option<FastChargeSpec>,
+    /// The timed constant-power discharge whose energy is measured, when asked for.
+    pub timed_energy: Option<TimedEnergySpec>,
     /// Builders re-used across evaluations (one per concurrent evaluation).
     pool: BuilderPool,
 }
@@ -218,6 +240,7 @@ impl DesignProblem {
             mass_convention: MassConvention::Cellstudio,
             pulse: None,
             fast_charge: None,
+            timed_energy: None,
             pool: BuilderPool::default(),
         })
     }
@@ -235,6 +258,13 @@ impl DesignProblem {
     pub fn with_pulse(mut self, pulse: PulseSpec) -> Result<Self, Error> {
         pulse.validate(&self.base)?;
         self.pulse = Some(pulse);
+        Ok(self)
+    }
+
+    /// Measures the energy of every candidate's timed discharge too ([`TimedEnergySpec`]).
+    pub fn with_timed_energy(mut self, spec: TimedEnergySpec) -> Result<Self, Error> {
+        spec.validate()?;
+        self.timed_energy = Some(spec);
         Ok(self)
     }
 
@@ -336,6 +366,10 @@ impl DesignProblem {
             Some(spec) => Some(spec.power(builder, p)?.0),
             None => None,
         };
+        let timed_energy = match &self.timed_energy {
+            Some(spec) => Some(spec.energy(builder, p)?.1),
+            None => None,
+        };
         let fast_charge = match &self.fast_charge {
             Some(spec) => Some(spec.search(builder, p)?),
             None => None,
@@ -371,6 +405,9 @@ impl DesignProblem {
             volumetric_pulse_power_density: pulse_power.map(|w| w / (budget.volume * 1e3)),
             fast_charge,
             np_ratio: p.negative.areal_capacity() * p.cell.area() / 3600.0 / crate::params::soc::StoichiometryWindow::within_reach(p).capacity(p),
+            timed_energy,
+            gravimetric_timed_energy_density: timed_energy.map(|e| e / budget.mass),
+            volumetric_timed_energy_density: timed_energy.map(|e| e / (budget.volume * 1e3)),
             temperature_rise: sol.temperature.iter().fold(0.0f64, |m, t| m.max(t - sol.temperature[0])),
         })
     }

@@ -12,4 +12,5 @@ pub mod profile;
 pub mod pulse;
 pub mod sensitivity;
 pub mod sweep;
+pub mod timed_energy;
 pub mod verdict;

@@ -100,6 +100,9 @@ pub struct Operating {
     /// The charge of the plating-free charge rate (10 % to 80 %, margin 0 V when the metric is
     /// asked for without it).
     pub fast_charge: Option<crate::problem::fast_charge::FastChargeSpec>,
+    /// The constant-power discharge of the energy at a fixed discharge time (10 minutes when
+    /// its metric is asked for without it).
+    pub timed_energy: Option<crate::problem::timed_energy::TimedEnergySpec>,
 }
 
 /// Default of [`Operating::min_utilisation`].
@@ -426,6 +429,11 @@ impl Study {
         let problem = match self.operating.pulse {
             Some(spec) => problem.with_pulse(spec)?,
             None if self.metrics().any(|m| m.needs_pulse()) => problem.with_pulse(Default::default())?,
+            None => problem,
+        };
+        let problem = match self.operating.timed_energy {
+            Some(spec) => problem.with_timed_energy(spec)?,
+            None if self.metrics().any(|m| m.needs_timed_energy()) => problem.with_timed_energy(Default::default())?,
             None => problem,
         };
         let problem = match self.operating.fast_charge {
