@@ -23,5 +23,16 @@ fn sweep_skips_points_outside_the_constraints() {
     assert!(out.warnings.iter().any(|w| w.contains("104 of 169 designs violate")));
     let csv = std::fs::read_to_string(study.output.dir.join("sweep.csv")).unwrap();
     assert_eq!(csv.lines().filter(|l| l.contains(",infeasible,")).count(), 104);
+    // The heat maps draw the boundary active fraction = 60 % (shown in %) across the whole
+    // thickness axis: one horizontal black segment.
+    let svg = std::fs::read_to_string(study.output.dir.join("sweep_gravimetric_energy_density.svg")).unwrap();
+    assert!(svg.contains("constraint boundary"), "no boundary in the legend");
+    let segment = svg
+        .split("<polyline")
+        .filter(|l| l.contains("stroke=\"#000000\" stroke-width=\"2\""))
+        .find_map(|l| l.split("points=\"").nth(1)?.split('"').next().map(str::to_string))
+        .expect("a boundary segment");
+    let ends: Vec<(f64, f64)> = segment.split_whitespace().map(|p| p.split_once(',').map(|(x, y)| (x.parse().unwrap(), y.parse().unwrap())).unwrap()).collect();
+    assert!(ends.len() == 2 && (ends[0].1 - ends[1].1).abs() <= 1.0 && ends[1].0 - ends[0].0 > 500.0, "{ends:?}");
     let _ = std::fs::remove_dir_all(&study.output.dir);
 }

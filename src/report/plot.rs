@@ -62,21 +62,21 @@ pub fn line_plot(path: &Path, title: &str, x_label: &str, y_label: &str, series:
     root.present().map_err(|e| err(e.to_string()))
 }
 
+/// What a heat map draws over its cells: the points `marks` (the first, e.g. the baseline, as
+/// a red cross; the others, e.g. the best design, as black rings), an optional `trace` (e.g. an
+/// optimiser's path) as a white line with dots, and `boundaries` (e.g. linear constraints) as
+/// black segments from one end to the other.
+#[derive(Default)]
+pub struct Overlay<'a> {
+    pub marks: &'a [(String, (f64, f64))],
+    pub trace: &'a [(f64, f64)],
+    pub boundaries: &'a [((f64, f64), (f64, f64))],
+}
+
 /// A heat map of `z[i][j]` over the grid `x[i]`, `y[j]` (NaN cells are left blank) with a
-/// colour bar, the points `marks` (the first, e.g. the baseline, as a red cross; the others,
-/// e.g. the best design, as black rings) and an optional `trace` (e.g. an optimiser's path)
-/// drawn as a white line with dots.
-#[allow(clippy::too_many_arguments)]
-pub fn heat_map(
-    path: &Path,
-    title: &str,
-    labels: (&str, &str),
-    x: &[f64],
-    y: &[f64],
-    z: &[Vec<f64>],
-    marks: &[(String, (f64, f64))],
-    trace: &[(f64, f64)],
-) -> Result<(), Error> {
+/// colour bar and `overlay` drawn over it.
+pub fn heat_map(path: &Path, title: &str, labels: (&str, &str), x: &[f64], y: &[f64], z: &[Vec<f64>], overlay: &Overlay) -> Result<(), Error> {
+    let Overlay { marks, trace, boundaries } = *overlay;
     let err = |e: String| Error::Plot { path: path.display().to_string(), message: e };
     let root = SVGBackend::new(path, (1000, 700)).into_drawing_area();
     root.fill(&WHITE).map_err(|e| err(e.to_string()))?;
@@ -114,7 +114,13 @@ pub fn heat_map(
             .draw_series(trace.iter().map(|&p| Circle::new(p, 3, WHITE.filled())))
             .map_err(|e| err(e.to_string()))?;
     }
-    let legend = !marks.is_empty() || !trace.is_empty();
+    for (k, &(a, b)) in boundaries.iter().enumerate() {
+        let drawn = chart.draw_series(LineSeries::new([a, b], BLACK.stroke_width(2))).map_err(|e| err(e.to_string()))?;
+        if k == 0 {
+            drawn.label("constraint boundary").legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], BLACK.stroke_width(2)));
+        }
+    }
+    let legend = !marks.is_empty() || !trace.is_empty() || !boundaries.is_empty();
     let corner = legend_corner(&[], &marks.iter().map(|m| m.1).collect::<Vec<_>>(), (x[0] - hx, x[x.len() - 1] + hx), (y[0] - hy, y[y.len() - 1] + hy));
     for (k, (label, p)) in marks.iter().enumerate() {
         if k == 0 {

@@ -19,7 +19,7 @@ use crate::error::Error;
 use crate::optim::OptimOptions;
 use crate::problem::fit::{FitObjective, FitResult, fit};
 use crate::problem::fitting::{FitParameter, FittingProblem, INITIAL_SOC, ModelSpec};
-use crate::report::plot::{Series, heat_map, line_plot};
+use crate::report::plot::{Overlay, Series, heat_map, line_plot};
 
 pub use super::fit_data::{DataChoice, InitialSoc};
 
@@ -455,8 +455,7 @@ fn landscape(problem: &FittingProblem, cost: CostKind, result: &FitResult, point
         &xs.iter().map(|&v| shown(0, v)).collect::<Vec<_>>(),
         &ys.iter().map(|&v| shown(1, v)).collect::<Vec<_>>(),
         &z,
-        &[("optimum".into(), (shown(0, result.x[0]), shown(1, result.x[1])))],
-        &trace,
+        &Overlay { marks: &[("optimum".into(), (shown(0, result.x[0]), shown(1, result.x[1])))], trace: &trace, boundaries: &[] },
     )
 }
 

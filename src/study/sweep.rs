@@ -11,7 +11,7 @@ use crate::error::Error;
 use crate::problem::design::{DesignMetrics, Metric};
 use super::SweepDesign;
 use crate::problem::sweep::{Status, SweepPoint, evaluate_all, grid, latin_hypercube};
-use crate::report::plot::{Series, heat_map, line_plot};
+use crate::report::plot::{Overlay, Series, heat_map, line_plot};
 
 /// What a sweep produced.
 pub struct SweepOutcome {
@@ -225,7 +225,9 @@ pub(super) fn write_sweep(study: &Study, out: crate::output::OutputDir, baseline
                 if let Some((p, _)) = best(&points, metric) {
                     marks.push(("best valid design".to_string(), shown(&p.x)));
                 }
-                heat_map(&path, &title, (&axes[0].1, &axes[1].1), &x, &y, &z, &marks, &[])?;
+                let box_ = ((x[0], x[x.len() - 1]), (y[0], y[y.len() - 1]));
+                let boundaries = constraint_segments(study, &names, (axes[0].0, axes[1].0), box_);
+                heat_map(&path, &title, (&axes[0].1, &axes[1].1), &x, &y, &z, &Overlay { marks: &marks, trace: &[], boundaries: &boundaries })?;
             }
             _ => {
                 // Scattered samples: density against the first variable.
@@ -250,4 +252,36 @@ fn axis(path: &str) -> (f64, String) {
     } else {
         (1.0, path.to_string())
     }
+}
+
+/// The parts of the study's linear-constraint boundaries (`sum a_k x_k = b` for each bound of
+/// a constraint on the two plotted variables `names`) inside the plotted box, in the axes'
+/// units (`scale`: shown value per SI unit).
+fn constraint_segments(study: &Study, names: &[&str], scale: (f64, f64), ((x0, x1), (y0, y1)): ((f64, f64), (f64, f64))) -> Vec<((f64, f64), (f64, f64))> {
+    let mut out = Vec::new();
+    for c in &study.constraints {
+        let a = |k: usize| c.terms.get(names[k]).copied().unwrap_or(0.0);
+        // In shown units: (a0 / s0) x + (a1 / s1) y = b.
+        let (ax, ay) = (a(0) / scale.0, a(1) / scale.1);
+        if c.terms.keys().any(|k| !names.contains(&k.as_str())) || (ax == 0.0 && ay == 0.0) {
+            continue;
+        }
+        for b in [c.upper, c.lower, c.equals].into_iter().flatten() {
+            let mut ends: Vec<(f64, f64)> = Vec::new();
+            if ay != 0.0 {
+                ends.extend([x0, x1].into_iter().map(|x| (x, (b - ax * x) / ay)).filter(|p| (y0..=y1).contains(&p.1)));
+            }
+            if ax != 0.0 {
+                ends.extend([y0, y1].into_iter().map(|y| ((b - ay * y) / ax, y)).filter(|p| (x0..=x1).contains(&p.0)));
+            }
+            ends.sort_by(|p, q| p.0.total_cmp(&q.0).then(p.1.total_cmp(&q.1)));
+            ends.dedup_by(|p, q| (p.0 - q.0).abs() <= 1e-12 * (x1 - x0).abs() && (p.1 - q.1).abs() <= 1e-12 * (y1 - y0).abs());
+            if let (Some(&first), Some(&last)) = (ends.first(), ends.last()) {
+                if ends.len() >= 2 {
+                    out.push((first, last));
+                }
+            }
+        }
+    }
+    out
 }
