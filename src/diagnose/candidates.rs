@@ -129,19 +129,30 @@ impl Candidate {
         }
     }
 
-    /// The experiment that separates this candidate from `other` when both fit equally.
-    pub fn separating_experiment(self, other: Candidate) -> &'static str {
+    /// The experiment that separates this candidate from `other` when both fit equally on
+    /// this recording, whose features `f` say what it already holds (an experiment it already
+    /// contains did not separate them, so a stronger one is named).
+    pub fn separating_experiment(self, other: Candidate, f: &Features) -> String {
         use Candidate::*;
+        let has_rates = f.distinct_rates >= 2;
         match (self, other) {
+            (SeriesResistance, Kinetics) | (Kinetics, SeriesResistance) if has_rates => format!(
+                "pulses at rates well above this recording's (it has {} load levels, and their overpotentials still fit a straight line in the current) and near both ends of the state of charge, where kinetics grow and a resistance does not",
+                f.distinct_rates
+            ),
             (SeriesResistance, Kinetics) | (Kinetics, SeriesResistance) => {
-                "current pulses at two or more rates (kinetics is non-linear in current, a resistance is not) across the state of charge"
+                "current pulses at two or more rates (kinetics is non-linear in current, a resistance is not) across the state of charge".into()
             }
-            (SeriesResistance, RcDynamics) | (RcDynamics, SeriesResistance) => "sampling faster than 0.1 s around current steps, or an impedance spectrum",
+            (SeriesResistance, RcDynamics) | (RcDynamics, SeriesResistance) => "sampling faster than 0.1 s around current steps, or an impedance spectrum".into(),
             (LithiumInventory, ActiveMaterial) | (ActiveMaterial, LithiumInventory) => {
-                "a slow (C/20) charge and discharge over the full window, read by differential voltage analysis"
+                "a slow (C/20) charge and discharge over the full window, read by differential voltage analysis".into()
             }
-            (Thermal, _) | (_, Thermal) => "the same protocol at a second ambient temperature, with the cell temperature recorded",
-            _ => "the same cell at a second C-rate with a rest after charge and after discharge",
+            (Thermal, _) | (_, Thermal) => "the same protocol at a second ambient temperature, with the cell temperature recorded".into(),
+            _ if has_rates => format!(
+                "the same cell at a rate well above this recording's highest (its {} load levels did not separate them), with a rest after charge and after discharge",
+                f.distinct_rates
+            ),
+            _ => "the same cell at a second C-rate with a rest after charge and after discharge".into(),
         }
     }
 

@@ -390,7 +390,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
     let structured = (analysis.structured || baseline.rmse_all > 2.0 * noise) && !no_room;
     let standings: Vec<select::Standing> =
         outcomes.iter().map(|c| select::Standing { candidate: c.candidate, comparison: c.comparison, named: c.named }).collect();
-    let mut verdict = select::verdict(&standings, structured, options.margins.min_delta_bic);
+    let mut verdict = select::verdict(&standings, structured, options.margins.min_delta_bic, |a, b| a.separating_experiment(b, &features));
     // No single effect: two may be hiding each other.
     if matches!(verdict, Verdict::Unexplained) {
         let round = pairs::Round { options, base, data: &data, split: &split, baseline: &baseline, fitted_paths: &fitted_paths, noise };

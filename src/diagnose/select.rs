@@ -137,7 +137,7 @@ pub struct Standing {
 /// at their [`common_effective_points`]. Two named candidates within `min_delta_bic` of each
 /// other there are a tie. `structured`: whether the user's residual is larger than noise and
 /// the size floor.
-pub fn verdict(ranked: &[Standing], structured: bool, min_delta_bic: f64) -> Verdict {
+pub fn verdict(ranked: &[Standing], structured: bool, min_delta_bic: f64, separate: impl Fn(Candidate, Candidate) -> String) -> Verdict {
     let named: Vec<&Standing> = ranked.iter().filter(|s| s.named).collect();
     let n_eff = common_effective_points(named.iter().map(|s| &s.comparison));
     match named.as_slice() {
@@ -147,7 +147,7 @@ pub fn verdict(ranked: &[Standing], structured: bool, min_delta_bic: f64) -> Ver
             first: best.candidate,
             second: second.candidate,
             class: best.candidate.class(),
-            experiment: best.candidate.separating_experiment(second.candidate).to_string(),
+            experiment: separate(best.candidate, second.candidate),
         },
         [best, ..] => Verdict::Found { candidate: best.candidate, class: best.candidate.class() },
     }
@@ -173,9 +173,9 @@ mod tests {
             standing(Candidate::SeriesResistance, 1.00799e-3, 2.0, 3736.0),
         ];
         assert!(ranked[0].comparison.delta_bic - ranked[1].comparison.delta_bic > 10.0);
-        assert!(matches!(verdict(&ranked, true, 10.0), Verdict::Tie { .. }));
+        assert!(matches!(verdict(&ranked, true, 10.0, |_, _| String::new()), Verdict::Tie { .. }));
         // A clearly better fit (10 % lower RMSE) is found, not tied.
         let ranked = [standing(Candidate::Kinetics, 0.9e-3, 3.0, 3700.0), standing(Candidate::SeriesResistance, 1.0e-3, 2.0, 3700.0)];
-        assert!(matches!(verdict(&ranked, true, 10.0), Verdict::Found { candidate: Candidate::Kinetics, .. }));
+        assert!(matches!(verdict(&ranked, true, 10.0, |_, _| String::new()), Verdict::Found { candidate: Candidate::Kinetics, .. }));
     }
 }
