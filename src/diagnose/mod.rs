@@ -23,6 +23,10 @@ pub mod backward;
 mod baseline;
 pub mod candidates;
 pub mod features;
+
+/// Hold-out RMSE of the best named single effect, in multiples of the size floor, above which
+/// pairs are tried against it.
+const PAIR_TRIGGER: f64 = 3.0;
 pub mod locate;
 mod pairs;
 pub mod refit;
@@ -391,10 +395,21 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
     let standings: Vec<select::Standing> =
         outcomes.iter().map(|c| select::Standing { candidate: c.candidate, comparison: c.comparison, named: c.named }).collect();
     let mut verdict = select::verdict(&standings, structured, options.margins.min_delta_bic, |a, b| a.separating_experiment(b, &features));
-    // No single effect: two may be hiding each other.
-    if matches!(verdict, Verdict::Unexplained) {
-        let round = pairs::Round { options, base, data: &data, split: &split, baseline: &baseline, fitted_paths: &fitted_paths, noise };
-        if let Some(pair) = pairs::best_pair(&outcomes, &round) {
+    // No single effect: two may be hiding each other. One effect named that leaves far more
+    // than the noise on held-out points may be standing in for two: a pair that beats it by
+    // the same margins (against it, not the user's model) replaces it.
+    let round = pairs::Round { options, base, data: &data, split: &split, baseline: &baseline, fitted_paths: &fitted_paths, noise };
+    let best_single = outcomes.first().filter(|c| c.named).and_then(|c| c.fit.as_ref());
+    let far_from_noise = matches!(verdict, Verdict::Found { .. }) && best_single.is_some_and(|f| f.rmse_holdout > PAIR_TRIGGER * options.margins.size_floor(noise));
+    if matches!(verdict, Verdict::Unexplained) || far_from_noise {
+        let beats_single = |pair: &CandidateOutcome| match (best_single, pair.fit.as_ref()) {
+            (Some(single), Some(fit)) if far_from_noise => {
+                let (m, vs) = (&options.margins, select::compare(single, fit, n_train));
+                vs.delta_bic > m.min_delta_bic && vs.ln_bayes_factor > 0.0 && vs.holdout_gain >= m.min_holdout_gain && vs.explained >= m.size_floor(noise)
+            }
+            _ => true,
+        };
+        if let Some(pair) = pairs::best_pair(&outcomes, &round).filter(beats_single) {
             verdict = Verdict::Found { candidate: pair.candidate, class: pair.class };
             outcomes.insert(0, pair);
         }
