@@ -4,12 +4,15 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 
-use clap::{Args, Parser, Subcommand};
+use clap::Parser;
+
+mod cli;
+use cli::{Cli, Command, DataCommand, Overrides};
 
 use cellstudio::geometry::{MeshSizes, ModelBuilder};
-use cellstudio::models::{ModelKind, Submodels};
+use cellstudio::models::Submodels;
 use cellstudio::output::OutputDir;
-use cellstudio::params::{Override, ParameterSet, apply_overrides};
+use cellstudio::params::{ParameterSet, apply_overrides};
 use cellstudio::protocol::Protocol;
 use cellstudio::report::plot::{Series, line_plot};
 use cellstudio::simulation::{SimOptions, simulate};
@@ -22,206 +25,6 @@ use cellstudio::study::eis;
 use cellstudio::study::pareto::run_pareto;
 use cellstudio::study::sweep::run_sweep;
 use cellstudio::problem::design::Metric;
-
-#[derive(Parser)]
-#[command(name = "cellstudio", about = "Battery design optimisation and parameterisation studio")]
-struct Cli {
-    #[command(subcommand)]
-    command: Command,
-}
-
-/// `--set PATH=VALUE` overrides of the parameter set (repeatable).
-#[derive(Args, Clone, Debug, Default)]
-struct Overrides {
-    /// Override one parameter in SI units, e.g. `--set negative.diffusivity=3e-14` (repeatable).
-    #[arg(long = "set", value_name = "PATH=VALUE")]
-    set: Vec<Override>,
-}
-
-impl Overrides {
-    /// Whether `path` is overridden (`--set cell.contact_resistance=...` switches the
-    /// contact-resistance submodel on, as `--contact-resistance` does).
-    fn sets(&self, path: &str) -> bool {
-        self.set.iter().any(|o| o.path == path)
-    }
-}
-
-#[derive(Subcommand)]
-enum Command {
-    /// Simulate a discharge or a protocol and write CSV + voltage plot.
-    Simulate {
-        #[command(flatten)]
-        overrides: Overrides,
-        /// spm, spme or dfn.
-        #[arg(long, default_value = "spme")]
-        model: ModelKind,
-        /// Constant-current discharge rate (C) to the lower cut-off.
-        #[arg(long, default_value_t = 1.0)]
-        c_rate: f64,
-        /// Protocol TOML file (overrides --c-rate), e.g. protocols/pulse_1C.toml.
-        #[arg(long, conflicts_with = "experiment")]
-        protocol: Option<PathBuf>,
-        /// One experiment step as PyBaMM writes it (repeatable, in order; overrides --c-rate),
-        /// e.g. `--experiment "Charge at 1C until 4.2 V" --experiment "Hold at 4.2 V until C/50"`.
-        #[arg(long)]
-        experiment: Vec<String>,
-        /// Parameter-set file: TOML, JSON or BPX JSON (default: embedded Chen 2020).
-        #[arg(long)]
-        params: Option<PathBuf>,
-        /// Switch on the contact-resistance submodel with this resistance (ohm).
-        #[arg(long)]
-        contact_resistance: Option<f64>,
-        /// Switch on the lumped thermal submodel.
-        #[arg(long)]
-        thermal: bool,
-        /// Volumes per domain and per particle (x_n = x_s = x_p = r_n = r_p).
-        #[arg(long, default_value_t = 20)]
-        mesh: usize,
-        /// Output folder.
-        #[arg(long, default_value = "out")]
-        out: PathBuf,
-        /// Solve this many times and report the median wall time.
-        #[arg(long, default_value_t = 1)]
-        repeat: usize,
-        /// Print the summary as one JSON object.
-        #[arg(long)]
-        json: bool,
-    },
-    /// Run a design study end to end: optimise its objective and write the report.
-    Design {
-        #[command(flatten)]
-        overrides: Overrides,
-        /// Study file, e.g. designs/gravimetric_chen2020.toml.
-        study: PathBuf,
-    },
-    /// Search the non-dominated front of a multi-objective study (NSGA-II) and plot it.
-    Pareto {
-        #[command(flatten)]
-        overrides: Overrides,
-        /// Study file with two or more objectives, e.g. designs/energy_vs_power_chen2020.toml.
-        study: PathBuf,
-    },
-    /// Fit model parameters to a recording: optimise, report standard errors and plots.
-    Fit {
-        #[command(flatten)]
-        overrides: Overrides,
-        /// Fitting study file, e.g. fits/spm_contact_resistance.toml.
-        study: PathBuf,
-        /// Recording CSV or raw cycler export (overrides the study's `data.file`).
-        #[arg(long)]
-        data: Option<PathBuf>,
-    },
-    /// Sample the posterior of a fitting study's parameters (fit first, then MCMC).
-    Sample {
-        #[command(flatten)]
-        overrides: Overrides,
-        /// Fitting study file with a `[sampler]` table, e.g. fits/spm_contact_resistance.toml.
-        study: PathBuf,
-        /// Recording CSV (overrides the study's `data.file`).
-        #[arg(long)]
-        data: Option<PathBuf>,
-    },
-    /// Impedance spectrum of a model at a state of charge (CSV + Nyquist plot), optionally
-    /// fitted to a measured spectrum.
-    Eis {
-        #[command(flatten)]
-        overrides: Overrides,
-        /// spm, spme or dfn.
-        #[arg(long, default_value = "spm")]
-        model: ModelKind,
-        /// State of charge (0..1) of the rest state.
-        #[arg(long, default_value_t = 0.5)]
-        soc: f64,
-        /// Parameter-set file: TOML, JSON or BPX JSON (default: embedded Chen 2020).
-        #[arg(long)]
-        params: Option<PathBuf>,
-        /// Switch on the contact-resistance submodel with this resistance (ohm).
-        #[arg(long)]
-        contact_resistance: Option<f64>,
-        /// Lowest and highest frequency (Hz) and number of frequencies of the model spectrum.
-        #[arg(long, num_args = 3, default_values_t = [1e-4, 1e3, 60.0])]
-        frequencies: Vec<f64>,
-        /// Measured spectrum CSV (frequency_Hz, z_re_ohm, z_im_ohm) to fit.
-        #[arg(long)]
-        fit: Option<PathBuf>,
-        /// Dotted parameters to fit, comma separated (with --fit).
-        #[arg(long, value_delimiter = ',', default_value = "negative.diffusivity,cell.contact_resistance")]
-        parameters: Vec<String>,
-        /// Optimiser for the fit.
-        #[arg(long, default_value = "nelder-mead")]
-        optimiser: String,
-        #[arg(long, default_value = "out/eis")]
-        out: PathBuf,
-    },
-    /// Locate where a model and a recording disagree, name the missing physics, refit the
-    /// candidates and write a report (Markdown, JSON, plots).
-    Diagnose {
-        #[command(flatten)]
-        overrides: Overrides,
-        /// The model to test: spm, spme or dfn.
-        #[arg(long, default_value = "spm")]
-        model: ModelKind,
-        /// Recording CSV with time_s, current_A (discharge positive), voltage_V[, temperature_K],
-        /// or a raw Basytec, BioLogic, Maccor, Neware or Arbin export (detected).
-        #[arg(long)]
-        data: PathBuf,
-        /// Parameter-set file (default: embedded Chen 2020).
-        #[arg(long)]
-        params: Option<PathBuf>,
-        /// The model already has the contact-resistance submodel (cell.contact_resistance).
-        #[arg(long)]
-        contact_resistance: bool,
-        /// The model already has the lumped thermal submodel.
-        #[arg(long)]
-        thermal: bool,
-        /// Parameters fitted in the model and in every candidate (comma-separated paths).
-        #[arg(long, value_delimiter = ',')]
-        fit: Vec<String>,
-        /// Refit at most this many candidates of the library (default: every identifiable one).
-        #[arg(long)]
-        refits: Option<usize>,
-        /// Start the models from the rest state at the first recorded voltage.
-        #[arg(long)]
-        start_at_rest: bool,
-        /// Diagnose again with each named effect added, up to this many rounds.
-        #[arg(long, default_value_t = 3)]
-        max_rounds: usize,
-        /// Output folder.
-        #[arg(long, default_value = "out/diagnosis")]
-        out: PathBuf,
-    },
-    /// Recordings and raw cycler exports.
-    Data {
-        #[command(subcommand)]
-        action: DataCommand,
-    },
-    /// Evaluate a study's grid sweep (in parallel) and write CSV, JSON and density plots.
-    Sweep {
-        #[command(flatten)]
-        overrides: Overrides,
-        /// Study file, e.g. designs/gravimetric_chen2020.toml.
-        study: PathBuf,
-        /// Evaluate only part K of N of the candidates (e.g. `2/8`, one per cluster task) into
-        /// `<output.dir>.shard-K-of-N/shard.json`; `--merge` combines them.
-        #[arg(long, conflicts_with = "merge")]
-        shard: Option<cellstudio::study::shard::Shard>,
-        /// Merge these shard folders (every part once) into the ordinary sweep output.
-        #[arg(long, num_args = 1..)]
-        merge: Vec<PathBuf>,
-    },
-}
-
-#[derive(Subcommand)]
-enum DataCommand {
-    /// Detect a file's format and print its rows, time span and steps.
-    Inspect {
-        /// A raw cycler export (Basytec, BioLogic, Maccor, Neware, Arbin) or a recording CSV.
-        file: PathBuf,
-        /// Print the summary and steps as JSON.
-        #[arg(long)]
-        json: bool,
-    },
-}
 
 fn main() -> ExitCode {
     match run(Cli::parse()) {
