@@ -8,8 +8,6 @@ use std::path::{Path, PathBuf};
 
 use rand::SeedableRng;
 use rand_distr::{Distribution, Normal};
-use indicatif::ParallelProgressIterator;
-use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 use super::{CellChoice, Output};
@@ -17,9 +15,9 @@ use crate::cost::CostKind;
 use crate::data::Recording;
 use crate::error::Error;
 use crate::optim::OptimOptions;
-use crate::problem::fit::{FitObjective, FitResult, fit};
+use crate::problem::fit::{FitResult, fit};
 use crate::problem::fitting::{FitParameter, FittingProblem, INITIAL_SOC, ModelSpec};
-use crate::report::plot::{Overlay, Series, heat_map, line_plot};
+use crate::report::plot::{Series, line_plot};
 
 pub use super::fit_data::{DataChoice, InitialSoc};
 
@@ -51,20 +49,12 @@ pub struct FitStudy {
     pub sampler: toml::Table,
     /// Cost landscape over the first two parameters.
     #[serde(default)]
-    pub landscape: Option<Landscape>,
+    pub landscape: Option<super::landscape::Landscape>,
     /// Profile likelihood of every fitted parameter.
     #[serde(default)]
     pub profile: Option<super::profiles::ProfileSettings>,
     #[serde(default)]
     pub output: Output,
-}
-
-/// A grid of the cost over the first two parameters (log-spaced for log parameters).
-#[derive(Clone, Debug, Deserialize, Serialize)]
-#[serde(deny_unknown_fields)]
-pub struct Landscape {
-    /// Grid points per parameter.
-    pub points: usize,
 }
 
 impl FitStudy {
@@ -347,7 +337,7 @@ pub(crate) fn fit_into(study: &FitStudy, data: Option<&Path>, dir: &Path) -> Res
     let mut files = fit_plots(dir, &study.name, "", &problem, &initial_voltage, &result.voltage)?;
     if let (Some(l), true) = (&study.landscape, problem.dim() >= 2) {
         let path = dir.join("landscape.svg");
-        landscape(&problem, study.cost, &result, l.points, &path)?;
+        super::landscape::landscape(&problem, study.cost, &result, l.points, &path)?;
         files.push(path);
     }
     write_output(dir, "fit.json", serde_json::to_string_pretty(&result).expect("serialisable"), &mut files)?;
@@ -399,64 +389,6 @@ pub(crate) fn with_notes(mut md: String, notes: &[String], warnings: &[String]) 
         let _ = writeln!(md, "\n**Warning:** {w}.");
     }
     md
-}
-
-/// The cost on a grid over the first two parameters (other parameters at the optimum), drawn
-/// as log10(cost - min + 1e-12 scale) with the optimiser's trace.
-fn landscape(problem: &FittingProblem, cost: CostKind, result: &FitResult, points: usize, path: &Path) -> Result<(), Error> {
-    let objective = FitObjective { problem, cost };
-    let axis = |k: usize| -> Vec<f64> {
-        let p = &problem.parameters[k];
-        (0..points)
-            .map(|i| {
-                let u = i as f64 / (points - 1) as f64;
-                if p.log { (p.lower.ln() + u * (p.upper / p.lower).ln()).exp() } else { p.lower + u * (p.upper - p.lower) }
-            })
-            .collect()
-    };
-    let (xs, ys) = (axis(0), axis(1));
-    let cells: Vec<(usize, usize)> = (0..points).flat_map(|i| (0..points).map(move |j| (i, j))).collect();
-    let bar = indicatif::ProgressBar::new(cells.len() as u64);
-    if let Ok(style) = indicatif::ProgressStyle::with_template("landscape {bar:30} {pos}/{len} points [{elapsed}, eta {eta}]") {
-        bar.set_style(style);
-    }
-    let values: Vec<f64> = cells
-        .par_iter()
-        .progress_with(bar.clone())
-        .map(|&(i, j)| {
-            let mut x = result.x.clone();
-            x[0] = xs[i];
-            x[1] = ys[j];
-            use crate::optim::Objective;
-            objective.evaluate(&x)
-        })
-        .collect();
-    bar.finish_and_clear();
-    let shown = |k: usize, v: f64| if problem.parameters[k].log { v.log10() } else { v };
-    let fmin = values.iter().copied().filter(|v| v.is_finite()).fold(f64::INFINITY, f64::min).min(result.cost);
-    let spread = values.iter().copied().filter(|v| v.is_finite()).fold(0.0f64, |m, v| m.max(v - fmin));
-    let mut z = vec![vec![f64::NAN; points]; points];
-    for (&(i, j), v) in cells.iter().zip(&values) {
-        z[i][j] = (v - fmin + 1e-9 * spread.max(1e-300)).log10();
-    }
-    let label = |k: usize| {
-        let p = &problem.parameters[k];
-        if p.log { format!("log10 {}", p.path) } else { p.path.clone() }
-    };
-    let start = problem.initial();
-    let trace: Vec<(f64, f64)> = std::iter::once(&start[..])
-        .chain(result.trace.iter().map(|e| &e.best_x[..]))
-        .map(|x| (shown(0, x[0]), shown(1, x[1])))
-        .collect();
-    heat_map(
-        path,
-        &format!("cost landscape: log10({} - min)", cost.name()),
-        (&label(0), &label(1)),
-        &xs.iter().map(|&v| shown(0, v)).collect::<Vec<_>>(),
-        &ys.iter().map(|&v| shown(1, v)).collect::<Vec<_>>(),
-        &z,
-        &Overlay { marks: &[("optimum".into(), (shown(0, result.x[0]), shown(1, result.x[1])))], trace: &trace, boundaries: &[] },
-    )
 }
 
 fn report(study: &FitStudy, problem: &FittingProblem, r: &FitResult, initial_rmse: f64) -> String {

@@ -9,12 +9,15 @@ pub mod eis;
 pub mod fit;
 mod fit_data;
 pub mod joint_fit;
+pub mod landscape;
 pub mod limits;
 pub mod profiles;
 pub mod sample;
 pub mod shard;
 pub mod pareto;
 pub mod sweep;
+mod warnings;
+pub use warnings::{at_bound_warnings, on_bounds, truncation_warning};
 
 use std::path::{Path, PathBuf};
 
@@ -456,48 +459,6 @@ pub const DEGENERATE_ENERGY_FRACTION: f64 = 1e-3;
 /// [`DEGENERATE_ENERGY_FRACTION`] of the baseline's.
 pub fn degenerate(m: &crate::problem::design::DesignMetrics, baseline: &crate::problem::design::DesignMetrics) -> bool {
     !(m.energy.is_finite() && m.energy > DEGENERATE_ENERGY_FRACTION * baseline.energy)
-}
-
-/// The values of `x` that lie on a bound (within 1e-6 of their range): index and side.
-pub fn on_bounds(x: &[f64], lower: &[f64], upper: &[f64]) -> Vec<(usize, &'static str)> {
-    let mut out = Vec::new();
-    for (k, ((&v, &lo), &hi)) in x.iter().zip(lower).zip(upper).enumerate() {
-        let tol = 1e-6 * (hi - lo).abs();
-        for (side, b) in [("lower", lo), ("upper", hi)] {
-            if (v - b).abs() <= tol {
-                out.push((k, side));
-            }
-        }
-    }
-    out
-}
-
-/// One warning per value of `x` on a bound ([`on_bounds`]), naming it.
-pub fn at_bound_warnings(what: &str, names: &[String], x: &[f64], lower: &[f64], upper: &[f64]) -> Vec<String> {
-    on_bounds(x, lower, upper)
-        .into_iter()
-        .filter_map(|(k, side)| {
-            Some(format!(
-                "{what} has {} = {} at its {side} bound; the best value may lie outside the searched range",
-                names.get(k)?,
-                crate::error::number(x[k])
-            ))
-        })
-        .collect()
-}
-
-/// A warning when an optimiser stopped on its iteration or evaluation cap rather than on
-/// convergence: the result is the best found so far, not an optimum.
-pub fn truncation_warning(what: &str, stop: &crate::optim::StopReason, iterations: usize, evaluations: usize) -> Option<String> {
-    use crate::optim::StopReason;
-    let cap = match stop {
-        StopReason::MaxIterations => "iteration",
-        StopReason::MaxEvaluations => "evaluation",
-        _ => return None,
-    };
-    Some(format!(
-        "{what} stopped on its {cap} cap ({iterations} iterations, {evaluations} evaluations) before converging: the result is the best found so far; raise [optimiser] max_{cap}s to go on"
-    ))
 }
 
 /// Writes `text` to `dir/name` and appends the path to `files`.

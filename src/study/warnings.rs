@@ -1,0 +1,44 @@
+//! Warnings every run gives the same way: a result on a bound of its search range, a search
+//! stopped on its iteration or evaluation cap.
+
+/// The values of `x` that lie on a bound (within 1e-6 of their range): index and side.
+pub fn on_bounds(x: &[f64], lower: &[f64], upper: &[f64]) -> Vec<(usize, &'static str)> {
+    let mut out = Vec::new();
+    for (k, ((&v, &lo), &hi)) in x.iter().zip(lower).zip(upper).enumerate() {
+        let tol = 1e-6 * (hi - lo).abs();
+        for (side, b) in [("lower", lo), ("upper", hi)] {
+            if (v - b).abs() <= tol {
+                out.push((k, side));
+            }
+        }
+    }
+    out
+}
+
+/// One warning per value of `x` on a bound ([`on_bounds`]), naming it.
+pub fn at_bound_warnings(what: &str, names: &[String], x: &[f64], lower: &[f64], upper: &[f64]) -> Vec<String> {
+    on_bounds(x, lower, upper)
+        .into_iter()
+        .filter_map(|(k, side)| {
+            Some(format!(
+                "{what} has {} = {} at its {side} bound; the best value may lie outside the searched range",
+                names.get(k)?,
+                crate::error::number(x[k])
+            ))
+        })
+        .collect()
+}
+
+/// A warning when an optimiser stopped on its iteration or evaluation cap rather than on
+/// convergence: the result is the best found so far, not an optimum.
+pub fn truncation_warning(what: &str, stop: &crate::optim::StopReason, iterations: usize, evaluations: usize) -> Option<String> {
+    use crate::optim::StopReason;
+    let cap = match stop {
+        StopReason::MaxIterations => "iteration",
+        StopReason::MaxEvaluations => "evaluation",
+        _ => return None,
+    };
+    Some(format!(
+        "{what} stopped on its {cap} cap ({iterations} iterations, {evaluations} evaluations) before converging: the result is the best found so far; raise [optimiser] max_{cap}s to go on"
+    ))
+}
