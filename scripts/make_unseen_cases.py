@@ -510,7 +510,97 @@ def batch_s(root):
                initial_soc=1.0, seed=88, cycler=CYCLER, compare=lion.DFN())
 
 
-BATCHES = {"u": batch_u, "v": batch_v, "w": batch_w, "x": batch_x, "y": batch_y, "z": batch_z, "q": batch_q, "r": batch_r, "s": batch_s}
+def batch_t(root):
+    """Tenth batch, made blind (a helper session, judged once on a frozen binary before anything
+    else) to test the rule that refits pairs when the best single leaves a hold-out RMSE above
+    3x the size floor: four two-effect pairs not used before (negative LAM + contact under
+    pulses; kinetics + self-heating with the temperature recorded; electrolyte conductivity +
+    lithium loss; positive diffusivity + negative LAM), two single effects handed an SPMe on DFN
+    data (the SPMe's own error near the knee, 4-9 mV RMS, stays after the right single:
+    naming electrolyte transport beside it is right, any other partner is a stand-in), one large
+    single (25 % positive LAM) where a pair should not be preferred, and a long mixed DFN
+    control. Lithium and active-material loss are accepted only by their own words."""
+    p = scaled(chen(), "Negative electrode active material volume fraction", 0.92)
+    p.update({"Contact resistance [Ohm]": 0.008}, check_already_exists=False)
+    block = ["Discharge at 1C for 6 minutes or until 2.7 V", "Rest for 5 minutes", "Discharge at 2C for 30 seconds or until 2.7 V", "Rest for 3 minutes"]
+    write_case(root, "t1_lam_negative_and_contact_pulses", lion.DFN(options={"contact resistance": "true"}), p,
+               block * 7 + ["Discharge at 1C until 2.7 V", "Rest for 30 minutes"],
+               {"effect": "active_material_loss+contact_resistance", "candidate_model": "dfn", "accept": ["active material", "contact|series resistance"],
+                "note": "8 % loss of negative active material (at the lithiated state, default initial concentrations) and 8 mOhm contact "
+                        "resistance; from full, 7 x (1C for 6 min, 5 min rest, 2C for 30 s, 3 min rest), then 1C to 2.7 V and 30 min rest"},
+               seed=91, compare=lion.DFN())
+    p = chen()
+    for side in ["Negative", "Positive"]:
+        p = scaled(p, f"{side} electrode exchange-current density [A.m-2]", 0.3)
+    p.update({"Total heat transfer coefficient [W.m-2.K-1]": 20.0})
+    pulses = ["Discharge at 1C for 20 seconds", "Rest for 3 minutes", "Discharge at 3C for 20 seconds", "Rest for 3 minutes",
+              "Charge at 1C for 20 seconds", "Rest for 3 minutes"]
+    write_case(root, "t2_kinetics_and_thermal_recorded", lion.DFN(options={"thermal": "lumped"}), p,
+               ["Rest for 5 minutes"] + pulses * 3 + ["Discharge at 1.5C until 2.7 V", "Rest for 40 minutes"],
+               {"effect": "kinetics+thermal", "candidate_model": "dfn", "accept": ["kinetic|charge transfer|exchange", "thermal|heat"],
+                "note": "exchange currents x0.3 (both electrodes) and lumped self-heating h = 20 W/(m2 K); 3 x (1C, 3C discharge and 1C "
+                        "charge pulses of 20 s with 3 min rests) from 80 % SOC, then 1.5C to 2.7 V (about 22 K rise) and 40 min rest; "
+                        "temperature recorded"},
+               initial_soc=0.8, temperature=True, seed=92, compare=lion.DFN())
+    p = scaled(chen(), "Electrolyte conductivity [S.m-1]", 0.5)
+    p = scaled(p, "Initial concentration in negative electrode [mol.m-3]", 0.96)
+    two_rates = ["Discharge at 1C for 20 seconds", "Rest for 3 minutes", "Discharge at 3C for 20 seconds", "Rest for 3 minutes"]
+    write_case(root, "t3_conductivity_and_inventory", lion.DFN(), p,
+               ["Rest for 5 minutes"] + two_rates * 2 + ["Discharge at 1C until 2.7 V", "Rest for 30 minutes", "Charge at 1C for 20 minutes",
+                                                       "Rest for 10 minutes"] + two_rates,
+               {"effect": "electrolyte_transport+lithium_inventory_loss", "candidate_model": "dfn", "accept": ["electrolyte", "inventory"],
+                "note": "electrolyte conductivity x0.5 and 4 % less lithium in the negative electrode; 1C/3C pulses from full, 1C to "
+                        "2.7 V, 30 min rest, 1C charge for 20 min, 1C/3C pulses at low SOC"},
+               seed=93, compare=lion.DFN())
+    p = scaled(chen(), "Positive particle diffusivity [m2.s-1]", 0.3)
+    p = scaled(p, "Negative electrode active material volume fraction", 0.92)
+    write_case(root, "t4_diffusivity_positive_and_lam_negative", lion.SPMe(), p,
+               ["Discharge at 1.5C until 2.7 V", "Rest for 20 minutes", "Discharge at C/3 until 2.7 V", "Rest for 20 minutes", "Charge at 1C until 4.1 V",
+                "Rest for 20 minutes"],
+               {"effect": "solid_diffusivity+active_material_loss", "candidate_model": "spme", "accept": ["diffusiv", "active material"],
+                "note": "positive particle diffusivity x0.3 and 8 % loss of negative active material (default initial concentrations); "
+                        "1.5C from full to 2.7 V (ends early, at about 29 min), 20 min rest, the rest of the capacity at C/3 to 2.7 V, 20 min "
+                        "rest, 1C charge to 4.1 V, 20 min rest; SPMe data"},
+               seed=94, compare=lion.SPMe())
+    p = scaled(chen(), "Initial concentration in negative electrode [mol.m-3]", 0.94)
+    write_case(root, "t5_inventory_dfn_data_spme_1p5C", lion.DFN(), p,
+               ["Rest for 5 minutes", "Discharge at 1.5C until 2.7 V", "Rest for 30 minutes", "Charge at C/2 for 40 minutes", "Rest for 20 minutes"],
+               {"effect": "lithium_inventory_loss", "candidate_model": "spme", "accept": ["inventory"],
+                "note": "6 % less lithium in the negative electrode, DFN data handed to the SPMe; 1.5C from full to 2.7 V, 30 min rest, "
+                        "C/2 charge for 40 min, 20 min rest. The SPMe's own error on this protocol (PyBaMM's SPMe against its DFN, both "
+                        "with the lithium loss) is 9.1 mV RMS, most of it near the knee, against 65.8 mV from the lithium loss. One concealed effect: a first verdict must name lithium inventory; "
+                        "electrolyte transport (SPMe -> DFN) beside it is right too, any other partner is a stand-in for the SPMe's error"},
+               seed=95, compare=lion.SPMe())
+    p = chen(); p.update({"Contact resistance [Ohm]": 0.01}, check_already_exists=False)
+    write_case(root, "t6_contact_dfn_data_spme_3C_pulses", lion.DFN(options={"contact resistance": "true"}), p,
+               ["Rest for 5 minutes"] + ["Discharge at 3C for 20 seconds", "Rest for 3 minutes", "Charge at 1.5C for 20 seconds", "Rest for 3 minutes"] * 4
+               + ["Discharge at 1C until 2.7 V", "Rest for 30 minutes"],
+               {"effect": "contact_resistance", "candidate_model": "spme", "accept": ["contact", "series resistance"],
+                "note": "10 mOhm contact resistance, DFN data handed to the SPMe: 3C discharge / 1.5C charge pulses of 20 s from 80 % SOC, "
+                        "then 1C to 2.7 V and 30 min rest. The SPMe's own error on this protocol is 4.0 mV RMS (PyBaMM's SPMe "
+                        "against its DFN, both with the resistance), most of it at the 1C knee, against 43.3 mV RMS (150 mV steps at "
+                        "3C) from the resistance. One concealed "
+                        "effect: electrolyte transport (SPMe -> DFN) beside it is right too, any other partner is a stand-in"},
+               initial_soc=0.8, seed=96, compare=lion.SPMe())
+    p = scaled(chen(), "Positive electrode active material volume fraction", 0.75)
+    write_case(root, "t7_lam_positive_25pct_dfn", lion.DFN(), p,
+               ["Discharge at 1C until 2.7 V", "Rest for 30 minutes", "Charge at C/2 for 60 minutes", "Rest for 20 minutes",
+                "Discharge at 2C for 30 seconds", "Rest for 5 minutes", "Charge at 1C for 30 seconds", "Rest for 10 minutes"],
+               {"effect": "active_material_loss", "candidate_model": "dfn", "accept": ["active material"],
+                "note": "25 % loss of positive active material (large), one effect: a pair should not be preferred. 1C from full to "
+                        "2.7 V, 30 min rest, C/2 charge for 60 min, 20 min rest, a 2C discharge and a 1C charge pulse of 30 s"},
+               seed=97, compare=lion.DFN())
+    mixed = (["Rest for 10 minutes", "Charge at 1C until 4.1 V", "Hold at 4.1 V until C/10", "Rest for 15 minutes"] + urban_drive(98, 12)
+             + ["Rest for 10 minutes", "Discharge at C/2 for 20 minutes", "Rest for 10 minutes", "Discharge at 2C for 20 seconds", "Rest for 3 minutes",
+                "Charge at 1.5C for 20 seconds", "Rest for 5 minutes", "Discharge at 1C until 3.0 V", "Rest for 20 minutes"])
+    write_case(root, "t8_control_long_mixed_dfn", lion.DFN(), chen(), mixed,
+               {"effect": "none", "candidate_model": "dfn", "accept": ["no missing"],
+                "note": "negative control: DFN data and model, about 3 h mixed from 40 % SOC (1C CC-CV charge to 4.1 V and C/10, urban "
+                        "drive with regeneration to 3C, C/2, 2C/1.5C pulses, 1C to 3.0 V, rests)"},
+               initial_soc=0.4, seed=98, compare=lion.DFN())
+
+
+BATCHES = {"u": batch_u, "v": batch_v, "w": batch_w, "x": batch_x, "y": batch_y, "z": batch_z, "q": batch_q, "r": batch_r, "s": batch_s, "t": batch_t}
 
 if __name__ == "__main__":
     root = sys.argv[1] if len(sys.argv) > 1 else "out/unseen-cases"
