@@ -39,6 +39,7 @@ pub(super) fn best_pair(singles: &[CandidateOutcome], round: &Round) -> Option<C
             let next_a = a.next.as_ref()?;
             let paths: Vec<String> = next_a.fitted.iter().map(|p| p.path.clone()).collect();
             let aug = b.candidate.augment(&next_a.spec, &next_a.base, &paths)?;
+            let partner: Vec<String> = aug.extra.iter().map(|p| p.path.clone()).collect();
             // The first effect's fixed structural parameters count too.
             let structural_a = a.candidate.augment(&round.options.spec, round.base, round.fitted_paths).map_or(0, |x| x.structural_parameters);
             let change = format!("{}; {}", a.change, aug.change);
@@ -59,10 +60,21 @@ pub(super) fn best_pair(singles: &[CandidateOutcome], round: &Round) -> Option<C
                 let relative = se / v.abs().max(f64::MIN_POSITIVE);
                 (!(relative <= crate::problem::verdict::MAX_RELATIVE_ERROR)).then(|| format!("{n} is not determined by this recording (±{:.0} %)", 100.0 * relative))
             });
+            // A parameter-mismatch partner whose fitted values are the set's own (within two
+            // standard errors) adds nothing: the pair is the first effect alone. (A submodel
+            // switched on adds its physics whatever its parameters.)
+            let unchanged = b.class == super::Class::ParameterMismatch
+                && !partner.is_empty()
+                && partner.iter().all(|path| {
+                    let k = fit.names.iter().position(|n| n == path);
+                    let v0 = round.base.get(path).ok();
+                    k.zip(v0).is_some_and(|(k, v0)| (fit.values[k] - v0).abs() <= 2.0 * fit.std_errors[k])
+                });
             let implausible = [a.candidate, b.candidate]
                 .iter()
                 .find_map(|c| c.implausible(&names, &values, round.base).or_else(|| c.unresolved(&names, &values, round.data)))
-                .or_else(|| undetermined.into_iter().next());
+                .or_else(|| undetermined.into_iter().next())
+                .or_else(|| unchanged.then(|| format!("{} keeps the set's values: it adds nothing", b.candidate.name())));
             // Named by the pair's own values (e.g. the share of capacity lost).
             let name = format!("{} together with {}", a.candidate.named_by_values(&fit.names, &fit.values, round.base), b.candidate.named_by_values(&fit.names, &fit.values, round.base));
             Some(CandidateOutcome {
