@@ -150,7 +150,11 @@ pub fn median(x: &[f64]) -> f64 {
 /// median absolute first difference divided by `0.6745 √2` (exact for Gaussian noise on a
 /// locally constant signal; jumps and slow trends barely move the median).
 pub fn noise_from_differences(x: &[f64]) -> f64 {
-    let d: Vec<f64> = x.windows(2).map(|w| (w[1] - w[0]).abs()).collect();
+    noise_of(x.windows(2).map(|w| (w[1] - w[0]).abs()).collect())
+}
+
+/// White-noise level from absolute first differences `d`: their median over `0.6745 √2`.
+fn noise_of(d: Vec<f64>) -> f64 {
     median(&d) / (0.674_489_75 * std::f64::consts::SQRT_2)
 }
 
@@ -170,7 +174,7 @@ pub fn noise_from_dense_differences(x: &[f64], t: &[f64]) -> f64 {
     if d.len() < 30 {
         return noise_from_differences(x);
     }
-    median(&d) / (0.674_489_75 * std::f64::consts::SQRT_2)
+    noise_of(d)
 }
 
 /// Ordinary least squares `y ≈ X b` (columns of `X` given; add a column of ones for an

@@ -404,7 +404,10 @@ impl DesignProblem {
             gravimetric_pulse_power_density: pulse_power.map(|w| w / budget.mass),
             volumetric_pulse_power_density: pulse_power.map(|w| w / (budget.volume * 1e3)),
             fast_charge,
-            np_ratio: p.negative.areal_capacity() * p.cell.area() / 3600.0 / crate::params::soc::StoichiometryWindow::within_reach(p).capacity(p),
+            np_ratio: {
+                let w = crate::params::soc::StoichiometryWindow::within_reach(p);
+                1.0 / (w.x100 - w.x0)
+            },
             timed_energy,
             gravimetric_timed_energy_density: timed_energy.map(|e| e / budget.mass),
             volumetric_timed_energy_density: timed_energy.map(|e| e / (budget.volume * 1e3)),
