@@ -67,7 +67,7 @@ pub fn superseded(rounds: &[Diagnosis], model: &FinalModel, options: &DiagnoseOp
         let start: Vec<f64> = fitted.iter().map(|p| p.initial).collect();
         let structural = model.fit.parameters - model.fit.names.len();
         let label = format!("{} without {}", describe(&model.spec), c.name);
-        let Ok(reduced) = refit::fit_and_score(label, spec, model.base.clone(), fitted, structural, &[start], &last.data, &last.split, &options.fit) else {
+        let Ok(reduced) = refit::fit_and_score(label, spec, model.base.clone(), fitted, structural, &refit::Starts::at(vec![start]), &last.data, &last.split, &options.fit) else {
             continue;
         };
         let cmp = select::compare(&reduced, model.fit, n);

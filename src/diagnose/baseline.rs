@@ -53,7 +53,7 @@ pub(super) fn fit_baseline(data: &mut Recording, base: &ParameterSet, options: &
             });
         }
         let label = format!("{} as given", describe(&options.spec));
-        match refit::fit_and_score(label, options.spec, base.clone(), fitted.clone(), 0, &starts, data, &split, &options.fit) {
+        match refit::fit_and_score(label, options.spec, base.clone(), fitted.clone(), 0, &refit::Starts::at(starts.clone()), data, &split, &options.fit) {
             Ok(fit) => {
                 let starts = if starts.is_empty() { vec![fitted.iter().map(|p| p.initial).collect()] } else { starts };
                 return Ok(BaselineFit { fit, split, fitted, starts });

@@ -221,18 +221,10 @@ impl Candidate {
                 if spec.kind == ModelKind::Spm {
                     return None;
                 }
-                (
-                    vec![around("electrolyte.diffusivity_factor")?, around("electrolyte.conductivity_factor")?],
-                    "electrolyte diffusivity and conductivity factors refitted".into(),
-                )
+                (self.refitted_paths().iter().map(|p| around(p)).collect::<Option<_>>()?, "electrolyte diffusivity and conductivity factors refitted".into())
             }
-            Candidate::Kinetics => (
-                vec![around("negative.rate_constant")?, around("positive.rate_constant")?],
-                "reaction rate constants of both electrodes refitted".into(),
-            ),
-            Candidate::SolidDiffusion => {
-                (vec![around("negative.diffusivity")?, around("positive.diffusivity")?], "particle diffusivities refitted".into())
-            }
+            Candidate::Kinetics => (self.refitted_paths().iter().map(|p| around(p)).collect::<Option<_>>()?, "reaction rate constants of both electrodes refitted".into()),
+            Candidate::SolidDiffusion => (self.refitted_paths().iter().map(|p| around(p)).collect::<Option<_>>()?, "particle diffusivities refitted".into()),
             Candidate::LithiumInventory => {
                 let c = |path: &str, c0: f64, cmax: f64| FitParameter::linear(path, c0, 0.01 * cmax, 0.99 * cmax);
                 replaces.push(INITIAL_SOC.to_string());
@@ -301,6 +293,24 @@ impl Candidate {
         Some(Augmentation { spec, base: p, extra, replaces, structural_parameters, change })
     }
 
+    /// The set's parameters a parameter-mismatch candidate refits (empty for the others).
+    pub fn refitted_paths(self) -> &'static [&'static str] {
+        match self {
+            Candidate::ElectrolyteTransport => &["electrolyte.diffusivity_factor", "electrolyte.conductivity_factor"],
+            Candidate::Kinetics => &["negative.rate_constant", "positive.rate_constant"],
+            Candidate::SolidDiffusion => &["negative.diffusivity", "positive.diffusivity"],
+            Candidate::ActiveMaterial => &["negative.active_fraction", "positive.active_fraction"],
+            Candidate::LithiumInventory => &["negative.initial_concentration", "positive.initial_concentration"],
+            _ => &[],
+        }
+    }
+
+    /// The pairs of `names` and `values` that are this candidate's own (a pair of effects
+    /// fits both effects' parameters: each is judged on its own).
+    fn own<'a>(self, names: &'a [String], values: &'a [f64]) -> impl Iterator<Item = (&'a String, &'a f64)> {
+        names.iter().zip(values).filter(move |(n, _)| self.refitted_paths().contains(&n.as_str()))
+    }
+
     /// Why fitted `values` of `names` (parameter units) are implausible for this candidate,
     /// relative to the user's set `base`; `None` when they are plausible.
     pub fn implausible(self, names: &[String], values: &[f64], base: &ParameterSet) -> Option<String> {
@@ -310,7 +320,7 @@ impl Candidate {
                 let r = get("cell.contact_resistance")?;
                 (!(1e-4..=0.1).contains(&r)).then(|| format!("contact resistance {:.3} mOhm is outside 0.1 to 100 mOhm", r * 1e3))
             }
-            Candidate::ElectrolyteTransport | Candidate::Kinetics | Candidate::SolidDiffusion => names.iter().zip(values).find_map(|(n, v)| {
+            Candidate::ElectrolyteTransport | Candidate::Kinetics | Candidate::SolidDiffusion => self.own(names, values).find_map(|(n, v)| {
                 let v0 = base.get(n).ok()?;
                 let ratio = v / v0;
                 (!(0.05..=20.0).contains(&ratio)).then(|| format!("{n} at {ratio:.3} times the set's value is outside 0.05 to 20"))
@@ -321,7 +331,7 @@ impl Candidate {
                 let change = lithium(cn, cp) / lithium(base.negative.initial_concentration, base.positive.initial_concentration) - 1.0;
                 (change.abs() > 0.4).then(|| format!("a change of {:.0} % of the cyclable lithium exceeds 40 %", 100.0 * change))
             }
-            Candidate::ActiveMaterial => names.iter().zip(values).find_map(|(n, v)| {
+            Candidate::ActiveMaterial => self.own(names, values).find_map(|(n, v)| {
                 let loss = 1.0 - v / base.get(n).ok()?;
                 (loss > 0.5).then(|| format!("{n} lost {:.0} %, more than 50 %", 100.0 * loss))
             }),
@@ -367,5 +377,25 @@ impl Candidate {
             }
             _ => self.name().to_string(),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_pair_judges_each_candidate_on_its_own_parameters() {
+        // Diffusivity at 0.3 times the set's value beside an 8 % loss of negative active
+        // material: the loss is plausible, and the diffusivity is not a "lost" material.
+        let base = crate::params::chen2020();
+        let names: Vec<String> = ["positive.diffusivity", "negative.active_fraction", "positive.active_fraction"].map(String::from).to_vec();
+        let values = [0.3 * base.positive.diffusivity, 0.92 * base.negative.active_fraction, base.positive.active_fraction];
+        assert_eq!(Candidate::ActiveMaterial.implausible(&names, &values, &base), None);
+        assert_eq!(Candidate::SolidDiffusion.implausible(&names, &values, &base), None);
+        // Each still refuses its own implausible values.
+        let values = [0.01 * base.positive.diffusivity, 0.4 * base.negative.active_fraction, base.positive.active_fraction];
+        assert!(Candidate::ActiveMaterial.implausible(&names, &values, &base).is_some_and(|why| why.contains("negative.active_fraction")));
+        assert!(Candidate::SolidDiffusion.implausible(&names, &values, &base).is_some_and(|why| why.contains("positive.diffusivity")));
     }
 }

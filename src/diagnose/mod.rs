@@ -29,6 +29,7 @@ pub mod features;
 const PAIR_TRIGGER: f64 = 3.0;
 pub mod locate;
 mod pairs;
+mod refit_candidate;
 pub mod refit;
 pub mod report;
 pub mod select;
@@ -46,8 +47,9 @@ pub use select::{Comparison, Margins, Verdict};
 
 use crate::data::Recording;
 use crate::error::Error;
-use crate::params::{ParameterSet, set_initial_soc};
-use crate::problem::fitting::{FitParameter, INITIAL_SOC, ModelSpec};
+use crate::params::ParameterSet;
+use refit_candidate::refit_candidate;
+use crate::problem::fitting::{FitParameter, ModelSpec};
 
 /// A fit parameter for `path` around its value in `base`: log-scaled between a tenth and ten
 /// times a positive value, linear within ±1 around a zero or negative one.
@@ -201,75 +203,6 @@ impl Diagnosis {
     /// The first-ranked refitted candidate.
     pub fn best(&self) -> Option<&CandidateOutcome> {
         self.candidates.first().filter(|c| c.fit.is_some())
-    }
-}
-
-/// Fits one candidate on top of the baseline; `warm` holds the baseline's fitted parameters
-/// at their fitted values, `restarts` the points (values of `warm`) the baseline's fit
-/// started from.
-fn refit_candidate(
-    c: Candidate,
-    aug: candidates::Augmentation,
-    warm: &[FitParameter],
-    restarts: &[Vec<f64>],
-    options: &DiagnoseOptions,
-    data: &Recording,
-    split: &Split,
-) -> (Option<FitOutcome>, Option<String>, Option<NextModel>) {
-    let mut params: Vec<FitParameter> = warm.iter().filter(|p| !aug.replaces.contains(&p.path)).cloned().collect();
-    if c == Candidate::LithiumInventory {
-        // Start the free concentrations at the baseline's fitted initial state.
-        let mut p = aug.base.clone();
-        if let Some(soc) = warm.iter().find(|p| p.path == INITIAL_SOC) {
-            let _ = set_initial_soc(&mut p, soc.initial);
-        }
-        params.extend(aug.extra.iter().cloned().map(|mut e| {
-            e.initial = p.get(&e.path).unwrap_or(e.initial).clamp(e.lower, e.upper);
-            e
-        }));
-    } else {
-        params.extend(aug.extra.iter().cloned());
-    }
-    // Starts: the candidate's own parameters at their initial values or a third of the way to
-    // their lower bounds (in the search coordinates), so no fit starts only at one point; the
-    // user's parameters at their fitted values or where the baseline's fit started (its fitted
-    // values, e.g. an initial state of charge, may have absorbed the missing effect and hold
-    // the candidate's fit in a false minimum). The first is tried alone; the others only when
-    // it fails, stops on its cap or ends on a bound (`refit::fit_and_score`).
-    let own = |p: &FitParameter, toward_lower: bool| match (toward_lower, p.log) {
-        (false, _) => p.initial,
-        (true, true) => (p.initial.ln() + (p.lower.ln() - p.initial.ln()) / 3.0).exp(),
-        (true, false) => p.initial + (p.lower - p.initial) / 3.0,
-    };
-    let mut starts: Vec<Vec<f64>> = Vec::new();
-    for user in std::iter::once(None).chain(restarts.iter().map(Some)) {
-        for toward_lower in [false, true] {
-            let s: Vec<f64> = params
-                .iter()
-                .map(|p| match warm.iter().position(|w| w.path == p.path) {
-                    Some(i) => user.map_or(p.initial, |r| r[i].clamp(p.lower, p.upper)),
-                    None => own(p, toward_lower),
-                })
-                .collect();
-            if !starts.contains(&s) {
-                starts.push(s);
-            }
-        }
-    }
-    match refit::fit_and_score(describe(&aug.spec), aug.spec, aug.base.clone(), params.clone(), aug.structural_parameters, &starts, data, split, &options.fit) {
-        Ok(f) => {
-            let fitted = params
-                .into_iter()
-                .zip(&f.values)
-                .map(|(mut p, v)| {
-                    p.initial = v.clamp(p.lower, p.upper);
-                    p
-                })
-                .collect();
-            let next = NextModel { spec: aug.spec, base: aug.base, fitted };
-            (Some(f), None, Some(next))
-        }
-        Err(e) => (None, Some(format!("fit failed: {e}")), None),
     }
 }
 

@@ -1,7 +1,7 @@
 //! Two effects at once: when no single candidate explains a structured residual, two
 //! effects may be hiding each other (a lost electrode capacity and self-heating pull the
 //! voltage opposite ways). Every pair of candidates whose own fit lowered the training error
-//! at all is refitted together, the second added to the first's model, and counted and
+//! at all (or was fitted to a recorded temperature) is refitted together, the second added to the first's model, and counted and
 //! judged as a single candidate is (both effects' parameters and structural changes count).
 
 use rayon::prelude::*;
@@ -24,8 +24,13 @@ pub(super) struct Round<'a> {
 /// The best named pair of `singles` (refitted candidates), as one candidate outcome named
 /// "A together with B"; `None` when no pair clears the margins with plausible values.
 pub(super) fn best_pair(singles: &[CandidateOutcome], round: &Round) -> Option<CandidateOutcome> {
-    let useful: Vec<&CandidateOutcome> =
-        singles.iter().filter(|c| c.next.is_some() && c.fit.as_ref().is_some_and(|f| f.rmse_train < round.baseline.rmse_train)).collect();
+    // A thermal candidate fitted to a recorded temperature has evidence of its own even
+    // when alone it does not lower the voltage's error (a second effect may hide it).
+    let own_evidence = |c: &CandidateOutcome| c.candidate == Candidate::Thermal && round.data.temperature.is_some();
+    let useful: Vec<&CandidateOutcome> = singles
+        .iter()
+        .filter(|c| c.next.is_some() && c.fit.as_ref().is_some_and(|f| f.rmse_train < round.baseline.rmse_train || own_evidence(c)))
+        .collect();
     let pairs: Vec<(&CandidateOutcome, &CandidateOutcome)> = useful
         .iter()
         .enumerate()

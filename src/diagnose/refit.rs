@@ -10,6 +10,7 @@ use crate::error::Error;
 use crate::params::ParameterSet;
 use crate::problem::fitting::{FitParameter, FittingProblem, ModelSpec};
 use crate::problem::least_squares::{LeastSquaresFit, LmSettings, levenberg_marquardt};
+use super::stats::noise_from_dense_differences;
 use crate::stats::lag1;
 
 /// Which points train and which validate.
@@ -66,6 +67,64 @@ impl Default for FitSettings {
     }
 }
 
+/// Where fits start: `points` (values in parameter order; empty: the parameters' initial
+/// values; the first is tried, the others only when it fails, stops on its cap, ends on a
+/// bound or holds a parameter), and a point where the model is known to run (the previous
+/// model: its fitted values with the candidate's parameters at no effect) toward which a
+/// start that breaks the model is pulled until it runs.
+#[derive(Clone, Debug, Default)]
+pub struct Starts {
+    pub points: Vec<Vec<f64>>,
+    pub runs_at: Option<Vec<f64>>,
+}
+
+impl Starts {
+    /// Starts at these points only.
+    pub fn at(points: Vec<Vec<f64>>) -> Self {
+        Self { points, runs_at: None }
+    }
+}
+
+/// Resolution (K) of a recorded temperature: the least noise it is credited with.
+const TEMPERATURE_RESOLUTION: f64 = 0.1;
+
+/// Weight (V/K) of a recorded temperature's residuals beside the voltage's: the noise of the
+/// voltage over that of the temperature (at least [`TEMPERATURE_RESOLUTION`]), so each
+/// counts as its likelihood does. `None` without a recorded temperature.
+pub fn temperature_weight(data: &Recording) -> Option<f64> {
+    let t = data.temperature.as_ref()?;
+    let noise_v = noise_from_dense_differences(&data.voltage, &data.time);
+    let noise_t = noise_from_dense_differences(t, &data.time).max(TEMPERATURE_RESOLUTION);
+    (noise_v > 0.0).then(|| noise_v / noise_t)
+}
+
+/// Halvings of the way back from a start that breaks the model toward one that runs.
+const PULL_HALVINGS: usize = 6;
+
+/// A point on the way from `start` to `runs_at` at which the model runs, when it does not
+/// run at `start`: the distance is halved (in the search coordinates: logarithmically for
+/// log-scaled parameters) until it runs, and once more; `None` when it runs at `start` or
+/// nowhere on the way.
+fn pulled_into_model(problem: &FittingProblem, start: &[f64], runs_at: &[f64]) -> Option<Vec<f64>> {
+    if problem.simulate(start).is_ok() {
+        return None;
+    }
+    let toward = |share: f64| -> Vec<f64> {
+        problem
+            .parameters
+            .iter()
+            .zip(start.iter().zip(runs_at))
+            .map(|(p, (a, b))| match p.log && *a > 0.0 && *b > 0.0 {
+                true => (a.ln() + share * (b.ln() - a.ln())).exp(),
+                false => a + share * (b - a),
+            })
+            .collect()
+    };
+    // The first point that runs lies near the edge of where the model runs, where a
+    // finite-difference step may break it: one more halving inward.
+    (1..=PULL_HALVINGS).find(|&k| problem.simulate(&toward(1.0 - 0.5f64.powi(k as i32))).is_ok()).map(|k| toward(1.0 - 0.5f64.powi(k as i32 + 1)))
+}
+
 /// One fitted model, scored.
 #[derive(Clone, Debug, Serialize)]
 pub struct FitOutcome {
@@ -117,8 +176,7 @@ fn rms_where(r: &[f64], keep: impl Fn(usize) -> bool) -> f64 {
 }
 
 /// Fits `parameters` of the model `spec` on the training points of `data` from each of
-/// `starts` (values in parameter order; an empty list starts at the parameters' initial
-/// values) and scores the best. `structural` counts fixed parameters a structural change
+/// `starts` and scores the best. `structural` counts fixed parameters a structural change
 /// brought in.
 #[allow(clippy::too_many_arguments)]
 pub fn fit_and_score(
@@ -127,7 +185,7 @@ pub fn fit_and_score(
     base: ParameterSet,
     parameters: Vec<FitParameter>,
     structural: usize,
-    starts: &[Vec<f64>],
+    starts: &Starts,
     data: &Recording,
     split: &Split,
     settings: &FitSettings,
@@ -138,16 +196,26 @@ pub fn fit_and_score(
     if settings.start_at_rest {
         problem = problem.starting_at_rest()?;
     }
-    let initial = vec![problem.initial()];
-    let starts = if starts.is_empty() { &initial[..] } else { starts };
-    // The first start; the others only when it fails, stops on its cap or ends on a bound.
-    let mut fits: Vec<Result<LeastSquaresFit, Error>> = vec![levenberg_marquardt(&problem, &starts[0], settings.lm)];
+    if let Some(w) = temperature_weight(data).filter(|_| problem.spec.submodels.thermal) {
+        problem = problem.fitting_temperature(w)?;
+    }
+    let points = if starts.points.is_empty() { vec![problem.initial()] } else { starts.points.clone() };
+    // A start that fails is pulled toward where the model runs and tried again.
+    let fit_from = |x0: &Vec<f64>| {
+        levenberg_marquardt(&problem, x0, settings.lm).or_else(|e| match starts.runs_at.as_ref().and_then(|r| pulled_into_model(&problem, x0, r)) {
+            Some(x) => levenberg_marquardt(&problem, &x, settings.lm),
+            None => Err(e),
+        })
+    };
+    // The first start; the others only when it fails, stops on its cap, ends on a bound or
+    // holds a parameter (`converged` is false then).
+    let mut fits: Vec<Result<LeastSquaresFit, Error>> = vec![fit_from(&points[0])];
     let doubtful = match &fits[0] {
         Ok(f) => !f.converged || f.on_bound.iter().any(|b| *b),
         Err(_) => true,
     };
     if doubtful {
-        fits.extend(starts[1..].par_iter().map(|x0| levenberg_marquardt(&problem, x0, settings.lm)).collect::<Vec<_>>());
+        fits.extend(points[1..].par_iter().map(fit_from).collect::<Vec<_>>());
     }
     let mut best: Option<LeastSquaresFit> = None;
     let mut error = None;

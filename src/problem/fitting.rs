@@ -124,6 +124,9 @@ pub struct Simulated {
     pub sensitivity: Vec<f64>,
     /// Columns of [`Simulated::sensitivity`]: the number of fitted parameters (0 without).
     pub columns: usize,
+    /// Model temperature (K) at every recorded point when the temperature is fitted
+    /// ([`FittingProblem::fitting_temperature`]); empty otherwise.
+    pub temperature: Vec<f64>,
 }
 
 impl Simulated {
@@ -154,6 +157,9 @@ pub struct FittingProblem {
     protocol: Protocol,
     /// Parameters held at a value (a profile's fixed one), applied with the fitted ones.
     pinned: Vec<(FitParameter, f64)>,
+    /// Weight (V/K) of the recorded temperature's residuals beside the voltage's in costs,
+    /// when the temperature is fitted too.
+    temperature_weight: Option<f64>,
     /// Distinct output times (s, from the recording's start) and each point's output index.
     t_eval: Vec<f64>,
     output_of_point: Vec<usize>,
@@ -206,6 +212,7 @@ impl FittingProblem {
             initial_ocv: None,
             protocol,
             pinned: Vec::new(),
+            temperature_weight: None,
             t_eval,
             output_of_point,
             pool: Mutex::new(Vec::new()),
@@ -232,6 +239,7 @@ impl FittingProblem {
             initial_ocv: self.initial_ocv,
             protocol: self.protocol.clone(),
             pinned,
+            temperature_weight: self.temperature_weight,
             t_eval: self.t_eval.clone(),
             output_of_point: self.output_of_point.clone(),
             pool: Mutex::new(Vec::new()),
@@ -290,6 +298,23 @@ impl FittingProblem {
         Ok(self)
     }
 
+    /// Fits the recorded temperature beside the voltage, each temperature residual (K)
+    /// counted as `weight` (V/K) times it (the voltage noise over the temperature noise
+    /// weighs both as their likelihoods do). Needs a recorded temperature and a thermal model.
+    pub fn fitting_temperature(mut self, weight: f64) -> Result<Self, Error> {
+        if self.data.temperature.is_none() {
+            return Err(Error::InvalidSetting { field: "data.temperature".into(), reason: "no temperature recorded to fit".into() });
+        }
+        if !self.spec.submodels.thermal {
+            return Err(Error::InvalidSetting { field: "model.submodels.thermal".into(), reason: "only a thermal model predicts the temperature".into() });
+        }
+        if !(weight > 0.0 && weight.is_finite()) {
+            return Err(Error::invalid("temperature_weight", weight, "must be positive and finite"));
+        }
+        self.temperature_weight = Some(weight);
+        Ok(self)
+    }
+
     /// Number of fitted model parameters.
     pub fn dim(&self) -> usize {
         self.parameters.len()
@@ -320,6 +345,11 @@ impl FittingProblem {
     /// Model voltage (V) at every recorded point.
     pub fn simulate(&self, x: &[f64]) -> Result<Vec<f64>, Error> {
         Ok(self.run(x, false)?.voltage)
+    }
+
+    /// Model voltage (V) and, when it is fitted, temperature (K) at every recorded point.
+    pub fn simulate_outputs(&self, x: &[f64]) -> Result<Simulated, Error> {
+        self.run(x, false)
     }
 
     /// Model voltage and its forward sensitivities to the fitted parameters.
@@ -355,7 +385,11 @@ impl FittingProblem {
         let built = worker.builders[0].build(p)?;
         let sol = simulate(built.model.as_ref(), &mut built.workspace, &self.protocol, &self.options(p), None)?;
         let voltage = self.at_points(&sol)?;
-        Ok(Simulated { voltage, sensitivity: Vec::new(), columns: 0 })
+        let temperature = match self.temperature_weight {
+            Some(_) => self.output_of_point.iter().map(|&k| sol.temperature[k]).collect(),
+            None => Vec::new(),
+        };
+        Ok(Simulated { voltage, sensitivity: Vec::new(), columns: 0, temperature })
     }
 
     fn run_sensitivities(&self, worker: &mut Worker, x: &[f64], p: &ParameterSet) -> Result<Simulated, Error> {
@@ -387,7 +421,7 @@ impl FittingProblem {
         let voltage = self.at_points(&sol)?;
         let dim = scales.len();
         let sensitivity = self.output_of_point.iter().flat_map(|&k| rows[k * dim..(k + 1) * dim].iter().copied()).collect();
-        Ok(Simulated { voltage, sensitivity, columns: dim })
+        Ok(Simulated { voltage, sensitivity, columns: dim, temperature: Vec::new() })
     }
 
     /// Maps outputs at the distinct times onto the recorded points; errors if the replay
@@ -412,8 +446,56 @@ impl FittingProblem {
         voltage.iter().zip(&self.data.voltage).map(|(m, d)| m - d).collect()
     }
 
+    /// Weighted cost residuals of `outputs`: `sqrt(w) (V_model - V_data)` at every recorded
+    /// point, then `sqrt(w) c (T_model - T_data)` when the temperature is fitted with weight
+    /// `c` (V/K).
+    pub fn weighted_residuals(&self, outputs: &Simulated) -> Vec<f64> {
+        let voltage = self.residuals(&outputs.voltage).into_iter().zip(&self.weights).map(|(r, w)| r * w.sqrt());
+        let temperature = match (self.temperature_weight, &self.data.temperature) {
+            (Some(c), Some(recorded)) => outputs.temperature.iter().zip(recorded).zip(&self.weights).map(|((m, d), w)| c * (m - d) * w.sqrt()).collect(),
+            _ => Vec::new(),
+        };
+        voltage.chain(temperature).collect()
+    }
+
     /// Model builds so far, over all pooled builders (the perturbed copies included).
     pub fn rebuild_count(&self) -> usize {
         self.pool.lock().expect("builder pool").iter().flat_map(|w| &w.builders).map(|b| b.rebuild_count()).sum()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn recording(temperature: Option<Vec<f64>>) -> Recording {
+        let time: Vec<f64> = (0..20).map(f64::from).collect();
+        let current = vec![5.0; 20];
+        let voltage = vec![3.9; 20];
+        Recording { time, current, voltage, temperature }
+    }
+
+    #[test]
+    fn a_temperature_is_fitted_only_when_recorded_and_predicted() {
+        let p = crate::params::chen2020();
+        let thermal = ModelSpec::new(ModelKind::Spm, Submodels { thermal: true, ..Submodels::default() });
+        let isothermal = ModelSpec::new(ModelKind::Spm, Submodels::default());
+        let fit = |spec, t| FittingProblem::new(spec, p.clone(), Vec::new(), recording(t)).expect("problem");
+        let err = fit(thermal, None).fitting_temperature(0.01).err().expect("no temperature").to_string();
+        assert!(err.contains("data.temperature"), "{err}");
+        let err = fit(isothermal, Some(vec![298.15; 20])).fitting_temperature(0.01).err().expect("isothermal").to_string();
+        assert!(err.contains("model.submodels.thermal"), "{err}");
+        let err = fit(thermal, Some(vec![298.15; 20])).fitting_temperature(f64::NAN).err().expect("NaN weight").to_string();
+        assert!(err.contains("temperature_weight"), "{err}");
+        // Fitted: the weighted temperature residuals follow the voltage's, c (T_model - T_data).
+        let recorded: Vec<f64> = (0..20).map(|k| 298.15 + 0.1 * k as f64).collect();
+        let problem = fit(thermal, Some(recorded.clone())).fitting_temperature(0.01).expect("fitted temperature");
+        let outputs = problem.simulate_outputs(&[]).expect("simulates");
+        assert_eq!(outputs.temperature.len(), 20);
+        let r = problem.weighted_residuals(&outputs);
+        assert_eq!(r.len(), 40);
+        let k = 7;
+        let expected = 0.01 * (outputs.temperature[k] - recorded[k]) * problem.weights[k].sqrt();
+        assert!((r[20 + k] - expected).abs() < 1e-15, "{} vs {expected}", r[20 + k]);
     }
 }

@@ -83,11 +83,6 @@ impl Scale<'_> {
     }
 }
 
-/// Weighted residuals `sqrt(w) (V_model - V_data)`.
-fn residuals(problem: &FittingProblem, voltage: &[f64]) -> Vec<f64> {
-    problem.residuals(voltage).iter().zip(&problem.weights).map(|(r, w)| r * w.sqrt()).collect()
-}
-
 fn sse(r: &[f64]) -> f64 {
     r.iter().map(|v| v * v).sum()
 }
@@ -101,33 +96,47 @@ pub fn levenberg_marquardt(problem: &FittingProblem, start: &[f64], settings: Lm
     let project = |z: &mut [f64]| z.iter_mut().zip(&bounds).for_each(|(v, (lo, hi))| *v = v.clamp(*lo, *hi));
     let mut z = scale.to_z(start);
     project(&mut z);
-    let mut voltage = problem.simulate(&scale.to_x(&z))?;
-    let mut r = residuals(problem, &voltage);
+    let mut outputs = problem.simulate_outputs(&scale.to_x(&z))?;
+    let mut r = problem.weighted_residuals(&outputs);
     let mut cost = sse(&r);
     let mut simulations = 1;
     let mut lambda = 1e-3;
     let mut converged = k == 0;
     let mut iterations = 0;
     let mut jac: Vec<Vec<f64>> = Vec::new();
+    let mut holding = false;
     while !converged && iterations < settings.max_iterations {
         iterations += 1;
-        // A model that fails on both sides of the point in some parameter stops the search
+        // A model that fails on both sides of the point in every parameter stops the search
         // there (not converged) once a Jacobian exists; the last one stands for the
-        // standard errors.
-        match jacobian(problem, &scale, &z, &bounds, &r) {
-            Ok(j) => jac = j,
+        // standard errors. A parameter whose steps break the model both ways is held for
+        // the iteration, and a fit that ends holding one has not converged.
+        let held = match jacobian(problem, &scale, &z, &bounds, &r) {
+            Ok((mut j, mut held)) => {
+                // A held column keeps the last one computed, when there is one.
+                for (i, h) in held.iter_mut().enumerate().filter(|(_, h)| **h) {
+                    if let Some(previous) = jac.get(i) {
+                        j[i] = previous.clone();
+                        *h = false;
+                    }
+                }
+                jac = j;
+                held
+            }
             Err(_) if !jac.is_empty() => break,
             Err(e) => return Err(e),
-        }
+        };
+        holding = held.iter().any(|h| *h);
         simulations += k;
         let (jtj, jtr) = normal_equations(&jac, &r);
         let mut accepted = false;
-        // Components on a bound whose descent direction points outside stay fixed.
+        // Held components, and those on a bound whose descent direction points outside,
+        // stay fixed.
         let fixed: Vec<bool> = (0..k)
             .map(|i| {
                 let (lo, hi) = bounds[i];
                 let span = hi - lo;
-                (z[i] - lo <= 1e-9 * span && jtr[i] > 0.0) || (hi - z[i] <= 1e-9 * span && jtr[i] < 0.0)
+                held[i] || (z[i] - lo <= 1e-9 * span && jtr[i] > 0.0) || (hi - z[i] <= 1e-9 * span && jtr[i] < 0.0)
             })
             .collect();
         for _ in 0..8 {
@@ -153,15 +162,15 @@ pub fn levenberg_marquardt(problem: &FittingProblem, start: &[f64], settings: Lm
                 break;
             }
             simulations += 1;
-            let Ok(v) = problem.simulate(&scale.to_x(&trial)) else {
+            let Ok(v) = problem.simulate_outputs(&scale.to_x(&trial)) else {
                 lambda *= 10.0;
                 continue;
             };
-            let rt = residuals(problem, &v);
+            let rt = problem.weighted_residuals(&v);
             let ct = sse(&rt);
             if ct < cost {
                 let gain = (cost - ct) / cost.max(f64::MIN_POSITIVE);
-                (z, voltage, r, cost) = (trial, v, rt, ct);
+                (z, outputs, r, cost) = (trial, v, rt, ct);
                 lambda = (lambda / 3.0).max(1e-9);
                 accepted = true;
                 converged = gain < settings.sse_tolerance || moved < 1e-6;
@@ -178,14 +187,19 @@ pub fn levenberg_marquardt(problem: &FittingProblem, start: &[f64], settings: Lm
         }
     }
     if jac.is_empty() && k > 0 {
-        jac = jacobian(problem, &scale, &z, &bounds, &r)?;
+        let held;
+        (jac, held) = jacobian(problem, &scale, &z, &bounds, &r)?;
+        holding = held.iter().any(|h| *h);
         simulations += k;
     }
+    converged &= !holding;
     let x = scale.to_x(&z);
     let points = problem.weights.iter().filter(|w| **w > 0.0).count();
-    let dof = (points.saturating_sub(k)).max(1) as f64;
+    // A fitted temperature doubles the residuals.
+    let residuals = if outputs.temperature.is_empty() { points } else { 2 * points };
+    let dof = (residuals.saturating_sub(k)).max(1) as f64;
     let sigma2 = (cost / dof).max(f64::MIN_POSITIVE);
-    let rho = lag1(&problem.residuals(&voltage), &problem.weights).max(0.0).min(0.99);
+    let rho = lag1(&problem.residuals(&outputs.voltage), &problem.weights).max(0.0).min(0.99);
     let inflation = (1.0 + rho) / (1.0 - rho);
     let (jtj, _) = normal_equations(&jac, &r);
     let (cov, ln_det) = inverse_and_log_det(&jtj, k)?;
@@ -202,30 +216,41 @@ pub fn levenberg_marquardt(problem: &FittingProblem, start: &[f64], settings: Lm
         converged,
         iterations,
         simulations,
-        voltage,
+        voltage: outputs.voltage,
     })
 }
 
 /// Forward-difference Jacobian of the weighted residuals in scaled coordinates, one column
-/// per parameter (stepping inwards at an upper bound).
-fn jacobian(problem: &FittingProblem, scale: &Scale, z: &[f64], bounds: &[(f64, f64)], r: &[f64]) -> Result<Vec<Vec<f64>>, Error> {
-    (0..z.len())
+/// per parameter (stepping inwards at an upper bound), and which columns are held: zero
+/// because the model breaks on both sides of the point in that parameter. Errors when every
+/// column is held.
+fn jacobian(problem: &FittingProblem, scale: &Scale, z: &[f64], bounds: &[(f64, f64)], r: &[f64]) -> Result<(Vec<Vec<f64>>, Vec<bool>), Error> {
+    let columns: Vec<Result<Vec<f64>, Error>> = (0..z.len())
         .into_par_iter()
         .map(|i| {
             let (lo, hi) = bounds[i];
             let h = if problem.parameters[i].log { 1e-2 } else { 2e-3 };
             let h = if z[i] + h > hi { -h.min(z[i] - lo).max(h * 1e-3) } else { h };
-            // Forward, or backward when the model fails on the forward side.
+            // Forward, or backward when the model fails on the forward side (a step that the
+            // bounds shrink to nothing is no step).
             let column = |h: f64| -> Result<Vec<f64>, Error> {
                 let mut zi = z.to_vec();
                 zi[i] = (z[i] + h).clamp(lo, hi);
                 let h = zi[i] - z[i];
-                let v = problem.simulate(&scale.to_x(&zi))?;
-                Ok(residuals(problem, &v).iter().zip(r).map(|(a, b)| (a - b) / h).collect())
+                if h == 0.0 {
+                    return Err(Error::invalid(problem.parameters[i].path.clone(), scale.to_x(z)[i], "no room for a difference step inside the bounds"));
+                }
+                let v = problem.simulate_outputs(&scale.to_x(&zi))?;
+                Ok(problem.weighted_residuals(&v).iter().zip(r).map(|(a, b)| (a - b) / h).collect())
             };
             column(h).or_else(|_| column(-h))
         })
-        .collect()
+        .collect();
+    let held: Vec<bool> = columns.iter().map(|c| c.is_err()).collect();
+    if held.iter().all(|h| *h) {
+        return Err(columns.into_iter().find_map(Result::err).expect("a failed column"));
+    }
+    Ok((columns.into_iter().map(|c| c.unwrap_or_else(|_| vec![0.0; r.len()])).collect(), held))
 }
 
 /// `JᵀJ` (row-major `k × k`) and `Jᵀr` from Jacobian columns.

@@ -1,0 +1,99 @@
+//! Fitting one candidate on top of the previous model: where its fits start.
+
+use super::{Candidate, DiagnoseOptions, NextModel, candidates, describe, refit};
+use crate::data::Recording;
+use crate::params::set_initial_soc;
+use crate::problem::fitting::{FitParameter, INITIAL_SOC};
+use refit::{FitOutcome, Split};
+
+/// Fits one candidate on top of the baseline; `warm` holds the baseline's fitted parameters
+/// at their fitted values, `restarts` the points (values of `warm`) the baseline's fit
+/// started from.
+pub(super) fn refit_candidate(
+    c: Candidate,
+    aug: candidates::Augmentation,
+    warm: &[FitParameter],
+    restarts: &[Vec<f64>],
+    options: &DiagnoseOptions,
+    data: &Recording,
+    split: &Split,
+) -> (Option<FitOutcome>, Option<String>, Option<NextModel>) {
+    let mut params: Vec<FitParameter> = warm.iter().filter(|p| !aug.replaces.contains(&p.path)).cloned().collect();
+    if c == Candidate::LithiumInventory {
+        // Start the free concentrations at the baseline's fitted initial state.
+        let mut p = aug.base.clone();
+        if let Some(soc) = warm.iter().find(|p| p.path == INITIAL_SOC) {
+            let _ = set_initial_soc(&mut p, soc.initial);
+        }
+        params.extend(aug.extra.iter().cloned().map(|mut e| {
+            e.initial = p.get(&e.path).unwrap_or(e.initial).clamp(e.lower, e.upper);
+            e
+        }));
+    } else {
+        params.extend(aug.extra.iter().cloned());
+    }
+    // A start that breaks the model is pulled toward the previous model (the user's
+    // parameters at their fitted values, the candidate's at no effect: the set's values),
+    // which runs.
+    let runs_at: Vec<f64> = params
+        .iter()
+        .map(|p| match warm.iter().find(|w| w.path == p.path) {
+            Some(w) => w.initial,
+            None if c == Candidate::LithiumInventory => p.initial,
+            None => aug.base.get(&p.path).unwrap_or(p.initial).clamp(p.lower, p.upper),
+        })
+        .collect();
+    // Starts: the candidate's own parameters at their initial values or a third of the way to
+    // their lower bounds (in the search coordinates), so no fit starts only at one point; the
+    // user's parameters at their fitted values or where the baseline's fit started (its fitted
+    // values, e.g. an initial state of charge, may have absorbed the missing effect and hold
+    // the candidate's fit in a false minimum); for a candidate with several parameters, each
+    // of them moved alone (the others at no effect: one electrode's loss is not a compromise
+    // between both). The first is tried alone; the others only when it fails, stops on its
+    // cap, ends on a bound or holds a parameter (`refit::fit_and_score`).
+    let toward_lower = |p: &FitParameter| match p.log {
+        true => (p.initial.ln() + (p.lower.ln() - p.initial.ln()) / 3.0).exp(),
+        false => p.initial + (p.lower - p.initial) / 3.0,
+    };
+    let own: Vec<usize> = (0..params.len()).filter(|&k| !warm.iter().any(|w| w.path == params[k].path)).collect();
+    let mut starts: Vec<Vec<f64>> = vec![params.iter().map(|p| p.initial).collect()];
+    if own.len() >= 2 {
+        starts.extend(own.iter().map(|&k| {
+            let mut s = runs_at.clone();
+            s[k] = toward_lower(&params[k]);
+            s
+        }));
+    }
+    for user in std::iter::once(None).chain(restarts.iter().map(Some)) {
+        for lower in [false, true] {
+            let s: Vec<f64> = params
+                .iter()
+                .map(|p| match warm.iter().position(|w| w.path == p.path) {
+                    Some(i) => user.map_or(p.initial, |r| r[i].clamp(p.lower, p.upper)),
+                    None if lower => toward_lower(p),
+                    None => p.initial,
+                })
+                .collect();
+            if !starts.contains(&s) {
+                starts.push(s);
+            }
+        }
+    }
+    let starts = refit::Starts { points: starts, runs_at: Some(runs_at) };
+    match refit::fit_and_score(describe(&aug.spec), aug.spec, aug.base.clone(), params.clone(), aug.structural_parameters, &starts, data, split, &options.fit) {
+        Ok(f) => {
+            let fitted = params
+                .into_iter()
+                .zip(&f.values)
+                .map(|(mut p, v)| {
+                    p.initial = v.clamp(p.lower, p.upper);
+                    p
+                })
+                .collect();
+            let next = NextModel { spec: aug.spec, base: aug.base, fitted };
+            (Some(f), None, Some(next))
+        }
+        Err(e) => (None, Some(format!("fit failed: {e}")), None),
+    }
+}
+
