@@ -281,6 +281,7 @@ fn run(cli: Cli) -> Result<(), Error> {
                 sol = Some(simulate(built.model.as_ref(), &mut built.workspace, &protocol, &opts, None).map_err(|e| match &protocol_file {
                     // Name what the user wrote: the rate, the experiment, or the protocol file.
                     None if !experiment.is_empty() => Error::InvalidSetting { field: "--experiment".into(), reason: format!("{experiment:?} failed: {e}") },
+                    None if matches!(e, Error::StepDemand { .. }) => e.demand_named("--c-rate", c_rate),
                     None => Error::InvalidSetting { field: "--c-rate".into(), reason: format!("a {c_rate} C discharge failed: {e}") },
                     Some(path) => Error::InvalidSetting { field: "--protocol".into(), reason: format!("{} failed: {e}", path.display()) },
                 })?);

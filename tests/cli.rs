@@ -184,10 +184,33 @@ fn messages_name_the_flag_the_user_wrote() {
     let s = Scratch::new("flags");
     fails_with(&run(&s.0, &["simulate", "--c-rate", "0"]), &["--c-rate", "must be positive"]);
     fails_with(&run(&s.0, &["eis", "--soc", "1.5"]), &["--soc", "1.5"]);
-    // 50C takes the SPMe below its cut-off at once: the message leads with the rate.
-    fails_with(&run(&s.0, &["simulate", "--c-rate", "50", "--mesh", "5"]), &["`--c-rate`", "a 50 C discharge failed", "cut-off"]);
+    // 50C takes the SPMe below its cut-off at once: the message names the rate, not the cut-off
+    // (more in `a_rate_the_cell_cannot_carry_is_named_where_the_user_set_it`).
+    let e = fails_with(&run(&s.0, &["simulate", "--c-rate", "50", "--mesh", "5"]), &["invalid parameter `--c-rate` = 50", "below `cell.lower_cutoff` = 2.5 V"]);
+    assert!(!e.contains("invalid parameter `cell.lower_cutoff`"), "{e}");
     assert!(!s.path("out").exists(), "a failed simulation left an output folder");
     fails_with(&run(&s.0, &["simulate", "--contact-resistance=-1"]), &["--contact-resistance"]);
+}
+
+#[test]
+fn a_rate_the_cell_cannot_carry_is_named_where_the_user_set_it() {
+    let s = Scratch::new("rate");
+    // The cell carries 1C but not 50C (SPMe: 2.35 V at once, below the 2.5 V cut-off; DFN at
+    // 20C: a non-finite right-hand side at the start). The error names the key that set the
+    // rate, with its value; before, it named `cell.lower_cutoff` = 2.5, which nobody set.
+    let blames_the_cut_off = |e: &str| e.contains("invalid parameter `cell.lower_cutoff`");
+    s.write("fast.toml", "[[steps]]\nkind = \"rest\"\nduration = 10.0\n[[steps]]\nkind = \"c_rate\"\nrate = 50.0\nduration = 100.0\n");
+    let e = fails_with(&run(&s.0, &["simulate", "--model", "spme", "--mesh", "5", "--protocol", "fast.toml"]), &["fast.toml", "`protocol.steps[1].rate` = 50", "step 1 (t = 10 s)"]);
+    assert!(!blames_the_cut_off(&e), "{e}");
+    let e = fails_with(&run(&s.0, &["simulate", "--model", "dfn", "--mesh", "5", "--c-rate", "20"]), &["invalid parameter `--c-rate` = 20", "the model fails"]);
+    assert!(!blames_the_cut_off(&e), "{e}");
+    let text = DESIGN.replace("LOWER", "60e-6").replace("UPPER", "90e-6").replace("OBJECTIVES", r#""gravimetric_energy_density""#);
+    let study = s.write("design.toml", &text.replace("kind = \"spm\"", "kind = \"spme\"").replace("c_rate = 1.0", "c_rate = 50.0"));
+    let e = fails_with(&run(&s.0, &["design", study.to_str().unwrap()]), &["invalid parameter `operating.c_rate` = 50"]);
+    assert!(!blames_the_cut_off(&e), "{e}");
+    // A cut-off that even 1C crosses at once (just below the full cell's 4.18 V) is still named.
+    fails_with(&run(&s.0, &["simulate", "--model", "spm", "--mesh", "5", "--set", "cell.lower_cutoff=4.15"]), &["invalid parameter `cell.lower_cutoff` = 4.15"]);
+    assert_eq!(s.entries(), vec!["design.toml", "fast.toml"], "a failed run left an output");
 }
 
 #[test]
