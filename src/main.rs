@@ -102,9 +102,12 @@ fn run(cli: Cli) -> Result<(), Error> {
             }
             Ok(())
         }
-        Command::Data { action: DataCommand::Inspect { file, json } } => {
-            use cellstudio::data::cycler::{inspect_json, inspect_text, read};
-            let data = read(&file)?;
+        Command::Data { action: DataCommand::Inspect { overrides, file, params, json } } => {
+            use cellstudio::data::cycler::{inspect_json, inspect_text, read_checked};
+            // Read and checked as `fit` and `diagnose` read and check a recording.
+            let p = load_parameters(params.as_deref(), &overrides)?;
+            let (data, notes) = read_checked(&file, &Default::default(), &p)?;
+            note(&notes);
             if json { println!("{}", inspect_json(&file, &data)) } else { print!("{}", inspect_text(&file, &data)) }
             Ok(())
         }

@@ -272,6 +272,34 @@ fn data_inspect_names_the_format_and_the_steps() {
 }
 
 #[test]
+fn data_inspect_refuses_what_fit_refuses_with_the_same_reason() {
+    let s = Scratch::new("inspect-refuses");
+    let study = fit_study(&s, "[cost]\nkind = \"sse\"\n");
+    let scaled = |column: usize, factor: f64| move |_: usize, cells: &mut Vec<String>| cells[column] = (cells[column].parse::<f64>().unwrap() * factor).to_string();
+    let neware = std::fs::read_to_string(Path::new(REPO).join("tests/data/cycler/neware_documented_layout.csv")).unwrap();
+    let bad = [
+        ("minutes.csv", seed_edited(scaled(0, 1.0 / 60.0)), "time_unit = \"min\""),
+        ("charge_positive.csv", seed_edited(scaled(1, -1.0)), "discharge_positive = false"),
+        ("celsius_as_kelvin.csv", seed_edited(|_, cells| cells[4] = "25".into()), "25 K is not a cell temperature"),
+        ("nan.csv", seed_edited(|row, cells| if row == 5 { cells[2] = "nan".into() }), "line 7: `voltage_V` is NaN"),
+        ("backwards.csv", seed_edited(|row, cells| if row == 5 { cells[0] = "0.5".into() }), "line 7: `time_s` = 0.5 does not increase"),
+        // A raw export's temperature column is range-checked too (2510 degC: a lost decimal point).
+        ("neware_hot.csv", neware.replacen(",25.1\n", ",2510\n", 1), "(2783.15 K) is not a cell temperature"),
+    ];
+    for (name, text, why) in bad {
+        let file = s.write(name, &text);
+        let file = file.to_str().unwrap();
+        let fit = fails_with(&run(&s.0, &["fit", study.to_str().unwrap(), "--data", file]), &[name, why]);
+        let inspect = fails_with(&run(&s.0, &["data", "inspect", file]), &[name, why]);
+        let reason = |e: &str| e.lines().find(|l| l.starts_with("error:")).unwrap().to_string();
+        assert_eq!(reason(&inspect), reason(&fit), "data inspect and fit disagree on {name}");
+    }
+    assert!(!s.path("out").exists());
+    // The unchanged seed recording passes both checks.
+    succeeds(&run(&s.0, &["data", "inspect", &format!("{REPO}/tests/data/spm_contact_resistance_seed.csv")]));
+}
+
+#[test]
 fn a_fit_pinned_on_a_bound_fails_and_a_truncated_fit_says_so() {
     let s = Scratch::new("pinned");
     // The seed recording has R = 10 mOhm; a search range that ends at 2 mOhm pins the fit there.
@@ -299,17 +327,7 @@ fn a_fit_pinned_on_a_bound_fails_and_a_truncated_fit_says_so() {
 fn fit_names_a_recording_in_minutes_or_milliamps_before_any_work() {
     let s = Scratch::new("units");
     let study = fit_study(&s, "[cost]\nkind = \"sse\"\n");
-    let seed = std::fs::read_to_string(Path::new(REPO).join("tests/data/spm_contact_resistance_seed.csv")).unwrap();
-    let rescaled = |column: usize, factor: f64| -> String {
-        let mut lines = seed.lines();
-        let mut out = format!("{}\n", lines.next().unwrap());
-        for line in lines {
-            let mut cells: Vec<String> = line.split(',').map(str::to_string).collect();
-            cells[column] = (cells[column].parse::<f64>().unwrap() * factor).to_string();
-            out += &format!("{}\n", cells.join(","));
-        }
-        out
-    };
+    let rescaled = |column: usize, factor: f64| seed_edited(|_, cells| cells[column] = (cells[column].parse::<f64>().unwrap() * factor).to_string());
     let minutes = s.write("minutes.csv", &rescaled(0, 1.0 / 60.0));
     let o = run(&s.0, &["fit", study.to_str().unwrap(), "--data", minutes.to_str().unwrap()]);
     fails_with(&o, &["minutes.csv", "likely unit error", "time_unit = \"min\""]);

@@ -228,7 +228,7 @@ impl FitStudy {
         let own = parameters.len() - self.parameters.len();
         let recording = self.recording(k, data)?;
         let file = data.filter(|_| k == 0).unwrap_or(&d.file).display().to_string();
-        let notes = recording.refuse_unit_errors(&file, base.cell.nominal_capacity, (base.cell.lower_cutoff, base.cell.upper_cutoff))?;
+        let notes = recording.refuse_unit_errors(&file, &base)?;
         let mut problem = FittingProblem::new(self.model, base, parameters, recording)?;
         if d.start_at_rest_voltage {
             problem = problem.starting_at_rest()?;
