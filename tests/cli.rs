@@ -324,6 +324,27 @@ fn a_fit_pinned_on_a_bound_fails_and_a_truncated_fit_says_so() {
 }
 
 #[test]
+fn a_sample_whose_fit_ends_on_a_bound_fails_as_fit_does() {
+    let s = Scratch::new("sample-bound");
+    let sampler = "[sampler]\nchains = 2\niterations = 100\nwarmup = 50\n";
+    let study = fit_study(&s, sampler);
+    succeeds(&run(&s.0, &["sample", study.to_str().unwrap()]));
+    let previous = std::fs::read(s.path("out/posterior.md")).unwrap();
+    // The seed recording has R = 10 mOhm: a range from 20 mOhm up pins the fit on its lower
+    // bound (before, the chains were sampled around it and the run exited 0).
+    let text = std::fs::read_to_string(&study).unwrap().replace("initial = 0.005\n", "initial = 0.03\n").replace("lower = 1e-4\n", "lower = 0.02\n");
+    std::fs::write(&study, text).unwrap();
+    let o = run(&s.0, &["sample", study.to_str().unwrap()]);
+    fails_with(&o, &["parameters.cell.contact_resistance", "cell.contact_resistance = 0.02 at its lower bound", "nothing was sampled", "`out.rejected`"]);
+    // The fit's outputs for inspection, no posterior; the previous results as they were.
+    let report = std::fs::read_to_string(s.path("out.rejected/report.md")).unwrap();
+    assert!(report.contains("cell.contact_resistance = 0.02 at its lower bound"), "{report}");
+    assert!(!s.path("out.rejected/posterior.md").exists() && !s.path("out.rejected/samples.csv").exists());
+    assert_eq!(std::fs::read(s.path("out/posterior.md")).unwrap(), previous);
+    assert_eq!(s.entries(), vec!["fit.toml", "out", "out.rejected"]);
+}
+
+#[test]
 fn fit_names_a_recording_in_minutes_or_milliamps_before_any_work() {
     let s = Scratch::new("units");
     let study = fit_study(&s, "[cost]\nkind = \"sse\"\n");
