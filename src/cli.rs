@@ -198,10 +198,17 @@ pub(crate) enum Command {
 
 #[derive(Subcommand)]
 pub(crate) enum DataCommand {
-    /// Detect a file's format and print its rows, time span and steps.
+    /// Detect a file's format and print its rows, time span and steps; refused, as `fit` and
+    /// `diagnose` refuse it, when it cannot be a recording of the cell (a unit or sign error).
     Inspect {
+        #[command(flatten)]
+        overrides: Overrides,
         /// A raw cycler export (Basytec, BioLogic, Maccor, Neware, Arbin) or a recording CSV.
         file: PathBuf,
+        /// The cell the recording is checked against: parameter-set file (default: embedded
+        /// Chen 2020).
+        #[arg(long)]
+        params: Option<PathBuf>,
         /// Print the summary and steps as JSON.
         #[arg(long)]
         json: bool,

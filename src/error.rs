@@ -7,6 +7,11 @@ pub enum Error {
     /// A parameter is outside its physical range.
     #[error("invalid parameter `{field}` = {}: {reason}", number(*value))]
     InvalidParameter { field: String, value: f64, reason: String },
+    /// A protocol step demands more than the cell can carry from the state it starts in (its
+    /// current, C-rate or power, by the step's key); [`Error::demand_named`] names the setting
+    /// the step was made from instead.
+    #[error("invalid parameter `protocol.steps[{step}].{key}` = {}: {reason}", number(*value))]
+    StepDemand { step: usize, key: &'static str, value: f64, reason: String },
     /// A configuration value (not a number) is not acceptable.
     #[error("invalid setting `{field}`: {reason}")]
     InvalidSetting { field: String, reason: String },
@@ -35,6 +40,16 @@ pub fn number(v: f64) -> String {
 impl Error {
     pub fn invalid(field: impl Into<String>, value: f64, reason: impl Into<String>) -> Self {
         Error::InvalidParameter { field: field.into(), value, reason: reason.into() }
+    }
+
+    /// A [`StepDemand`](Error::StepDemand) named by the setting `field` = `value` the step was
+    /// made from (e.g. a study's `operating.c_rate`, the command line's `--c-rate`); any other
+    /// error as it is.
+    pub fn demand_named(self, field: &str, value: f64) -> Self {
+        match self {
+            Error::StepDemand { reason, .. } => Error::invalid(field, value, reason),
+            other => other,
+        }
     }
 
     /// For `map_err`: an I/O error on `path`, named.

@@ -102,9 +102,12 @@ fn run(cli: Cli) -> Result<(), Error> {
             }
             Ok(())
         }
-        Command::Data { action: DataCommand::Inspect { file, json } } => {
-            use cellstudio::data::cycler::{inspect_json, inspect_text, read};
-            let data = read(&file)?;
+        Command::Data { action: DataCommand::Inspect { overrides, file, params, json } } => {
+            use cellstudio::data::cycler::{inspect_json, inspect_text, read_checked};
+            // Read and checked as `fit` and `diagnose` read and check a recording.
+            let p = load_parameters(params.as_deref(), &overrides)?;
+            let (data, notes) = read_checked(&file, &Default::default(), &p)?;
+            note(&notes);
             if json { println!("{}", inspect_json(&file, &data)) } else { print!("{}", inspect_text(&file, &data)) }
             Ok(())
         }
@@ -281,6 +284,7 @@ fn run(cli: Cli) -> Result<(), Error> {
                 sol = Some(simulate(built.model.as_ref(), &mut built.workspace, &protocol, &opts, None).map_err(|e| match &protocol_file {
                     // Name what the user wrote: the rate, the experiment, or the protocol file.
                     None if !experiment.is_empty() => Error::InvalidSetting { field: "--experiment".into(), reason: format!("{experiment:?} failed: {e}") },
+                    None if matches!(e, Error::StepDemand { .. }) => e.demand_named("--c-rate", c_rate),
                     None => Error::InvalidSetting { field: "--c-rate".into(), reason: format!("a {c_rate} C discharge failed: {e}") },
                     Some(path) => Error::InvalidSetting { field: "--protocol".into(), reason: format!("{} failed: {e}", path.display()) },
                 })?);

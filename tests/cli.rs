@@ -184,10 +184,33 @@ fn messages_name_the_flag_the_user_wrote() {
     let s = Scratch::new("flags");
     fails_with(&run(&s.0, &["simulate", "--c-rate", "0"]), &["--c-rate", "must be positive"]);
     fails_with(&run(&s.0, &["eis", "--soc", "1.5"]), &["--soc", "1.5"]);
-    // 50C takes the SPMe below its cut-off at once: the message leads with the rate.
-    fails_with(&run(&s.0, &["simulate", "--c-rate", "50", "--mesh", "5"]), &["`--c-rate`", "a 50 C discharge failed", "cut-off"]);
+    // 50C takes the SPMe below its cut-off at once: the message names the rate, not the cut-off
+    // (more in `a_rate_the_cell_cannot_carry_is_named_where_the_user_set_it`).
+    let e = fails_with(&run(&s.0, &["simulate", "--c-rate", "50", "--mesh", "5"]), &["invalid parameter `--c-rate` = 50", "below `cell.lower_cutoff` = 2.5 V"]);
+    assert!(!e.contains("invalid parameter `cell.lower_cutoff`"), "{e}");
     assert!(!s.path("out").exists(), "a failed simulation left an output folder");
     fails_with(&run(&s.0, &["simulate", "--contact-resistance=-1"]), &["--contact-resistance"]);
+}
+
+#[test]
+fn a_rate_the_cell_cannot_carry_is_named_where_the_user_set_it() {
+    let s = Scratch::new("rate");
+    // The cell carries 1C but not 50C (SPMe: 2.35 V at once, below the 2.5 V cut-off; DFN at
+    // 20C: a non-finite right-hand side at the start). The error names the key that set the
+    // rate, with its value; before, it named `cell.lower_cutoff` = 2.5, which nobody set.
+    let blames_the_cut_off = |e: &str| e.contains("invalid parameter `cell.lower_cutoff`");
+    s.write("fast.toml", "[[steps]]\nkind = \"rest\"\nduration = 10.0\n[[steps]]\nkind = \"c_rate\"\nrate = 50.0\nduration = 100.0\n");
+    let e = fails_with(&run(&s.0, &["simulate", "--model", "spme", "--mesh", "5", "--protocol", "fast.toml"]), &["fast.toml", "`protocol.steps[1].rate` = 50", "step 1 (t = 10 s)"]);
+    assert!(!blames_the_cut_off(&e), "{e}");
+    let e = fails_with(&run(&s.0, &["simulate", "--model", "dfn", "--mesh", "5", "--c-rate", "20"]), &["invalid parameter `--c-rate` = 20", "the model fails"]);
+    assert!(!blames_the_cut_off(&e), "{e}");
+    let text = DESIGN.replace("LOWER", "60e-6").replace("UPPER", "90e-6").replace("OBJECTIVES", r#""gravimetric_energy_density""#);
+    let study = s.write("design.toml", &text.replace("kind = \"spm\"", "kind = \"spme\"").replace("c_rate = 1.0", "c_rate = 50.0"));
+    let e = fails_with(&run(&s.0, &["design", study.to_str().unwrap()]), &["invalid parameter `operating.c_rate` = 50"]);
+    assert!(!blames_the_cut_off(&e), "{e}");
+    // A cut-off that even 1C crosses at once (just below the full cell's 4.18 V) is still named.
+    fails_with(&run(&s.0, &["simulate", "--model", "spm", "--mesh", "5", "--set", "cell.lower_cutoff=4.15"]), &["invalid parameter `cell.lower_cutoff` = 4.15"]);
+    assert_eq!(s.entries(), vec!["design.toml", "fast.toml"], "a failed run left an output");
 }
 
 #[test]
@@ -249,6 +272,34 @@ fn data_inspect_names_the_format_and_the_steps() {
 }
 
 #[test]
+fn data_inspect_refuses_what_fit_refuses_with_the_same_reason() {
+    let s = Scratch::new("inspect-refuses");
+    let study = fit_study(&s, "[cost]\nkind = \"sse\"\n");
+    let scaled = |column: usize, factor: f64| move |_: usize, cells: &mut Vec<String>| cells[column] = (cells[column].parse::<f64>().unwrap() * factor).to_string();
+    let neware = std::fs::read_to_string(Path::new(REPO).join("tests/data/cycler/neware_documented_layout.csv")).unwrap();
+    let bad = [
+        ("minutes.csv", seed_edited(scaled(0, 1.0 / 60.0)), "time_unit = \"min\""),
+        ("charge_positive.csv", seed_edited(scaled(1, -1.0)), "discharge_positive = false"),
+        ("celsius_as_kelvin.csv", seed_edited(|_, cells| cells[4] = "25".into()), "25 K is not a cell temperature"),
+        ("nan.csv", seed_edited(|row, cells| if row == 5 { cells[2] = "nan".into() }), "line 7: `voltage_V` is NaN"),
+        ("backwards.csv", seed_edited(|row, cells| if row == 5 { cells[0] = "0.5".into() }), "line 7: `time_s` = 0.5 does not increase"),
+        // A raw export's temperature column is range-checked too (2510 degC: a lost decimal point).
+        ("neware_hot.csv", neware.replacen(",25.1\n", ",2510\n", 1), "(2783.15 K) is not a cell temperature"),
+    ];
+    for (name, text, why) in bad {
+        let file = s.write(name, &text);
+        let file = file.to_str().unwrap();
+        let fit = fails_with(&run(&s.0, &["fit", study.to_str().unwrap(), "--data", file]), &[name, why]);
+        let inspect = fails_with(&run(&s.0, &["data", "inspect", file]), &[name, why]);
+        let reason = |e: &str| e.lines().find(|l| l.starts_with("error:")).unwrap().to_string();
+        assert_eq!(reason(&inspect), reason(&fit), "data inspect and fit disagree on {name}");
+    }
+    assert!(!s.path("out").exists());
+    // The unchanged seed recording passes both checks.
+    succeeds(&run(&s.0, &["data", "inspect", &format!("{REPO}/tests/data/spm_contact_resistance_seed.csv")]));
+}
+
+#[test]
 fn a_fit_pinned_on_a_bound_fails_and_a_truncated_fit_says_so() {
     let s = Scratch::new("pinned");
     // The seed recording has R = 10 mOhm; a search range that ends at 2 mOhm pins the fit there.
@@ -273,20 +324,31 @@ fn a_fit_pinned_on_a_bound_fails_and_a_truncated_fit_says_so() {
 }
 
 #[test]
+fn a_sample_whose_fit_ends_on_a_bound_fails_as_fit_does() {
+    let s = Scratch::new("sample-bound");
+    let sampler = "[sampler]\nchains = 2\niterations = 100\nwarmup = 50\n";
+    let study = fit_study(&s, sampler);
+    succeeds(&run(&s.0, &["sample", study.to_str().unwrap()]));
+    let previous = std::fs::read(s.path("out/posterior.md")).unwrap();
+    // The seed recording has R = 10 mOhm: a range from 20 mOhm up pins the fit on its lower
+    // bound (before, the chains were sampled around it and the run exited 0).
+    let text = std::fs::read_to_string(&study).unwrap().replace("initial = 0.005\n", "initial = 0.03\n").replace("lower = 1e-4\n", "lower = 0.02\n");
+    std::fs::write(&study, text).unwrap();
+    let o = run(&s.0, &["sample", study.to_str().unwrap()]);
+    fails_with(&o, &["parameters.cell.contact_resistance", "cell.contact_resistance = 0.02 at its lower bound", "nothing was sampled", "`out.rejected`"]);
+    // The fit's outputs for inspection, no posterior; the previous results as they were.
+    let report = std::fs::read_to_string(s.path("out.rejected/report.md")).unwrap();
+    assert!(report.contains("cell.contact_resistance = 0.02 at its lower bound"), "{report}");
+    assert!(!s.path("out.rejected/posterior.md").exists() && !s.path("out.rejected/samples.csv").exists());
+    assert_eq!(std::fs::read(s.path("out/posterior.md")).unwrap(), previous);
+    assert_eq!(s.entries(), vec!["fit.toml", "out", "out.rejected"]);
+}
+
+#[test]
 fn fit_names_a_recording_in_minutes_or_milliamps_before_any_work() {
     let s = Scratch::new("units");
     let study = fit_study(&s, "[cost]\nkind = \"sse\"\n");
-    let seed = std::fs::read_to_string(Path::new(REPO).join("tests/data/spm_contact_resistance_seed.csv")).unwrap();
-    let rescaled = |column: usize, factor: f64| -> String {
-        let mut lines = seed.lines();
-        let mut out = format!("{}\n", lines.next().unwrap());
-        for line in lines {
-            let mut cells: Vec<String> = line.split(',').map(str::to_string).collect();
-            cells[column] = (cells[column].parse::<f64>().unwrap() * factor).to_string();
-            out += &format!("{}\n", cells.join(","));
-        }
-        out
-    };
+    let rescaled = |column: usize, factor: f64| seed_edited(|_, cells| cells[column] = (cells[column].parse::<f64>().unwrap() * factor).to_string());
     let minutes = s.write("minutes.csv", &rescaled(0, 1.0 / 60.0));
     let o = run(&s.0, &["fit", study.to_str().unwrap(), "--data", minutes.to_str().unwrap()]);
     fails_with(&o, &["minutes.csv", "likely unit error", "time_unit = \"min\""]);

@@ -1,7 +1,8 @@
 //! End-to-end tests of how runs write their output folder (`src/output/`), one per finding of
 //! the output-folder audit: a manifest that names files outside the folder or behind a link,
 //! partial folders left by interrupted runs, a commit that replaced half the results before
-//! failing, and a rejected fit that replaced the previous valid results.
+//! failing, a rejected fit that replaced the previous valid results, and a listed result the
+//! user edited that the next run replaced.
 
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -144,4 +145,29 @@ fn a_rejected_fit_keeps_the_previous_results_and_writes_name_rejected() {
     assert!(s.path("out.rejected/report.md").exists());
     assert_eq!(contents(&s.path("out")), good);
     assert_eq!(s.entries(), vec!["fit.toml", "out", "out.rejected"]);
+}
+
+#[test]
+fn a_listed_result_the_user_edited_is_never_replaced_or_removed() {
+    let s = Scratch::new("edited");
+    succeeds(&simulate(&s, "out", &[]));
+    // Unchanged results are replaced as before.
+    succeeds(&simulate(&s, "out", &["--c-rate", "2"]));
+    let csv = "spm_simulation.csv";
+    let edited = format!("{}my annotation\n", std::fs::read_to_string(s.path("out").join(csv)).unwrap());
+    std::fs::write(s.path("out").join(csv), &edited).unwrap();
+    let before = contents(&s.path("out"));
+    let o = simulate(&s, "out", &[]);
+    fails_with(&o, &[csv, "was changed since cellstudio wrote it", "nothing was moved"]);
+    assert_eq!(contents(&s.path("out")), before, "a refused run changed the folder");
+    assert_eq!(s.entries(), vec!["out"], "a partial folder was left behind");
+
+    // A stale result (the SPMe writes other names) the user edited is left, with a warning;
+    // the unedited stale ones go.
+    let o = run(&s.0, &["simulate", "--model", "spme", "--mesh", "5", "--out", "out"]);
+    succeeds(&o);
+    assert_eq!(std::fs::read_to_string(s.path("out").join(csv)).unwrap(), edited);
+    assert!(stderr(&o).lines().any(|l| l.starts_with("warning:") && l.contains(&format!("`{csv}`")) && l.contains("changed since")), "{}", stderr(&o));
+    assert!(!s.path("out/spm_simulation_voltage.svg").exists(), "an unedited stale result stayed");
+    assert!(s.path("out/spme_simulation.csv").exists());
 }

@@ -198,15 +198,15 @@ impl Recording {
         })
     }
 
-    /// [`check_against_cell`](Self::check_against_cell) for a cell of nominal capacity
-    /// `capacity` (A h) between cut-offs `lower`..`upper` (V): a likely unit error is an
-    /// error naming `data` (`file`); the other findings come back as notes.
-    pub fn refuse_unit_errors(&self, file: &str, capacity: f64, (lower, upper): (f64, f64)) -> Result<Vec<String>, crate::Error> {
-        let findings = self.check_against_cell(capacity, upper - lower);
+    /// [`check_against_cell`](Self::check_against_cell) for the cell `cell` (its nominal
+    /// capacity, A h, and its window between the cut-offs, V): a likely unit error is an error
+    /// naming `data` (`file`); the other findings come back as notes. The one check of a
+    /// recording against its cell: `fit`, `diagnose` and `data inspect` all refuse through it.
+    pub fn refuse_unit_errors(&self, file: &str, cell: &crate::params::ParameterSet) -> Result<Vec<String>, crate::Error> {
+        let findings = self.check_against_cell(cell.cell.nominal_capacity, cell.cell.upper_cutoff - cell.cell.lower_cutoff);
         if let Some(f) = findings.iter().find(|f| f.unit_error) {
             return Err(crate::Error::InvalidSetting { field: format!("data ({file})"), reason: format!("likely unit error: {}", f.message) });
         }
         Ok(findings.into_iter().map(|f| format!("Recording check: {}.", f.message)).collect())
     }
-
 }

@@ -211,7 +211,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
     let start = std::time::Instant::now();
     options.validate()?;
     let mut notes = Vec::new();
-    notes.extend(data.refuse_unit_errors("the recording", base.cell.nominal_capacity, (base.cell.lower_cutoff, base.cell.upper_cutoff))?);
+    notes.extend(data.refuse_unit_errors("the recording", base)?);
     let mut data = data.clone();
     // The cell's temperature is part of the recording: an isothermal model runs at the
     // first recorded temperature, a thermal one starts there.

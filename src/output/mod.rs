@@ -12,12 +12,14 @@
 //!   error after writing something worth inspecting moves it to `NAME.rejected` instead
 //!   ([`OutputDir::reject`]), never over the previous results;
 //! - a folder the run creates is renamed into place in one step. Into an existing folder,
-//!   every destination is checked before anything moves: a folder, a link, or a file that no
+//!   every destination is checked before anything moves: a folder, a link, a file that no
 //!   earlier run listed in the folder's manifest (`.cellstudio-outputs`, so a user's own file)
-//!   fails the run, naming it, with nothing moved. Then the files are renamed in, the manifest
-//!   replaced, and the files the previous manifest listed that this run did not write are
-//!   removed, only where the manifest's rules allow ([`manifest`]: plain regular files of the
-//!   folder itself, none of the run's inputs); any other entry is left, with a warning.
+//!   or a listed file whose content no longer matches the SHA-256 the manifest recorded (the
+//!   user edited it) fails the run, naming it, with nothing moved. Then the files are renamed
+//!   in, the manifest replaced, and the files the previous manifest listed that this run did
+//!   not write are removed, only where the manifest's rules allow ([`manifest`]: plain regular
+//!   files of the folder itself, unedited, none of the run's inputs); any other entry is left,
+//!   with a warning.
 
 mod manifest;
 mod partial;
@@ -126,7 +128,7 @@ impl OutputDir {
             }
             let listing = dest.join(MANIFEST);
             std::fs::rename(self.staging.join(MANIFEST), &listing).map_err(Error::io(&listing))?;
-            manifest::remove_stale(dest, old.difference(&new), &self.inputs);
+            manifest::remove_stale(dest, old.iter().filter(|(entry, _)| !new.contains(*entry)), &self.inputs);
             std::fs::remove_dir_all(&self.staging).map_err(Error::io(&self.staging))?;
         }
         self.committed = true;

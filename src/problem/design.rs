@@ -375,7 +375,14 @@ impl DesignProblem {
             None => None,
         };
         let built = builder.build(p)?;
-        let sol = simulate(built.model.as_ref(), &mut built.workspace, &self.protocol(p), &SimOptions::for_cell(p), None)?;
+        // The discharge's one step is made from `operating.c_rate` or `operating.power`: a
+        // demand the cell cannot carry is named by that setting.
+        let (setting, value) = match self.power {
+            Some(power) => ("operating.power", power),
+            None => ("operating.c_rate", self.c_rate),
+        };
+        let sol = simulate(built.model.as_ref(), &mut built.workspace, &self.protocol(p), &SimOptions::for_cell(p), None)
+            .map_err(|e| e.demand_named(setting, value))?;
         if sol.cutoff_times.is_empty() {
             // Only a cut-off ends a design's discharge; a time limit would report a part of it.
             let t = sol.time.last().copied().unwrap_or(0.0);

@@ -99,6 +99,20 @@ impl Step {
         }
     }
 
+    /// The key of what the step demands and its value, as a protocol file writes them:
+    /// `("current", A)`, `("rate", C)`, `("power", W)`, `("voltage", V)` for a hold,
+    /// `("current", A)` at the start of a table; `None` for a rest.
+    pub fn demand(&self) -> Option<(&'static str, f64)> {
+        match self {
+            Step::Current { current, .. } => Some(("current", *current)),
+            Step::CRate { rate, .. } => Some(("rate", *rate)),
+            Step::Power { power, .. } => Some(("power", *power)),
+            Step::Hold { voltage, .. } => Some(("voltage", *voltage)),
+            Step::Rest { .. } => None,
+            Step::Table { current, .. } => current.first().map(|&i| ("current", i)),
+        }
+    }
+
     /// Whether voltage cut-offs end this step.
     pub fn has_cutoffs(&self) -> bool {
         !matches!(self, Step::Rest { .. } | Step::Hold { .. })
@@ -154,20 +168,17 @@ impl Protocol {
                     return Err(Error::invalid(field("until_voltage"), *u, "must be positive and finite"));
                 }
             }
-            match step {
-                Step::Current { current: v, .. } | Step::CRate { rate: v, .. } if !v.is_finite() => {
-                    return Err(Error::invalid(field("current"), *v, "must be finite"));
+            match (step, step.demand()) {
+                (Step::Current { .. } | Step::CRate { .. } | Step::Power { .. }, Some((key, v))) if !v.is_finite() => {
+                    return Err(Error::invalid(field(key), v, "must be finite"));
                 }
-                Step::Power { power, .. } if !power.is_finite() => {
-                    return Err(Error::invalid(field("power"), *power, "must be finite"));
-                }
-                Step::Hold { voltage, .. } if !(voltage.is_finite() && *voltage > 0.0) => {
+                (Step::Hold { voltage, .. }, _) if !(voltage.is_finite() && *voltage > 0.0) => {
                     return Err(Error::invalid(field("voltage"), *voltage, "must be positive and finite"));
                 }
-                Step::Hold { until_current: Some(i), .. } if !(i.is_finite() && *i > 0.0) => {
+                (Step::Hold { until_current: Some(i), .. }, _) if !(i.is_finite() && *i > 0.0) => {
                     return Err(Error::invalid(field("until_current"), *i, "must be positive and finite (A, a magnitude)"));
                 }
-                Step::Table { time, current } => {
+                (Step::Table { time, current }, _) => {
                     if time.len() < 2 || time.len() != current.len() {
                         return Err(Error::InvalidSetting {
                             field: field("time"),

@@ -2,6 +2,7 @@
 //! step start, stiff integration, cut-off events, and the recorded outputs. Voltage holds
 //! append the current to the states ([`hold`]).
 
+mod demand;
 mod drive;
 mod hold;
 mod record;
@@ -12,6 +13,7 @@ use crate::error::Error;
 use crate::models::Model;
 use crate::protocol::{Protocol, Step};
 pub(crate) use drive::UnderCurrent;
+use demand::StepStart;
 use drive::Driven;
 use record::Recorder;
 use crate::solver::{DenseOutput, SolverOptions, SolverStats, Workspace, integrate};
@@ -198,6 +200,8 @@ pub fn simulate_observed(
     for (k, step) in protocol.steps.iter().enumerate() {
         let drive = Driven { model, step, t0, capacity: opts.capacity };
         let (lower, upper) = step.voltage_window((lower, upper));
+        let y_start = y.clone();
+        let start = StepStart { model, step, index: k, t0, y: &y_start, window: (lower, upper), capacity: one_c };
         // A voltage hold solves for the current as one more (algebraic) state.
         let held = match *step {
             Step::Hold { voltage, .. } => {
@@ -210,7 +214,10 @@ pub fn simulate_observed(
                 let passes = if matches!(step, Step::Power { .. }) { 3 } else { 1 };
                 for _ in 0..passes {
                     let i0 = drive.current(t0, &y);
-                    consistent_initialisation(model, ws, i0, &mut y).map_err(|err| at_time(err, t0))?;
+                    if let Err(err) = consistent_initialisation(model, ws, i0, &mut y) {
+                        let err = at_time(err, t0);
+                        return Err(start.blame(ws, i0, &format!("the model fails ({err})"), err));
+                    }
                 }
                 None
             }
@@ -231,14 +238,17 @@ pub fn simulate_observed(
             None
         };
         if let Some((side, limit, cell_limit, beyond)) = crossed {
-            // Name the limit the user set: the step's own `until_voltage` or the cell's cut-off.
-            let (field, which) = if limit != cell_limit { (format!("steps[{k}].until_voltage"), "the step's limit") } else { (format!("cell.{side}_cutoff"), "the cut-off") };
+            // Name the limit the user set: the step's own `until_voltage` or the cell's cut-off;
+            // the step's demand instead when the cell carries 1C inside that limit ([`demand`]).
+            let field = if limit != cell_limit { format!("protocol.steps[{k}].until_voltage") } else { format!("cell.{side}_cutoff") };
             let why = if !(0.0..10.0).contains(&v0) {
                 ": the cell cannot carry this current (check the current or C-rate, the resistances and the electrode thicknesses)"
             } else {
                 ""
             };
-            return Err(Error::invalid(field, limit, format!("voltage at the start of step {k} (t = {t0} s) is {v0:.4} V, already at or {beyond} {which}{why}")));
+            let failure = Error::invalid(&field, limit, format!("voltage at the start of step {k} (t = {t0} s) is {v0:.4} V, already at or {beyond} the limit{why}"));
+            let what = format!("the voltage is {v0:.4} V, already at or {beyond} `{field}` = {limit} V");
+            return Err(start.blame(ws, i0, &what, failure));
         }
         rec.i = i0;
         rec.p = i0 * v0;
@@ -310,7 +320,12 @@ pub fn simulate_observed(
             rec.outputs.pop();
         }
         rec.sol.stats.add(&stats);
-        match reason? {
+        let reason = match reason {
+            // Not one step taken: the step's current may be what the model cannot start under.
+            Err(err @ Error::Solver { t, .. }) if t == t0 => return Err(start.blame(ws, i0, &format!("the model fails ({err})"), err)),
+            other => other?,
+        };
+        match reason {
             crate::solver::StopReason::Event(t) => {
                 rec.sol.cutoff_times.push(t);
                 t0 = t;

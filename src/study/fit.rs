@@ -228,7 +228,7 @@ impl FitStudy {
         let own = parameters.len() - self.parameters.len();
         let recording = self.recording(k, data)?;
         let file = data.filter(|_| k == 0).unwrap_or(&d.file).display().to_string();
-        let notes = recording.refuse_unit_errors(&file, base.cell.nominal_capacity, (base.cell.lower_cutoff, base.cell.upper_cutoff))?;
+        let notes = recording.refuse_unit_errors(&file, &base)?;
         let mut problem = FittingProblem::new(self.model, base, parameters, recording)?;
         if d.start_at_rest_voltage {
             problem = problem.starting_at_rest()?;
@@ -272,7 +272,7 @@ pub struct FitOutcome {
     pub notes: Vec<String>,
     pub warnings: Vec<String>,
     /// Fitted parameters that ended on a bound of their search range: no estimate of them.
-    pub at_bound: Vec<String>,
+    pub at_bound: Vec<super::OnBound>,
     /// Each experiment's share of a joint fit (empty for one experiment).
     pub experiments: Vec<crate::problem::joint::ExperimentFit>,
     /// Why the run gives no estimate and must exit with an error (a parameter on a bound);
@@ -287,23 +287,34 @@ pub struct FitOutcome {
 pub fn run_fit(study: &FitStudy, data: Option<&Path>) -> Result<FitOutcome, Error> {
     let out = crate::output::OutputDir::create(&study.output.dir, &study.inputs(data))?;
     let mut outcome = fit_into(study, data, out.path())?;
-    let Some(name) = outcome.at_bound.first() else {
-        outcome.files = out.commit(&outcome.files)?;
-        return Ok(outcome);
-    };
-    outcome.rejection = Some(Error::InvalidSetting {
-        field: format!("parameters.{name}"),
+    match on_bound_rejection(&outcome.at_bound, "", &out) {
+        None => outcome.files = out.commit(&outcome.files)?,
+        Some(rejection) => {
+            outcome.rejection = Some(rejection);
+            outcome.files = out.reject(&outcome.files)?;
+        }
+    }
+    Ok(outcome)
+}
+
+/// The error a run exits with when its fit ended with parameters on a bound of their search
+/// range (`None` when none did): it names each parameter and its bound, and the `NAME.rejected`
+/// folder of `out` its outputs go to (the caller moves them there with
+/// [`OutputDir::reject`](crate::output::OutputDir::reject)). `then` says what the run did not
+/// go on to do (e.g. `"; nothing was sampled"`).
+pub(crate) fn on_bound_rejection(at_bound: &[super::OnBound], then: &str, out: &crate::output::OutputDir) -> Option<Error> {
+    let first = at_bound.first()?;
+    let listed = at_bound.iter().map(ToString::to_string).collect::<Vec<_>>().join(", ");
+    Some(Error::InvalidSetting {
+        field: format!("parameters.{}", first.name),
         reason: format!(
-            "the fit ended on a bound of the search range, so it gives no estimate ({} parameter(s) on a bound); \
+            "the fit ended on a bound of the search range, so it gives no estimate ({listed}){then}; \
              its outputs are written for inspection to `{}` and the results in `{}` are left as they were; \
              widen lower/upper or check the recording's units",
-            outcome.at_bound.len(),
             out.rejected().display(),
             out.target().display()
         ),
-    });
-    outcome.files = out.reject(&outcome.files)?;
-    Ok(outcome)
+    })
 }
 
 /// Fewest residual degrees of freedom (points less fitted parameters) without a warning.
@@ -324,7 +335,7 @@ pub(crate) fn fit_into(study: &FitStudy, data: Option<&Path>, dir: &Path) -> Res
     let lower: Vec<f64> = problem.parameters.iter().map(|p| p.lower).collect();
     let upper: Vec<f64> = problem.parameters.iter().map(|p| p.upper).collect();
     let mut warnings = super::at_bound_warnings("the fit", &names, &result.x, &lower, &upper);
-    let at_bound: Vec<String> = super::on_bounds(&result.x, &lower, &upper).into_iter().map(|(k, _)| names[k].clone()).collect();
+    let at_bound = super::named_on_bounds(&names, &result.x, &lower, &upper);
     warnings.extend(super::truncation_warning("the fit", &result.stop, result.iterations, result.evaluations));
     let points = problem.weights.iter().filter(|w| **w > 0.0).count();
     if points < problem.dim() + MIN_DEGREES_OF_FREEDOM {

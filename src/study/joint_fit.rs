@@ -36,7 +36,7 @@ pub(crate) fn joint_fit_into(study: &FitStudy, data: Option<&Path>, dir: &Path) 
     let upper: Vec<f64> = problem.parameters.iter().map(|p| p.upper).collect();
     let r = &fit.result;
     let mut warnings = super::at_bound_warnings("the joint fit", &names, &r.x, &lower, &upper);
-    let at_bound: Vec<String> = super::on_bounds(&r.x, &lower, &upper).into_iter().map(|(k, _)| names[k].clone()).collect();
+    let at_bound = super::named_on_bounds(&names, &r.x, &lower, &upper);
     warnings.extend(super::truncation_warning("the joint fit", &r.stop, r.iterations, r.evaluations));
     let mut files = Vec::new();
     for (e, ef) in problem.experiments.iter().zip(&fit.experiments) {

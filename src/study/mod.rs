@@ -17,7 +17,7 @@ pub mod shard;
 pub mod pareto;
 pub mod sweep;
 mod warnings;
-pub use warnings::{at_bound_warnings, on_bounds, truncation_warning};
+pub use warnings::{OnBound, at_bound_warnings, named_on_bounds, on_bounds, truncation_warning};
 
 use std::path::{Path, PathBuf};
 

@@ -1,6 +1,8 @@
 //! Posterior sampling of a fitting study: fit first, then run the study's sampler from
 //! over-dispersed starts around the optimum, and report the posterior (summary table with
-//! R-hat and ESS, credible intervals, samples, trace and marginal plots).
+//! R-hat and ESS, credible intervals, samples, trace and marginal plots). A fit that ends with
+//! a parameter on a bound is rejected as `fit` rejects it (its outputs in `NAME.rejected`, a
+//! non-zero exit naming the parameter and the bound), and nothing is sampled.
 
 use super::write_output;
 use std::fmt::Write as _;
@@ -72,6 +74,11 @@ pub fn run_sample(study: &FitStudy, data: Option<&Path>) -> Result<SampleOutcome
     study.problem(data)?;
     let out = crate::output::OutputDir::create(&study.output.dir, &study.inputs(data))?;
     let fitted = fit_into(study, data, out.path())?;
+    // A fit on a bound is no estimate to sample around: rejected as `fit` rejects it.
+    if let Some(rejection) = super::fit::on_bound_rejection(&fitted.at_bound, "; nothing was sampled", &out) {
+        out.reject(&fitted.files)?;
+        return Err(rejection);
+    }
     let problem = study.problem(data)?;
     let sigma = match study.cost {
         CostKind::GaussianLogLikelihood { sigma } | CostKind::Map { sigma } => sigma,

@@ -15,17 +15,34 @@ pub fn on_bounds(x: &[f64], lower: &[f64], upper: &[f64]) -> Vec<(usize, &'stati
     out
 }
 
-/// One warning per value of `x` on a bound ([`on_bounds`]), naming it.
-pub fn at_bound_warnings(what: &str, names: &[String], x: &[f64], lower: &[f64], upper: &[f64]) -> Vec<String> {
+/// A named value on a bound of its search range.
+#[derive(Clone, Debug, PartialEq)]
+pub struct OnBound {
+    pub name: String,
+    pub value: f64,
+    /// `"lower"` or `"upper"`.
+    pub side: &'static str,
+}
+
+impl std::fmt::Display for OnBound {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{} = {} at its {} bound", self.name, crate::error::number(self.value), self.side)
+    }
+}
+
+/// The values of `x` on a bound ([`on_bounds`]) with their `names`.
+pub fn named_on_bounds(names: &[String], x: &[f64], lower: &[f64], upper: &[f64]) -> Vec<OnBound> {
     on_bounds(x, lower, upper)
         .into_iter()
-        .filter_map(|(k, side)| {
-            Some(format!(
-                "{what} has {} = {} at its {side} bound; the best value may lie outside the searched range",
-                names.get(k)?,
-                crate::error::number(x[k])
-            ))
-        })
+        .filter_map(|(k, side)| Some(OnBound { name: names.get(k)?.clone(), value: x[k], side }))
+        .collect()
+}
+
+/// One warning per value of `x` on a bound ([`on_bounds`]), naming it.
+pub fn at_bound_warnings(what: &str, names: &[String], x: &[f64], lower: &[f64], upper: &[f64]) -> Vec<String> {
+    named_on_bounds(names, x, lower, upper)
+        .into_iter()
+        .map(|b| format!("{what} has {b}; the best value may lie outside the searched range"))
         .collect()
 }
 

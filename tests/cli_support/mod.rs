@@ -100,3 +100,18 @@ dir = "out"
         ),
     )
 }
+
+/// The seed recording (`tests/data/spm_contact_resistance_seed.csv`: time_s, current_A,
+/// voltage_V, discharge_capacity_Ah, temperature_K) with `edit(row, cells)` applied to every
+/// data row (row 0 the first after the header).
+pub fn seed_edited(edit: impl Fn(usize, &mut Vec<String>)) -> String {
+    let seed = std::fs::read_to_string(Path::new(REPO).join("tests/data/spm_contact_resistance_seed.csv")).unwrap();
+    let mut lines = seed.lines();
+    let mut out = format!("{}\n", lines.next().unwrap());
+    for (row, line) in lines.enumerate() {
+        let mut cells: Vec<String> = line.split(',').map(str::to_string).collect();
+        edit(row, &mut cells);
+        out += &format!("{}\n", cells.join(","));
+    }
+    out
+}

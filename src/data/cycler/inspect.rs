@@ -14,12 +14,8 @@ pub fn inspect_text(file: &Path, data: &CyclerData) -> String {
     let _ = writeln!(s, "file             {}", file.display());
     let _ = writeln!(s, "format           {}", data.format);
     let _ = writeln!(s, "rows             {} ({} repeated rows dropped)", rec.time.len(), data.dropped_repeats);
-    let _ = writeln!(
-        s,
-        "duration         {:.1} s (first row at {} s of the file's clock)",
-        rec.time.last().copied().unwrap_or(0.0),
-        data.time_offset
-    );
+    let (first, last) = (rec.time.first().copied().unwrap_or(0.0), rec.time.last().copied().unwrap_or(0.0));
+    let _ = writeln!(s, "duration         {:.1} s (first row at {} s of the file's clock)", last - first, data.time_offset + first);
     let _ = writeln!(s, "temperature      {}", if rec.temperature.is_some() { "yes" } else { "no" });
     let _ = write!(s, "steps            {}\n\n{}", st.len(), step_table(&st));
     s
@@ -33,8 +29,8 @@ pub fn inspect_json(file: &Path, data: &CyclerData) -> serde_json::Value {
         "format": data.format,
         "rows": rec.time.len(),
         "dropped_repeats": data.dropped_repeats,
-        "duration_s": rec.time.last(),
-        "time_offset_s": data.time_offset,
+        "duration_s": rec.time.last().zip(rec.time.first()).map(|(last, first)| last - first),
+        "time_offset_s": data.time_offset + rec.time.first().copied().unwrap_or(0.0),
         "temperature": rec.temperature.is_some(),
         "steps": steps(rec, data.step.as_deref()),
     })

@@ -62,7 +62,8 @@ const VENDORS: [(CyclerFormat, HeaderFn, LayoutFn); 6] = [
 
 fn native_header(lines: &[&str]) -> Option<usize> {
     let first = lines.first()?;
-    let names: Vec<&str> = first.split(',').map(str::trim).collect();
+    // Names as the CSV reader sees them: trimmed, quotes removed.
+    let names: Vec<&str> = first.split(',').map(|n| n.trim().trim_matches('"')).collect();
     ["time_s", "current_A", "voltage_V"].iter().all(|n| names.contains(n)).then_some(0)
 }
 
@@ -85,13 +86,13 @@ fn native_layout(headers: &[String]) -> Result<Layout, String> {
 #[derive(Clone, Debug)]
 pub struct CyclerData {
     pub format: CyclerFormat,
-    /// Time (s) from the first row, current (A, discharge positive), voltage (V),
-    /// temperature (K).
+    /// Time (s) from the first row (this crate's CSV as [`read_with`] reads it: as
+    /// recorded), current (A, discharge positive), voltage (V), temperature (K).
     pub recording: Recording,
     /// The cycler's step number of every row, when the file has one.
     pub step: Option<Vec<i64>>,
-    /// Time of the first row in the file's own clock (s; seconds since 1970 for calendar
-    /// times).
+    /// Time of the recording's zero in the file's own clock (s; seconds since 1970 for
+    /// calendar times).
     pub time_offset: f64,
     /// Rows dropped for repeating the previous row's time and current.
     pub dropped_repeats: usize,
@@ -138,17 +139,34 @@ pub fn read(path: &Path) -> Result<CyclerData, Error> {
     read_str(&path.display().to_string(), &String::from_utf8_lossy(&bytes))
 }
 
-/// The recording in `path` for a fit or a diagnosis: read with `format` when it is not the
-/// default (the user said how to read the file) or when the file is this crate's CSV;
-/// otherwise, when the header is a known cycler's, by that cycler's reader.
-pub fn read_recording(path: &Path, format: &CsvFormat) -> Result<Recording, Error> {
+/// The file `path` as a fit, a diagnosis and `data inspect` read it: with `format` when it is
+/// not the default (the user said how to read the file) or when the file is this crate's CSV
+/// ([`Recording::from_csv_with`], times as recorded); otherwise by the reader of the cycler
+/// whose header it has; a file of neither kind is refused.
+pub fn read_with(path: &Path, format: &CsvFormat) -> Result<CyclerData, Error> {
+    let plain = |recording| CyclerData { format: CyclerFormat::Native, recording, step: None, time_offset: 0.0, dropped_repeats: 0 };
     if *format != CsvFormat::default() {
-        return Recording::from_csv_with(path, format);
+        return Ok(plain(Recording::from_csv_with(path, format)?));
     }
     let bytes = std::fs::read(path).map_err(Error::io(path))?;
     let text = String::from_utf8_lossy(&bytes);
     match detect(text.strip_prefix('\u{feff}').unwrap_or(&text)) {
-        None | Some(CyclerFormat::Native) => Recording::from_csv_with(path, format),
-        Some(_) => Ok(read_str(&path.display().to_string(), &text)?.recording),
+        Some(CyclerFormat::Native) => Ok(plain(Recording::from_csv_with(path, format)?)),
+        // A vendor's reader, or the error naming the vendors and the first line.
+        _ => read_str(&path.display().to_string(), &text),
     }
+}
+
+/// The recording in `path` for a fit or a diagnosis ([`read_with`]).
+pub fn read_recording(path: &Path, format: &CsvFormat) -> Result<Recording, Error> {
+    Ok(read_with(path, format)?.recording)
+}
+
+/// [`read_with`], then checked against the cell `cell` as a fit and a diagnosis check it
+/// ([`Recording::refuse_unit_errors`]: a likely unit or sign error is an error naming the
+/// file); the other findings come back as notes.
+pub fn read_checked(path: &Path, format: &CsvFormat, cell: &crate::params::ParameterSet) -> Result<(CyclerData, Vec<String>), Error> {
+    let data = read_with(path, format)?;
+    let notes = data.recording.refuse_unit_errors(&path.display().to_string(), cell)?;
+    Ok((data, notes))
 }

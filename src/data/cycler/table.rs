@@ -6,6 +6,7 @@
 use chrono::NaiveDateTime;
 
 use crate::data::Recording;
+use crate::params::check::TEMPERATURE_RANGE;
 
 /// How a time column is written.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -197,7 +198,8 @@ pub struct Rows {
 }
 
 /// Reads the data rows by `layout`: time must not decrease, voltages must lie in (0, 10) V,
-/// repeated rows are dropped when the layout says so.
+/// temperatures in the cell range of [`TEMPERATURE_RANGE`], repeated rows are dropped when the
+/// layout says so.
 pub fn read_rows(table: &Table, layout: &Layout) -> Result<Rows, String> {
     let h = &table.headers;
     let mut rec = Recording { temperature: layout.temperature.map(|_| Vec::new()), ..Default::default() };
@@ -258,7 +260,12 @@ pub fn read_rows(table: &Table, layout: &Layout) -> Result<Rows, String> {
         rec.current.push(i);
         rec.voltage.push(v);
         if let (Some((c, off)), Some(temps)) = (layout.temperature, rec.temperature.as_mut()) {
-            temps.push(number(c)? + off);
+            let kelvin = number(c)? + off;
+            if !TEMPERATURE_RANGE.contains(&kelvin) {
+                let unit = if off == 0.0 { "K" } else { "degC" };
+                return Err(format!("line {line}: `{}` = `{}` ({kelvin} K) is not a cell temperature (the column is read in {unit})", h[c], text(c)));
+            }
+            temps.push(kelvin);
         }
         if let (Some(c), Some(steps)) = (layout.step, step.as_mut()) {
             let s = text(c);
