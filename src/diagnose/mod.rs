@@ -333,7 +333,9 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
     // the same margins (against it, not the user's model) replaces it.
     let round = pairs::Round { options, base, data: &data, split: &split, baseline: &baseline, fitted_paths: &fitted_paths, noise };
     let best_single = outcomes.first().filter(|c| c.named).and_then(|c| c.fit.as_ref());
-    let far_from_noise = matches!(verdict, Verdict::Found { .. }) && best_single.is_some_and(|f| f.rmse_holdout > PAIR_TRIGGER * options.margins.size_floor(noise));
+    // A tie between two singles that both leave far more than the noise may be two effects
+    // that each explain part of the recording.
+    let far_from_noise = verdict.found() && best_single.is_some_and(|f| f.rmse_holdout > PAIR_TRIGGER * options.margins.size_floor(noise));
     if matches!(verdict, Verdict::Unexplained) || far_from_noise {
         let beats_single = |pair: &CandidateOutcome| match (best_single, pair.fit.as_ref()) {
             (Some(single), Some(fit)) if far_from_noise => {
