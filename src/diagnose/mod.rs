@@ -285,7 +285,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
             match aug {
                 Err(why) => out.note = Some(why),
                 Ok(aug) => {
-                    let (fit, note, next) = refit_candidate(c, aug, &warm, &restarts, options, &data, &split);
+                    let (fit, note, next) = refit_candidate(c, aug, &warm, Some(&restarts), options, &data, &split);
                     out.note = note;
                     out.next = next;
                     if let Some(f) = fit {

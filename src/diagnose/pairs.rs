@@ -48,7 +48,7 @@ pub(super) fn best_pair(singles: &[CandidateOutcome], round: &Round) -> Option<C
             // The first effect's fixed structural parameters count too.
             let structural_a = a.candidate.augment(&round.options.spec, round.base, round.fitted_paths).map_or(0, |x| x.structural_parameters);
             let change = format!("{}; {}", a.change, aug.change);
-            let (fit, _, next) = refit_candidate(b.candidate, aug, &next_a.fitted, &[], round.options, round.data, round.split);
+            let (fit, _, next) = refit_candidate(b.candidate, aug, &next_a.fitted, None, round.options, round.data, round.split);
             let mut fit = fit?;
             fit.parameters += structural_a;
             let comparison = select::compare(round.baseline, &fit, n_train);

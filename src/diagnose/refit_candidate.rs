@@ -8,12 +8,13 @@ use refit::{FitOutcome, Split};
 
 /// Fits one candidate on top of the baseline; `warm` holds the baseline's fitted parameters
 /// at their fitted values, `restarts` the points (values of `warm`) the baseline's fit
-/// started from.
+/// started from, or `None` to fit from the first start only (pairs: a budget, as a pair that
+/// needs restarts, ending on a bound, is not plausible anyway).
 pub(super) fn refit_candidate(
     c: Candidate,
     aug: candidates::Augmentation,
     warm: &[FitParameter],
-    restarts: &[Vec<f64>],
+    restarts: Option<&[Vec<f64>]>,
     options: &DiagnoseOptions,
     data: &Recording,
     split: &Split,
@@ -64,7 +65,7 @@ pub(super) fn refit_candidate(
             s
         }));
     }
-    for user in std::iter::once(None).chain(restarts.iter().map(Some)) {
+    for user in std::iter::once(None).chain(restarts.unwrap_or_default().iter().map(Some)) {
         for lower in [false, true] {
             let s: Vec<f64> = params
                 .iter()
@@ -78,6 +79,9 @@ pub(super) fn refit_candidate(
                 starts.push(s);
             }
         }
+    }
+    if restarts.is_none() {
+        starts.truncate(1);
     }
     let starts = refit::Starts { points: starts, runs_at: Some(runs_at) };
     match refit::fit_and_score(describe(&aug.spec), aug.spec, aug.base.clone(), params.clone(), aug.structural_parameters, &starts, data, split, &options.fit) {
