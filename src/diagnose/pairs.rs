@@ -1,7 +1,8 @@
 //! Two effects at once: when no single candidate explains a structured residual, two
 //! effects may be hiding each other (a lost electrode capacity and self-heating pull the
 //! voltage opposite ways). Every pair of candidates whose own fit lowered the training error
-//! at all (or was fitted to a recorded temperature) is refitted together, the second added to the first's model, and counted and
+//! at all (or was fitted to a recorded temperature) is refitted together (from the first
+//! start; the three best whose fit is doubtful again from every start), the second added to the first's model, and counted and
 //! judged as a single candidate is (both effects' parameters and structural changes count).
 
 use rayon::prelude::*;
@@ -37,69 +38,90 @@ pub(super) fn best_pair(singles: &[CandidateOutcome], round: &Round) -> Option<C
         .flat_map(|(i, a)| useful[i + 1..].iter().map(move |b| (*a, *b)))
         .filter(|(a, b)| !(electrolyte(a.candidate) && electrolyte(b.candidate)))
         .collect();
-    let n_train = round.split.train_points();
-    pairs
-        .into_par_iter()
-        .filter_map(|(a, b)| {
-            let next_a = a.next.as_ref()?;
-            let paths: Vec<String> = next_a.fitted.iter().map(|p| p.path.clone()).collect();
-            let aug = b.candidate.augment(&next_a.spec, &next_a.base, &paths)?;
-            let partner: Vec<String> = aug.extra.iter().map(|p| p.path.clone()).collect();
-            // The first effect's fixed structural parameters count too.
-            let structural_a = a.candidate.augment(&round.options.spec, round.base, round.fitted_paths).map_or(0, |x| x.structural_parameters);
-            let change = format!("{}; {}", a.change, aug.change);
-            let (fit, _, next) = refit_candidate(b.candidate, aug, &next_a.fitted, None, round.options, round.data, round.split);
-            let mut fit = fit?;
-            fit.parameters += structural_a;
-            let comparison = select::compare(round.baseline, &fit, n_train);
-            let m = &round.options.margins;
-            let clears = comparison.delta_bic > m.min_delta_bic
-                && comparison.ln_bayes_factor > 0.0
-                && comparison.holdout_gain >= m.min_holdout_gain
-                && comparison.explained >= m.size_floor(round.noise);
-            let (names, values): (Vec<String>, Vec<f64>) =
-                fit.names.iter().zip(&fit.values).filter(|(n, _)| !round.baseline.names.contains(n)).map(|(n, v)| (n.clone(), *v)).unzip();
-            // Twice the parameters: each must also be determined by the recording.
-            let undetermined = names.iter().zip(&values).filter_map(|(n, v)| {
-                let se = fit.std_errors[fit.names.iter().position(|m| m == n)?];
-                let relative = se / v.abs().max(f64::MIN_POSITIVE);
-                (!(relative <= crate::problem::verdict::MAX_RELATIVE_ERROR)).then(|| format!("{n} is not determined by this recording (±{:.0} %)", 100.0 * relative))
-            });
-            // A parameter-mismatch partner whose fitted values are the set's own (within two
-            // standard errors) adds nothing: the pair is the first effect alone. (A submodel
-            // switched on adds its physics whatever its parameters.)
-            let unchanged = b.class == super::Class::ParameterMismatch
-                && !partner.is_empty()
-                && partner.iter().all(|path| {
-                    let k = fit.names.iter().position(|n| n == path);
-                    let v0 = round.base.get(path).ok();
-                    k.zip(v0).is_some_and(|(k, v0)| (fit.values[k] - v0).abs() <= 2.0 * fit.std_errors[k])
-                });
-            let implausible = [a.candidate, b.candidate]
-                .iter()
-                .find_map(|c| c.implausible(&names, &values, round.base).or_else(|| c.unresolved(&names, &values, round.data)))
-                .or_else(|| undetermined.into_iter().next())
-                .or_else(|| unchanged.then(|| format!("{} keeps the set's values: it adds nothing", b.candidate.name())));
-            // Named by the pair's own values (e.g. the share of capacity lost).
-            let name = format!("{} together with {}", a.candidate.named_by_values(&fit.names, &fit.values, round.base), b.candidate.named_by_values(&fit.names, &fit.values, round.base));
-            Some(CandidateOutcome {
-                candidate: a.candidate,
-                name,
-                class: if a.class == b.class { a.class } else { super::Class::MissingPhysics },
-                signature: format!("{}; {}", a.signature, b.signature),
-                plausible_range: format!("{}; {}", a.plausible_range, b.plausible_range),
-                change,
-                fit: Some(fit),
-                note: Some("two effects refitted together: neither alone explains the recording".into()),
-                comparison,
-                clears_margins: clears,
-                named: clears && implausible.is_none(),
-                implausible,
-                next,
-            })
-        })
+    // Every pair from its first start; the few best whose fit is doubtful (it stopped on its
+    // cap or ended on a bound) again from every start, as the singles are.
+    let first: Vec<(usize, CandidateOutcome)> = pairs.par_iter().enumerate().filter_map(|(k, (a, b))| Some((k, fit_pair(a, b, round, None)?))).collect();
+    let mut doubtful: Vec<&(usize, CandidateOutcome)> =
+        first.iter().filter(|(_, p)| p.fit.as_ref().is_some_and(|f| !f.converged || f.on_bound.iter().any(|b| *b))).collect();
+    doubtful.sort_by(|(_, p), (_, q)| rmse_train(p).total_cmp(&rmse_train(q)));
+    let again: Vec<CandidateOutcome> =
+        doubtful.into_iter().take(REFIT_DOUBTFUL_PAIRS).collect::<Vec<_>>().into_par_iter().filter_map(|(k, _)| fit_pair(pairs[*k].0, pairs[*k].1, round, Some(&[]))).collect();
+    first
+        .into_iter()
+        .map(|(_, p)| p)
+        .chain(again)
         .filter(|p| p.named)
         .max_by(|p, q| p.comparison.delta_bic.total_cmp(&q.comparison.delta_bic))
+}
+
+/// Doubtful pairs refitted from every start, the best by training error first.
+const REFIT_DOUBTFUL_PAIRS: usize = 3;
+
+fn rmse_train(p: &CandidateOutcome) -> f64 {
+    p.fit.as_ref().map_or(f64::INFINITY, |f| f.rmse_train)
+}
+
+/// Candidate `b` added to `a`'s fitted model, refitted from the first start (`restarts`
+/// `None`) or from every start, and judged as a single candidate is; `None` when `b` cannot
+/// be added or the fit fails.
+fn fit_pair(a: &CandidateOutcome, b: &CandidateOutcome, round: &Round, restarts: Option<&[Vec<f64>]>) -> Option<CandidateOutcome> {
+    let n_train = round.split.train_points();
+    let next_a = a.next.as_ref()?;
+    let paths: Vec<String> = next_a.fitted.iter().map(|p| p.path.clone()).collect();
+    let aug = b.candidate.augment(&next_a.spec, &next_a.base, &paths)?;
+    let partner: Vec<String> = aug.extra.iter().map(|p| p.path.clone()).collect();
+    // The first effect's fixed structural parameters count too.
+    let structural_a = a.candidate.augment(&round.options.spec, round.base, round.fitted_paths).map_or(0, |x| x.structural_parameters);
+    let change = format!("{}; {}", a.change, aug.change);
+    let (fit, _, next) = refit_candidate(b.candidate, aug, &next_a.fitted, restarts, round.options, round.data, round.split);
+    let mut fit = fit?;
+    fit.parameters += structural_a;
+    let comparison = select::compare(round.baseline, &fit, n_train);
+    let m = &round.options.margins;
+    let clears = comparison.delta_bic > m.min_delta_bic
+        && comparison.ln_bayes_factor > 0.0
+        && comparison.holdout_gain >= m.min_holdout_gain
+        && comparison.explained >= m.size_floor(round.noise);
+    let (names, values): (Vec<String>, Vec<f64>) =
+        fit.names.iter().zip(&fit.values).filter(|(n, _)| !round.baseline.names.contains(n)).map(|(n, v)| (n.clone(), *v)).unzip();
+    // Twice the parameters: each must also be determined by the recording.
+    let undetermined = names.iter().zip(&values).filter_map(|(n, v)| {
+        let se = fit.std_errors[fit.names.iter().position(|m| m == n)?];
+        let relative = se / v.abs().max(f64::MIN_POSITIVE);
+        (!(relative <= crate::problem::verdict::MAX_RELATIVE_ERROR)).then(|| format!("{n} is not determined by this recording (±{:.0} %)", 100.0 * relative))
+    });
+    // A parameter-mismatch partner whose fitted values are the set's own (within two
+    // standard errors) adds nothing: the pair is the first effect alone. (A submodel
+    // switched on adds its physics whatever its parameters.)
+    let unchanged = b.class == super::Class::ParameterMismatch
+        && !partner.is_empty()
+        && partner.iter().all(|path| {
+            let k = fit.names.iter().position(|n| n == path);
+            let v0 = round.base.get(path).ok();
+            k.zip(v0).is_some_and(|(k, v0)| (fit.values[k] - v0).abs() <= 2.0 * fit.std_errors[k])
+        });
+    let implausible = [a.candidate, b.candidate]
+        .iter()
+        .find_map(|c| c.implausible(&names, &values, round.base).or_else(|| c.unresolved(&names, &values, round.data)))
+        .or_else(|| undetermined.into_iter().next())
+        .or_else(|| unchanged.then(|| format!("{} keeps the set's values: it adds nothing", b.candidate.name())));
+    // Named by the pair's own values (e.g. the share of capacity lost).
+    let name = format!("{} together with {}", a.candidate.named_by_values(&fit.names, &fit.values, round.base), b.candidate.named_by_values(&fit.names, &fit.values, round.base));
+    Some(CandidateOutcome {
+        candidate: a.candidate,
+        name,
+        class: if a.class == b.class { a.class } else { super::Class::MissingPhysics },
+        signature: format!("{}; {}", a.signature, b.signature),
+        plausible_range: format!("{}; {}", a.plausible_range, b.plausible_range),
+        change,
+        fit: Some(fit),
+        note: Some("two effects refitted together: neither alone explains the recording".into()),
+        comparison,
+        clears_margins: clears,
+        named: clears && implausible.is_none(),
+        implausible,
+        next,
+    })
 }
 
 /// The electrolyte candidates describe one physics (the electrolyte model and its
