@@ -644,7 +644,13 @@ def batch_p(root):
     recorded, OCV hysteresis seen through a bidirectional GITT), and three pairs not used
     before (contact + negative diffusivity, lithium loss + self-heating, electrolyte
     diffusivity + positive LAM). Lithium and active-material loss are accepted only by their
-    own words, as since batch r."""
+    own words, as since batch r. First run (2026-11-25, frozen binary sha256 6dfafbfbef5d): 6 of 8;
+    p2 a tie (contact 7.02 mOhm, truth 7, or kinetics; one power level); p5 named electrolyte
+    conductivity x0.47 + diffusivities in place of contact + diffusivity (in the SPMe a
+    conductivity factor is an ohmic stand-in; the contact + diffusivity pair was not in the table);
+    p7 a tie contact 15 mOhm / electrolyte, then "unexplained" (positive LAM 7 % beside the contact
+    stand-in cut the hold-out 9 %, 10 % needed; the electrolyte + LAM pair was not tried); p6 took
+    850 s of the judge's 900 s."""
     drive = wltp_like_current(101)
     p = chen()
     for side in ["Negative", "Positive"]:
