@@ -1,9 +1,10 @@
 //! Two effects at once: when no single candidate explains a structured residual, two
 //! effects may be hiding each other (a lost electrode capacity and self-heating pull the
 //! voltage opposite ways). Every pair of candidates whose own fit lowered the training error
-//! at all (or was fitted to a recorded temperature) is refitted together (from the first
-//! start; the three best whose fit is doubtful again from every start), the second added to the first's model, and counted and
-//! judged as a single candidate is (both effects' parameters and structural changes count).
+//! at all (or was fitted to a recorded temperature) is refitted together, the second added
+//! to the first's model (from the first start; the three best whose fit is doubtful again
+//! from every start), and counted and judged as a single candidate is (both effects'
+//! parameters and structural changes count).
 
 use rayon::prelude::*;
 
