@@ -51,6 +51,10 @@
 //! Bruggeman exponent, a particle radius, an electrode thickness, activation energies), named
 //! 8 of 8 at its first run (s4, positive exchange current x0.8 near the noise, as a tie with a
 //! 0.56 mOhm resistance). s2, s3, s4 and s8 are here; the others take 25-47 s each.
+//! A blind batch p (p1-p8) named 6 of 8 at its first run and 7 of 8 with the final binary of
+//! that session; its quick cases are here: 7 mOhm under constant power at 5 degC (an honest tie
+//! with kinetics), 10 % negative LAM under partial CC-CV cycles, a DFN GITT control at 45 degC
+//! and +-15 mV hysteresis from a two-way GITT.
 
 use std::path::{Path, PathBuf};
 
@@ -407,4 +411,24 @@ fn s4_positive_kinetics_near_the_noise_spme() {
 #[test]
 fn s8_negative_control_rpt_dfn() {
     run_case("diagnosis-extra/s8_control_rpt_dfn");
+}
+
+#[test]
+fn p2_contact_resistance_constant_power_cold_spm() {
+    run_case("diagnosis-extra/p2_contact_constant_power_5C_spm");
+}
+
+#[test]
+fn p3_negative_active_material_partial_cccv_spme() {
+    run_case("diagnosis-extra/p3_lam_negative_partial_cccv_0p5mV");
+}
+
+#[test]
+fn p4_negative_control_gitt_charge_warm_dfn() {
+    run_case("diagnosis-extra/p4_control_gitt_charge_45C_dfn");
+}
+
+#[test]
+fn p8_hysteresis_two_way_gitt_spme() {
+    run_case("diagnosis-extra/p8_hysteresis_bidirectional_gitt_15C");
 }
