@@ -248,20 +248,26 @@ def batch_x(root):
 
 
 
+def with_negative_hysteresis(p, half_width):
+    """One-state OCV hysteresis of the negative electrode: lithiation and delithiation OCPs
+    `half_width` (V) either side of the set's OCP, decay rate 10, starting in the middle."""
+    u_n = p["Negative electrode OCP [V]"]
+    p.update({
+        "Negative electrode lithiation OCP [V]": lambda *a: u_n(*a) - half_width,
+        "Negative electrode delithiation OCP [V]": lambda *a: u_n(*a) + half_width,
+        "Negative particle lithiation hysteresis decay rate": 10.0,
+        "Negative particle delithiation hysteresis decay rate": 10.0,
+        "Initial hysteresis state in negative electrode": 0.0,
+    }, check_already_exists=False)
+
+
 def batch_y(root):
     """Fifth batch, made before any change it could have guided: an effect the bench never
     shows (one-state OCV hysteresis), noisier and coarser recordings, self-heating without a
     recorded temperature, the SPM on a DFN drive cycle, lithium loss seen through a CC-CV
     charge, and a noisy DFN control."""
     p = chen()
-    u_n = p["Negative electrode OCP [V]"]
-    p.update({
-        "Negative electrode lithiation OCP [V]": lambda *a: u_n(*a) - 0.012,
-        "Negative electrode delithiation OCP [V]": lambda *a: u_n(*a) + 0.012,
-        "Negative particle lithiation hysteresis decay rate": 10.0,
-        "Negative particle delithiation hysteresis decay rate": 10.0,
-        "Initial hysteresis state in negative electrode": 0.0,
-    }, check_already_exists=False)
+    with_negative_hysteresis(p, 0.012)
     cycle = ["Discharge at C/2 for 30 minutes", "Rest for 30 minutes", "Charge at C/2 for 30 minutes", "Rest for 30 minutes"] * 2
     write_case(root, "y1_hysteresis_negative_spme", lion.SPMe(options={"open-circuit potential": ("one-state hysteresis", "single")}), p, cycle,
                {"effect": "hysteresis", "candidate_model": "spme", "accept": ["hysteresis"],
@@ -731,14 +737,7 @@ def batch_p(root):
                seed=107, compare=lion.SPMe())
     p = chen()
     p.update({"Ambient temperature [K]": 288.15, "Initial temperature [K]": 288.15})
-    u_n = p["Negative electrode OCP [V]"]
-    p.update({
-        "Negative electrode lithiation OCP [V]": lambda *a: u_n(*a) - 0.015,
-        "Negative electrode delithiation OCP [V]": lambda *a: u_n(*a) + 0.015,
-        "Negative particle lithiation hysteresis decay rate": 10.0,
-        "Negative particle delithiation hysteresis decay rate": 10.0,
-        "Initial hysteresis state in negative electrode": 0.0,
-    }, check_already_exists=False)
+    with_negative_hysteresis(p, 0.015)
     both = (["Rest for 30 minutes"] + ["Discharge at C/5 for 15 minutes", "Rest for 30 minutes"] * 4
             + ["Charge at C/5 for 15 minutes", "Rest for 30 minutes"] * 4 + ["Discharge at C/5 for 15 minutes", "Rest for 30 minutes"] * 2)
     write_case(root, "p8_hysteresis_bidirectional_gitt_15C", lion.DFN(options={"open-circuit potential": ("one-state hysteresis", "single")}), p, both,
