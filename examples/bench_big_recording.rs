@@ -12,7 +12,8 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use cellstudio::geometry::{MeshSizes, ModelBuilder};
+use cellstudio::geometry::MeshSizes;
+use cellstudio::models::ModelBuilder;
 use cellstudio::models::{ModelKind, Submodels};
 use cellstudio::params::chen2020;
 use cellstudio::protocol::{Protocol, Step};

@@ -7,7 +7,8 @@
 use std::time::Instant;
 
 use cellstudio::eis::{impedance, linearise, log_frequencies, rest_state};
-use cellstudio::geometry::{MeshSizes, ModelBuilder};
+use cellstudio::geometry::MeshSizes;
+use cellstudio::models::ModelBuilder;
 use cellstudio::models::{ModelKind, Submodels};
 use cellstudio::params::{chen2020, set_initial_soc};
 

@@ -6,7 +6,7 @@ use std::time::Instant;
 
 use cellstudio::cost::CostKind;
 use cellstudio::optim::OptimOptions;
-use cellstudio::problem::fit::fit;
+use cellstudio::problem::identification::fit;
 use cellstudio::study::fit::FitStudy;
 
 fn median(mut v: Vec<f64>) -> f64 {

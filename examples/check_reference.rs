@@ -4,7 +4,8 @@
 //! reads the curves from another directory than `tests/data` (e.g. the rtol 1e-10 curves of
 //! `scripts/accuracy_vs_pybamm.py`); missing files are skipped.
 use cellstudio::data::Recording;
-use cellstudio::geometry::{MeshSizes, ModelBuilder};
+use cellstudio::geometry::MeshSizes;
+use cellstudio::models::ModelBuilder;
 use cellstudio::models::{ModelKind, Submodels};
 use cellstudio::params::chen2020;
 use cellstudio::protocol::Protocol;

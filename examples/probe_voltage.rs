@@ -2,7 +2,8 @@
 //! exported from PyBaMM (JSON written by `scripts/pybamm_states.py`; argument: its path), so that differences in
 //! the model equations show up without any time integration. `PROBE_ROWS` prints every
 //! algebraic residual.
-use cellstudio::geometry::{MeshSizes, ModelBuilder};
+use cellstudio::geometry::MeshSizes;
+use cellstudio::models::ModelBuilder;
 use cellstudio::models::{ModelKind, Submodels};
 use cellstudio::params::chen2020;
 use serde_json::Value;

@@ -9,7 +9,8 @@ use clap::Parser;
 mod cli;
 use cli::{Cli, Command, DataCommand, Overrides};
 
-use cellstudio::geometry::{MeshSizes, ModelBuilder};
+use cellstudio::geometry::MeshSizes;
+use cellstudio::models::ModelBuilder;
 use cellstudio::models::Submodels;
 use cellstudio::output::OutputDir;
 use cellstudio::params::{ParameterSet, apply_overrides};
@@ -19,7 +20,8 @@ use cellstudio::simulation::{SimOptions, simulate};
 use cellstudio::Error;
 use cellstudio::study::Study;
 use cellstudio::study::design::run_design;
-use cellstudio::study::fit::{FitStudy, parameter_table, run_fit};
+use cellstudio::study::fit::{FitStudy, parameter_table};
+use cellstudio::study::fit_run::run_fit;
 use cellstudio::study::sample::run_sample;
 use cellstudio::study::eis;
 use cellstudio::study::pareto::run_pareto;
@@ -182,16 +184,17 @@ fn run(cli: Cli) -> Result<(), Error> {
                 params: p,
                 soc,
                 frequencies,
-                fit: fit.map(|f| (f, parameters)),
+                fit: fit.map(|data| eis::EisFitRequest { data, parameters }),
                 optimiser,
                 out,
                 inputs: params.into_iter().collect(),
             };
             let outcome = eis::run_eis(&run)?;
             warn(&outcome.warnings);
-            if let Some((names, x, result, seconds)) = &outcome.fit {
-                println!("fit: {} evaluations in {seconds:.2} s, cost {:.3e}, stop {:?}", result.evaluations, result.f, result.stop);
-                for (n, v) in names.iter().zip(x) {
+            if let Some(fitted) = &outcome.fit {
+                let result = &fitted.result;
+                println!("fit: {} evaluations in {:.2} s, cost {:.3e}, stop {:?}", result.evaluations, fitted.seconds, result.f, result.stop);
+                for (n, v) in fitted.names.iter().zip(&fitted.values) {
                     println!("  {n} = {v:.5e}");
                 }
             }

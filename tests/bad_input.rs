@@ -1,7 +1,8 @@
 //! Non-physical input gives an error that names the field and the value, never a panic.
 
 use cellstudio::data::Recording;
-use cellstudio::geometry::{MeshSizes, ModelBuilder};
+use cellstudio::geometry::MeshSizes;
+use cellstudio::models::ModelBuilder;
 use cellstudio::models::{ModelKind, Submodels};
 use cellstudio::params::chen2020;
 use cellstudio::protocol::Protocol;

@@ -1,7 +1,8 @@
 //! The geometry-aware builder rebuilds only when a geometric parameter changes, and a re-used
 //! build gives the same answer as a fresh one.
 
-use cellstudio::geometry::{MeshSizes, ModelBuilder};
+use cellstudio::geometry::MeshSizes;
+use cellstudio::models::ModelBuilder;
 use cellstudio::models::{ModelKind, Submodels};
 use cellstudio::params::chen2020;
 use cellstudio::protocol::Protocol;

@@ -6,7 +6,8 @@
 //! Compared: the voltage outside the hold, the current during the hold, and when each step
 //! ends (the cut-off events and the hold's current limit).
 
-use cellstudio::geometry::{MeshSizes, ModelBuilder};
+use cellstudio::geometry::MeshSizes;
+use cellstudio::models::ModelBuilder;
 use cellstudio::models::{ModelKind, Submodels};
 use cellstudio::params::chen2020;
 use cellstudio::protocol::experiment;

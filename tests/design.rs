@@ -22,7 +22,8 @@ fn seed_problem() -> DesignProblem {
 /// trapezoid rule on 1 s samples of V(t) I(t).
 #[test]
 fn delivered_energy_matches_fine_quadrature() {
-    use cellstudio::geometry::{MeshSizes, ModelBuilder};
+    use cellstudio::geometry::MeshSizes;
+    use cellstudio::models::ModelBuilder;
     use cellstudio::models::Submodels;
     use cellstudio::protocol::Protocol;
     use cellstudio::simulation::{SimOptions, simulate};

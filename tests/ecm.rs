@@ -151,7 +151,8 @@ fn thermal_steady_state_and_charge_balance() {
 /// lower cut-off, and a 1C discharge ends at the cut-off near the table's capacity.
 #[test]
 fn chen2020_default_is_consistent_with_the_physics_models() {
-    use cellstudio::geometry::{MeshSizes, ModelBuilder};
+    use cellstudio::geometry::MeshSizes;
+    use cellstudio::models::ModelBuilder;
     use cellstudio::models::{ModelKind, Submodels};
     let p = cellstudio::params::chen2020();
     let ecm_p = EcmParameters::from_chen2020();
@@ -231,7 +232,8 @@ fn parameters_round_trip_through_toml_and_reject_unknown_fields() {
 /// The DFN (default mesh, Chen 2020) through a 1C pulse of 600 s from SOC 0.5 and 1800 s
 /// of rest, outputs every second: the solution and its overpotential `OCV - V` (V).
 fn dfn_pulse_at_half_soc() -> (Solution, Vec<f64>) {
-    use cellstudio::geometry::{MeshSizes, ModelBuilder};
+    use cellstudio::geometry::MeshSizes;
+    use cellstudio::models::ModelBuilder;
     use cellstudio::models::ecm::equilibrium_ocv_table;
     use cellstudio::models::{ModelKind, Submodels};
     let mut p = cellstudio::params::chen2020();

@@ -37,7 +37,8 @@ fn chen2020_window_matches_pybamm() {
 
 mod impedance {
     use cellstudio::eis::{SineOptions, Spectrum, impedance, linearise, log_frequencies, model_impedance, rest_state, sine_response};
-    use cellstudio::geometry::{MeshSizes, ModelBuilder};
+    use cellstudio::geometry::MeshSizes;
+    use cellstudio::models::ModelBuilder;
     use cellstudio::models::{ModelKind, Submodels};
     use cellstudio::params::{FARADAY, GAS_CONSTANT, ParameterSet, chen2020, set_initial_soc};
 
@@ -302,7 +303,8 @@ mod fit {
 
 #[test]
 fn a_state_away_from_rest_is_refused() {
-    use cellstudio::geometry::{MeshSizes, ModelBuilder};
+    use cellstudio::geometry::MeshSizes;
+    use cellstudio::models::ModelBuilder;
     use cellstudio::models::{ModelKind, Submodels};
     let mut p = chen2020();
     p.thermal.initial_temperature = p.thermal.ambient_temperature + 10.0;

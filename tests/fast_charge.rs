@@ -4,7 +4,8 @@
 //! least over x in the DFN) through a 2C charge from 10 % SOC, and the largest constant
 //! charge rate from 10 % to 80 % that keeps it at or above 0 V.
 
-use cellstudio::geometry::{MeshSizes, ModelBuilder};
+use cellstudio::geometry::MeshSizes;
+use cellstudio::models::ModelBuilder;
 use cellstudio::models::{ModelKind, Submodels};
 use cellstudio::params::{StoichiometryWindow, chen2020};
 use cellstudio::problem::fast_charge::FastChargeSpec;

@@ -1,7 +1,8 @@
 //! Spatial fields: the electrolyte salt is conserved, the profiles point the way a discharge
 //! drives them, and the field files are written.
 
-use cellstudio::geometry::{MeshSizes, ModelBuilder};
+use cellstudio::geometry::MeshSizes;
+use cellstudio::models::ModelBuilder;
 use cellstudio::models::{Field, ModelKind, Submodels};
 use cellstudio::params::{ParameterSet, chen2020};
 use cellstudio::protocol::Protocol;

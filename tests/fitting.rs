@@ -72,7 +72,7 @@ fn sensitivities_match_finite_differences() {
 fn seed_case_recovers_diffusivity_and_contact_resistance() {
     use cellstudio::cost::CostKind;
     use cellstudio::optim::OptimOptions;
-    use cellstudio::problem::fit::fit;
+    use cellstudio::problem::identification::fit;
     let truth = [3.3e-14, 0.010];
     let mut problem = seed_problem(seed_recording(0.002, 7));
     problem.parameters[0].initial = 2.0 * truth[0];
@@ -109,7 +109,7 @@ fn seed_case_recovers_diffusivity_and_contact_resistance() {
 #[test]
 fn cost_gradient_matches_finite_differences() {
     use cellstudio::cost::{CostKind, Prior};
-    use cellstudio::problem::fit::FitObjective;
+    use cellstudio::problem::identification::FitObjective;
     let mut problem = seed_problem(seed_recording(0.002, 5));
     problem.parameters[0].prior = Prior::LogNormal { mu: (3e-14f64).ln(), sigma: 0.5 };
     problem.parameters[1].prior = Prior::Gaussian { mean: 0.012, sd: 0.003 };
@@ -184,7 +184,7 @@ fn csv_format_maps_columns_units_and_sign() {
 fn every_optimiser_fits_the_seed_case() {
     use cellstudio::cost::CostKind;
     use cellstudio::optim::{OPTIMISER_NAMES, OptimOptions};
-    use cellstudio::problem::fit::fit;
+    use cellstudio::problem::identification::fit;
     let mut problem = seed_problem(seed_recording(0.002, 7));
     problem.parameters[0].initial = 6.6e-14;
     problem.parameters[1].initial = 0.005;

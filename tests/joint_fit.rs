@@ -7,7 +7,8 @@ use cellstudio::data::Recording;
 use cellstudio::models::{ModelKind, Submodels};
 use cellstudio::params::chen2020;
 use cellstudio::problem::fitting::{FitParameter, FittingProblem, INITIAL_SOC, ModelSpec};
-use cellstudio::study::fit::{FitStudy, run_fit};
+use cellstudio::study::fit::FitStudy;
+use cellstudio::study::fit_run::run_fit;
 
 /// The truth of the synthetic experiments: SPM with a contact resistance.
 const D_N: f64 = 3.3e-14;
@@ -171,7 +172,7 @@ fn measured_lgm50_half_c_and_one_c_jointly() {
             .starting_at_rest()
             .unwrap();
         let v = chen.simulate(&[]).unwrap();
-        let chen_rmse = cellstudio::problem::fit::weighted_rms(&chen.residuals(&v), &chen.weights);
+        let chen_rmse = cellstudio::problem::identification::weighted_rms(&chen.residuals(&v), &chen.weights);
         eprintln!("{}: joint fit RMSE {:.2} mV, Chen 2020 {:.2} mV", e.name, e.rmse * 1e3, chen_rmse * 1e3);
         assert!(e.rmse < chen_rmse, "{}: {} V vs Chen 2020 {} V", e.name, e.rmse, chen_rmse);
     }

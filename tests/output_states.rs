@@ -1,7 +1,8 @@
 //! `Model::output_states` lists every state the voltage and temperature read: the energy
 //! quadrature interpolates only those, so a missing index would silently bias the energy.
 
-use cellstudio::geometry::{MeshSizes, ModelBuilder};
+use cellstudio::geometry::MeshSizes;
+use cellstudio::models::ModelBuilder;
 use cellstudio::models::{ModelKind, Submodels};
 use cellstudio::params::chen2020;
 use cellstudio::protocol::Protocol;

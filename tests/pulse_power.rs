@@ -3,7 +3,8 @@
 //! Chen 2020 cell sustains for 10 s from rest at 50 % SOC above 2.5 V, found by bisection
 //! with PyBaMM's own experiment and cut-off event, for the SPMe and the DFN on the same mesh.
 
-use cellstudio::geometry::{MeshSizes, ModelBuilder};
+use cellstudio::geometry::MeshSizes;
+use cellstudio::models::ModelBuilder;
 use cellstudio::models::{ModelKind, Submodels};
 use cellstudio::params::chen2020;
 use cellstudio::problem::pulse::PulseSpec;

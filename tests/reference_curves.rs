@@ -11,7 +11,8 @@
 
 mod common;
 
-use cellstudio::geometry::{MeshSizes, ModelBuilder};
+use cellstudio::geometry::MeshSizes;
+use cellstudio::models::ModelBuilder;
 use cellstudio::models::{ModelKind, Submodels};
 use cellstudio::params::chen2020;
 use cellstudio::protocol::Protocol;

@@ -6,7 +6,8 @@
 //! ~880 right-hand sides; the SPMe 130 steps and 325 right-hand sides; the SPM 84 steps and
 //! 183 right-hand sides. The bounds below leave ~15 % headroom over today's counts.
 
-use cellstudio::geometry::{MeshSizes, ModelBuilder};
+use cellstudio::geometry::MeshSizes;
+use cellstudio::models::ModelBuilder;
 use cellstudio::models::{ModelKind, Submodels};
 use cellstudio::params::chen2020;
 use cellstudio::protocol::Protocol;

@@ -4,7 +4,7 @@
 use serde::Serialize;
 
 use super::features::Features;
-use super::stats::{TestResult, least_squares, ljung_box, noise_from_dense_differences, runs_test};
+use crate::stats::{TestResult, least_squares, ljung_box, noise_from_dense_differences, runs_test};
 use crate::data::Recording;
 
 /// Straight-line fit `r ≈ a + b x`.

@@ -33,7 +33,6 @@ mod refit_candidate;
 pub mod refit;
 pub mod report;
 pub mod select;
-pub mod stats;
 pub mod synthetic;
 
 use rayon::prelude::*;

@@ -10,7 +10,7 @@ use crate::error::Error;
 use crate::params::ParameterSet;
 use crate::problem::fitting::{FitParameter, FittingProblem, ModelSpec};
 use crate::problem::least_squares::{LeastSquaresFit, LmSettings, levenberg_marquardt};
-use super::stats::noise_from_dense_differences;
+use crate::stats::noise_from_dense_differences;
 use crate::stats::lag1;
 
 /// Which points train and which validate.

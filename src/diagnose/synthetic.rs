@@ -7,7 +7,8 @@ use rand_distr::{Distribution, Normal};
 
 use crate::data::Recording;
 use crate::error::Error;
-use crate::geometry::{MeshSizes, ModelBuilder};
+use crate::geometry::MeshSizes;
+use crate::models::ModelBuilder;
 use crate::models::{ModelKind, Submodels};
 use crate::params::ParameterSet;
 use crate::protocol::{Demand, Protocol, Step};

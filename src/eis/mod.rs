@@ -8,8 +8,8 @@
 //!
 //! ```
 //! use cellstudio::eis::{log_frequencies, model_impedance};
-//! use cellstudio::geometry::{MeshSizes, ModelBuilder};
-//! use cellstudio::models::{ModelKind, Submodels};
+//! use cellstudio::geometry::MeshSizes;
+//! use cellstudio::models::{ModelBuilder, ModelKind, Submodels};
 //!
 //! let mut p = cellstudio::params::chen2020();
 //! cellstudio::params::set_initial_soc(&mut p, 0.5).unwrap();
@@ -21,16 +21,16 @@
 //! assert!(z.z_im.iter().all(|&i| i < 0.0));
 //! ```
 
-pub mod fit;
 pub mod impedance;
 pub mod linearise;
 pub mod spectrum;
+pub mod spectrum_fit;
 pub mod time_domain;
 
-pub use fit::EisFit;
 pub use impedance::{ImpedanceSolver, impedance};
 pub use linearise::{Linearisation, linearise, rest_state};
 pub use spectrum::{Spectrum, log_frequencies};
+pub use spectrum_fit::EisFit;
 pub use time_domain::{SineOptions, SineResponse, sine_response};
 
 use crate::error::Error;

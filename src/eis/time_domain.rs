@@ -7,6 +7,7 @@ use serde::{Deserialize, Serialize};
 use crate::error::Error;
 use crate::models::Model;
 use crate::simulation::UnderCurrent;
+use crate::stats::least_squares;
 use crate::solver::{DenseOutput, SolverOptions, SolverStats, Workspace, integrate};
 
 /// Settings of a sinusoidal-current experiment.
@@ -102,64 +103,28 @@ pub fn sine_response(
     if voltage.len() < n_samples {
         return Err(Error::Solver { t: t_end, reason: "the integration ended before the fit window".into() });
     }
-    let (a, b, residual) = fit_sinusoid(&times, &voltage, omega);
+    let (a, b, residual) = fit_sinusoid(&times, &voltage, omega)
+        .ok_or_else(|| Error::Solver { t: t_end, reason: "the fit window cannot separate the sinusoid from the drift".into() })?;
     // V = a sin + b cos = Im((a + i b) e^{i w t}); I = Im(A e^{i w t}); Z = -V_hat / I_hat.
     Ok(SineResponse { frequency, z_re: -a / opts.amplitude, z_im: -b / opts.amplitude, residual, stats })
 }
 
 /// Least-squares fit of `v(t) = c0 + c1 s + c2 s^2 + a sin(wt) + b cos(wt)` (with `s` the
-/// time scaled to [-1, 1] over the window); returns `(a, b, rms residual)`.
-fn fit_sinusoid(t: &[f64], v: &[f64], omega: f64) -> (f64, f64, f64) {
+/// time scaled to [-1, 1] over the window); returns `(a, b, rms residual)`, or `None` when the
+/// window cannot separate the terms.
+fn fit_sinusoid(t: &[f64], v: &[f64], omega: f64) -> Option<(f64, f64, f64)> {
     let (t0, t1) = (t[0], t[t.len() - 1]);
-    let basis = |t: f64| {
-        let s = (2.0 * t - t0 - t1) / (t1 - t0);
-        [1.0, s, s * s, (omega * t).sin(), (omega * t).cos()]
-    };
-    let v_mean = v.iter().sum::<f64>() / v.len() as f64;
-    let mut ata = [[0.0; 5]; 5];
-    let mut atb = [0.0; 5];
-    for (&ti, &vi) in t.iter().zip(v) {
-        let phi = basis(ti);
-        for r in 0..5 {
-            atb[r] += phi[r] * (vi - v_mean);
-            for c in 0..5 {
-                ata[r][c] += phi[r] * phi[c];
-            }
-        }
-    }
-    let coef = solve5(ata, atb);
-    let sq: f64 = t
-        .iter()
-        .zip(v)
-        .map(|(&ti, &vi)| {
-            let phi = basis(ti);
-            let fit: f64 = phi.iter().zip(&coef).map(|(p, c)| p * c).sum();
-            (vi - v_mean - fit).powi(2)
-        })
-        .sum();
-    (coef[3], coef[4], (sq / t.len() as f64).sqrt())
-}
-
-/// Gaussian elimination with partial pivoting on a 5 x 5 system.
-fn solve5(mut a: [[f64; 5]; 5], mut b: [f64; 5]) -> [f64; 5] {
-    for k in 0..5 {
-        let p = (k..5).max_by(|&i, &j| a[i][k].abs().total_cmp(&a[j][k].abs())).unwrap_or(k);
-        a.swap(k, p);
-        b.swap(k, p);
-        for i in k + 1..5 {
-            let f = a[i][k] / a[k][k];
-            for j in k..5 {
-                a[i][j] -= f * a[k][j];
-            }
-            b[i] -= f * b[k];
-        }
-    }
-    let mut x = [0.0; 5];
-    for k in (0..5).rev() {
-        let s: f64 = (k + 1..5).map(|j| a[k][j] * x[j]).sum();
-        x[k] = (b[k] - s) / a[k][k];
-    }
-    x
+    let s: Vec<f64> = t.iter().map(|t| (2.0 * t - t0 - t1) / (t1 - t0)).collect();
+    let columns = [
+        vec![1.0; t.len()],
+        s.clone(),
+        s.iter().map(|s| s * s).collect(),
+        t.iter().map(|t| (omega * t).sin()).collect(),
+        t.iter().map(|t| (omega * t).cos()).collect(),
+    ];
+    let (coef, _) = least_squares(&columns, v)?;
+    let sq: f64 = (0..t.len()).map(|k| (v[k] - columns.iter().zip(&coef).map(|(c, b)| c[k] * b).sum::<f64>()).powi(2)).sum();
+    Some((coef[3], coef[4], (sq / t.len() as f64).sqrt()))
 }
 
 #[cfg(test)]
@@ -169,7 +134,7 @@ mod tests {
         let omega = 2.0 * std::f64::consts::PI * 0.3;
         let t: Vec<f64> = (0..300).map(|k| 10.0 + k as f64 * 0.02).collect();
         let v: Vec<f64> = t.iter().map(|&t| 3.7 - 1e-3 * t + 2e-5 * t * t + 0.3 * (omega * t).sin() - 0.1 * (omega * t).cos()).collect();
-        let (a, b, r) = super::fit_sinusoid(&t, &v, omega);
+        let (a, b, r) = super::fit_sinusoid(&t, &v, omega).unwrap();
         assert!((a - 0.3).abs() < 1e-10 && (b + 0.1).abs() < 1e-10 && r < 1e-10, "{a} {b} {r}");
     }
 }

@@ -1,12 +1,8 @@
-//! Meshes and discretised operators built from the cell geometry, and the builder that keeps
-//! the last build and rebuilds only when a geometric parameter changes.
+//! Meshes and discretised operators built from the cell geometry (the model builder that
+//! rebuilds only when the geometry changes is `models::builder`).
 
-pub mod builder;
 pub mod mesh;
-pub mod pool;
 
-pub use builder::ModelBuilder;
-pub use pool::BuilderPool;
 pub use mesh::{Mesh1D, SphereMesh};
 
 use serde::{Deserialize, Serialize};

@@ -1,6 +1,7 @@
 //! Battery models sharing one state/output interface: SPM, SPMe, DFN and a Thevenin ECM,
 //! with switchable submodels (contact resistance, lumped thermal).
 
+pub mod builder;
 pub mod dfn;
 pub mod ecm;
 
@@ -8,14 +9,17 @@ pub mod electrochem;
 pub mod electrolyte;
 pub mod fields;
 pub mod kinetics;
+pub mod pool;
 pub mod spm;
 pub mod spme;
 pub mod submodels;
 
 use serde::{Deserialize, Serialize};
 
+pub use builder::ModelBuilder;
 pub use electrochem::Electrochem;
 pub use fields::Field;
+pub use pool::BuilderPool;
 
 use crate::params::ParameterSet;
 

@@ -1,7 +1,7 @@
 //! CMA-ES (Hansen, "The CMA Evolution Strategy: A Tutorial", 2016), (μ/μ_w, λ) with
 //! cumulative step-size adaptation and rank-one + rank-μ covariance updates.
 
-use super::linalg::{mat_t_vec, mat_vec, sym_eigen};
+use crate::linalg::{mat_t_vec, mat_vec, sym_eigen};
 use super::run::{Run, history_flat, normal, penalised_ranking};
 use super::{Observer, OptimOptions, OptimResult, Optimiser, Problem, StopReason};
 use crate::error::Result;
@@ -54,7 +54,7 @@ impl Optimiser for CmaEs {
         let mut mean = c0.u.clone();
         // Step size σ in normalised units.
         let mut sigma = self.options.sigma0;
-        let mut cov = super::linalg::identity(n);
+        let mut cov = crate::linalg::identity(n);
         let mut pc = vec![0.0; n];
         let mut ps = vec![0.0; n];
         let mut history = Vec::new();

@@ -37,9 +37,9 @@ mod cuckoo;
 mod differential_evolution;
 mod gradient_descent;
 mod irprop;
-mod lbfgsb;
-pub(crate) mod linalg;
+mod projected_lbfgs;
 mod nelder_mead;
+pub mod nsga2;
 pub mod problem;
 pub mod progress;
 pub mod projection;
@@ -59,7 +59,7 @@ pub use cuckoo::CuckooSearch;
 pub use differential_evolution::DifferentialEvolution;
 pub use gradient_descent::GradientDescent;
 pub use irprop::IRpropMinus;
-pub use lbfgsb::LbfgsB;
+pub use projected_lbfgs::ProjectedLbfgs;
 pub use nelder_mead::NelderMead;
 pub use problem::{Bounds, Problem, Transform};
 pub use progress::ProgressObserver;
@@ -341,7 +341,7 @@ pub fn by_name(name: &str, options: OptimOptions) -> Result<Box<dyn Optimiser>> 
         "gradient-descent" | "gd" => Box::new(GradientDescent::new(options)?),
         "adamw" | "adam" => Box::new(AdamW::new(options)?),
         "irprop-" | "irprop" | "irprop-minus" => Box::new(IRpropMinus::new(options)?),
-        "lbfgsb" | "l-bfgs-b" | "lbfgs" | "l-bfgs" => Box::new(LbfgsB::new(options)?),
+        "lbfgsb" | "l-bfgs-b" | "lbfgs" | "l-bfgs" => Box::new(ProjectedLbfgs::new(options)?),
         _ => {
             return Err(setting(
                 "optimiser",

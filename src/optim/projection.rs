@@ -6,6 +6,7 @@ use clarabel::solver::{DefaultSettings, DefaultSolver, IPSolver, SolverStatus, S
 use serde::{Deserialize, Serialize};
 
 use super::Bounds;
+use crate::linalg::dot;
 use crate::error::{Error, Result};
 
 /// Linear constraints in model space: `a·x = b` (equalities) and `a·x <= b` (inequalities).
@@ -27,10 +28,6 @@ pub struct LinearConstraints {
     pub equalities: Vec<(Vec<f64>, f64)>,
     /// `(a, b)` meaning `a·x <= b`.
     pub inequalities: Vec<(Vec<f64>, f64)>,
-}
-
-fn dot(a: &[f64], x: &[f64]) -> f64 {
-    a.iter().zip(x).map(|(a, x)| a * x).sum()
 }
 
 fn constraint_error(reason: String) -> Error {

@@ -1,7 +1,7 @@
 //! Exponential natural evolution strategy (Glasmachers, Schaul, Sun, Wierstra and
 //! Schmidhuber, "Exponential natural evolution strategies", GECCO 2010).
 
-use super::linalg::{expm_sym, identity, mat_mul, mat_vec, sym_eigen};
+use crate::linalg::{expm_sym, identity, mat_mul, mat_vec, sym_eigen};
 use super::run::{Run, history_flat, nes_utilities, normal, penalised_ranking};
 use super::{Observer, OptimOptions, OptimResult, Optimiser, Problem, StopReason};
 use crate::error::Result;

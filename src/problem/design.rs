@@ -5,7 +5,8 @@
 use serde::{Deserialize, Serialize};
 
 use crate::error::Error;
-use crate::geometry::{BuilderPool, MeshSizes, ModelBuilder};
+use crate::geometry::MeshSizes;
+use crate::models::{BuilderPool, ModelBuilder};
 use crate::models::{ModelKind, Submodels};
 use crate::params::{CellFormat, MassBasis, MassConvention, ParameterSet};
 use crate::protocol::{Protocol, Step};

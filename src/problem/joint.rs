@@ -8,7 +8,7 @@
 use rayon::prelude::*;
 use serde::Serialize;
 
-use super::fit::{FitObjective, FitResult, Identifiability, minimise, weighted_rms};
+use super::identification::{FitObjective, FitResult, Identifiability, minimise, weighted_rms};
 use super::fitting::{FitParameter, FittingProblem};
 use crate::cost::CostKind;
 use crate::error::Error;
@@ -242,7 +242,7 @@ struct Block {
 /// inverse noise variances: `A⁻¹ B A⁻¹` with `A = Σ w_e J_eᵀJ_e` and
 /// `B = Σ w_e² s_e² J_eᵀJ_e`, `s_e²` each experiment's residual variance (over `N - P`
 /// degrees of freedom in all). With one weight for all it is `s² A⁻¹`, the single-experiment
-/// [`super::fit::identifiability`]. Parameters along a direction the data do not inform
+/// [`super::identification::identifiability`]. Parameters along a direction the data do not inform
 /// (eigenvalue of `A` below 1e-12 of the largest) get an infinite error.
 fn sandwich_covariance(blocks: &[Block], scale: &[f64]) -> Result<Identifiability, Error> {
     let p = scale.len();
@@ -266,7 +266,7 @@ fn sandwich_covariance(blocks: &[Block], scale: &[f64]) -> Result<Identifiabilit
         }
     }
     let rmse = (sse / weight).sqrt();
-    let (values, vectors) = crate::optim::linalg::sym_eigen(&a, p)?;
+    let (values, vectors) = crate::linalg::sym_eigen(&a, p)?;
     let largest = values.iter().fold(0.0f64, |m, v| m.max(*v));
     let informed: Vec<bool> = values.iter().map(|v| *v > 1e-12 * largest).collect();
     let mut pinv = vec![0.0; p * p];
@@ -297,7 +297,7 @@ mod tests {
         let r: Vec<f64> = (0..50).map(|k| 1e-3 * ((k as f64 * 1.7).cos())).collect();
         let w = vec![1.0; 50];
         let scale = [2.0, 0.5, 1e-3];
-        let plain = super::super::fit::covariance(&r, &w, rows.iter().map(Vec::as_slice), &scale).unwrap();
+        let plain = super::super::identification::covariance(&r, &w, rows.iter().map(Vec::as_slice), &scale).unwrap();
         let blocks = [Block { weight: 1.0, residuals: r.clone(), point_weights: w.clone(), rows: rows.clone() }];
         let s = sandwich_covariance(&blocks, &scale).unwrap();
         for k in 0..3 {

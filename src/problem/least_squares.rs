@@ -17,7 +17,7 @@ use serde::Serialize;
 
 use super::fitting::{FitParameter, FittingProblem};
 use crate::error::Error;
-use crate::optim::linalg::sym_eigen;
+use crate::linalg::sym_eigen;
 use crate::stats::lag1;
 
 /// Settings of a least-squares fit.

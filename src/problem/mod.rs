@@ -3,8 +3,8 @@
 pub mod bracket;
 pub mod design;
 pub mod fast_charge;
-pub mod fit;
 pub mod fitting;
+pub mod identification;
 pub mod joint;
 pub mod least_squares;
 pub mod posterior;

@@ -1,7 +1,7 @@
 //! The Bayesian posterior of a fitting problem as a log-density for the samplers: Gaussian
 //! likelihood of the residuals, the parameters' priors, and their bounds.
 
-use super::fit::{FitObjective, SIGMA_BOUNDS};
+use super::identification::{FitObjective, SIGMA_BOUNDS};
 use super::fitting::FittingProblem;
 use crate::cost::CostKind;
 use crate::sample::LogDensity;

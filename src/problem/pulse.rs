@@ -7,7 +7,7 @@
 use serde::{Deserialize, Serialize};
 
 use crate::error::Error;
-use crate::geometry::ModelBuilder;
+use crate::models::ModelBuilder;
 use crate::params::{ParameterSet, StoichiometryWindow};
 use crate::protocol::{Protocol, Step};
 use crate::simulation::{SimOptions, simulate};

@@ -65,7 +65,7 @@ pub fn sloppiest(names: &[String], x: &[f64], se: &[f64], rho: &[Vec<f64>]) -> O
         return Some((vec![(names[k].clone(), 1.0)], f64::INFINITY));
     }
     let cov: Vec<f64> = (0..p * p).map(|i| rho[i / p][i % p] * rel[i / p] * rel[i % p]).collect();
-    let (values, vectors) = crate::optim::linalg::sym_eigen(&cov, p).ok()?;
+    let (values, vectors) = crate::linalg::sym_eigen(&cov, p).ok()?;
     let top = (0..p).max_by(|&a, &b| values[a].total_cmp(&values[b]))?;
     let mut parts: Vec<(String, f64)> = (0..p).map(|a| (names[a].clone(), vectors[a * p + top])).filter(|(_, v)| v.abs() > 0.1).collect();
     // Sign: the largest component positive.

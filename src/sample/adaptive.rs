@@ -10,32 +10,14 @@ use super::target::Counted;
 use super::{Chain, LogDensity, Progress, ChainSampler, SamplerOptions, Schedule};
 use crate::error::Result;
 
-/// Lower Cholesky factor of the symmetric `n×n` matrix `a` (row-major), with a diagonal
+/// Lower Cholesky factor (row-major) of the symmetric `n×n` matrix `a`, with a diagonal
 /// jitter grown from `1e-12·max diag` until the factorisation succeeds.
 fn cholesky(a: &[f64], n: usize) -> Vec<f64> {
     let max_diag = (0..n).map(|i| a[i * n + i].abs()).fold(f64::MIN_POSITIVE, f64::max);
     let mut jitter = 0.0;
     loop {
-        let mut l = vec![0.0; n * n];
-        let mut ok = true;
-        'rows: for i in 0..n {
-            for j in 0..=i {
-                let mut s = a[i * n + j] + if i == j { jitter } else { 0.0 };
-                for k in 0..j {
-                    s -= l[i * n + k] * l[j * n + k];
-                }
-                if i == j {
-                    if !(s > 0.0) {
-                        ok = false;
-                        break 'rows;
-                    }
-                    l[i * n + i] = s.sqrt();
-                } else {
-                    l[i * n + j] = s / l[j * n + j];
-                }
-            }
-        }
-        if ok {
+        let shifted: Vec<f64> = (0..n * n).map(|k| a[k] + if k % (n + 1) == 0 { jitter } else { 0.0 }).collect();
+        if let Some(l) = crate::linalg::cholesky(&shifted, n) {
             return l;
         }
         jitter = if jitter == 0.0 { 1e-12 * max_diag } else { jitter * 10.0 };

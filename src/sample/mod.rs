@@ -36,7 +36,6 @@
 
 mod adaptive;
 mod de_mc;
-pub mod diagnostics;
 mod hamiltonian;
 mod hmc;
 mod mala;

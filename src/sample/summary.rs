@@ -5,7 +5,8 @@ use std::fmt;
 use serde::{Deserialize, Serialize};
 
 use super::SampleResult;
-use super::diagnostics::{effective_sample_size, quantile, rank_normalised_rhat, split_rhat};
+use crate::stats::convergence::{effective_sample_size, rank_normalised_rhat, split_rhat};
+use crate::stats::quantile;
 
 /// Summary of the kept draws of one parameter, pooled over chains.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]

@@ -252,7 +252,7 @@ fn write_outputs(study: &Study, problem: &DesignProblem, out: &mut DesignOutcome
     let mut curves = Vec::new();
     for (label, x) in [("initial", &out.initial_x), ("optimised", &out.result.x)] {
         let p = problem.parameters(x)?;
-        let mut builder = crate::geometry::ModelBuilder::new(problem.kind, problem.submodels, problem.mesh);
+        let mut builder = crate::models::ModelBuilder::new(problem.kind, problem.submodels, problem.mesh);
         let built = builder.build(&p)?;
         let sol = simulate(built.model.as_ref(), &mut built.workspace, &problem.protocol(&p), &SimOptions::for_cell(&p), None)?;
         curves.push((label.to_string(), sol.capacity, sol.voltage));

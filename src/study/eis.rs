@@ -19,9 +19,8 @@ pub struct EisRun {
     pub soc: f64,
     /// Frequency range (Hz) and points of the model spectrum when no data are given.
     pub frequencies: (f64, f64, usize),
-    /// Measured spectrum to fit, and the dotted parameters to fit (searched on a log scale
-    /// between a tenth and ten times the parameter set's values).
-    pub fit: Option<(PathBuf, Vec<String>)>,
+    /// Measured spectrum to fit, when fitting.
+    pub fit: Option<EisFitRequest>,
     pub optimiser: String,
     pub out: PathBuf,
     /// Other files the run reads (the parameter set), which no output may overwrite.
@@ -60,11 +59,31 @@ pub fn frequency_grid(values: &[f64]) -> Result<(f64, f64, usize), Error> {
     Ok((f0, f1, n as usize))
 }
 
+/// A measured spectrum and the parameters to fit to it.
+pub struct EisFitRequest {
+    /// The measured spectrum (CSV).
+    pub data: PathBuf,
+    /// Dotted parameter paths, searched on a log scale between a tenth and ten times the
+    /// parameter set's values.
+    pub parameters: Vec<String>,
+}
+
+/// The fitted parameters of an `eis` run.
+pub struct EisFitted {
+    /// Dotted parameter paths and their fitted values (SI).
+    pub names: Vec<String>,
+    pub values: Vec<f64>,
+    /// The optimiser's result (cost, evaluations, stop reason).
+    pub result: OptimResult,
+    /// Wall time of the fit (s).
+    pub seconds: f64,
+}
+
 /// What an `eis` run produced.
 pub struct EisOutcome {
     pub spectrum: Spectrum,
     /// Fitted values with the optimiser's result, when fitting.
-    pub fit: Option<(Vec<String>, Vec<f64>, OptimResult, f64)>,
+    pub fit: Option<EisFitted>,
     pub files: Vec<PathBuf>,
     /// A fit cut short by its evaluation cap.
     pub warnings: Vec<String>,
@@ -75,7 +94,7 @@ pub fn run_eis(run: &EisRun) -> Result<EisOutcome, Error> {
     set_initial_soc(&mut base, run.soc)?;
     let (f0, f1, n) = run.frequencies;
     let dense = log_frequencies(f0, f1, n)?;
-    let inputs: Vec<&std::path::Path> = run.inputs.iter().map(|p| p.as_path()).chain(run.fit.as_ref().map(|f| f.0.as_path())).collect();
+    let inputs: Vec<&std::path::Path> = run.inputs.iter().map(|p| p.as_path()).chain(run.fit.as_ref().map(|f| f.data.as_path())).collect();
     let out = crate::output::OutputDir::create(&run.out, &inputs)?;
     let spectrum_of = |variables: &[String], x: &[f64]| -> Result<Spectrum, Error> {
         let probe = Spectrum::new(dense.clone(), vec![1.0; dense.len()], vec![0.0; dense.len()])?;
@@ -91,7 +110,7 @@ pub fn run_eis(run: &EisRun) -> Result<EisOutcome, Error> {
             nyquist_plot(&nyquist, &title, None, &[("model", &s)])?;
             (s, None)
         }
-        Some((data_path, variables)) => {
+        Some(EisFitRequest { data: data_path, parameters: variables }) => {
             let data = Spectrum::from_csv(data_path)?;
             // Two numbers (real, imaginary) per frequency; a fit needs more than it has unknowns.
             if data.len() <= variables.len() {
@@ -125,7 +144,7 @@ pub fn run_eis(run: &EisRun) -> Result<EisOutcome, Error> {
             warnings.extend(super::truncation_warning("the impedance fit", &result.stop, result.iterations, result.evaluations));
             let (initial, fitted) = (spectrum_of(variables, &x0)?, spectrum_of(variables, &result.x)?);
             nyquist_plot(&nyquist, &title, Some(("data", &data)), &[("initial", &initial), ("fitted", &fitted)])?;
-            (fitted, Some((variables.clone(), result.x.clone(), result, seconds)))
+            (fitted, Some(EisFitted { names: variables.clone(), values: result.x.clone(), result, seconds }))
         }
     };
     files.push(nyquist);

@@ -15,7 +15,7 @@ use crate::cost::CostKind;
 use crate::data::Recording;
 use crate::error::Error;
 use crate::optim::OptimOptions;
-use crate::problem::fit::{FitResult, fit};
+use crate::problem::identification::{FitResult, fit};
 use crate::problem::fitting::{FitParameter, FittingProblem, INITIAL_SOC, ModelSpec};
 use crate::report::plot::{Series, line_plot};
 
@@ -280,23 +280,6 @@ pub struct FitOutcome {
     pub rejection: Option<Error>,
 }
 
-/// Fits the study's problem, then writes `report.md`, `fit.json`, `fit_voltage.svg`,
-/// `fit_residual.svg` and (with `[landscape]`) `landscape.svg`. A fit with a parameter on a
-/// bound is no estimate: its files go to `NAME.rejected` beside the output folder, whose
-/// previous results stay, and [`FitOutcome::rejection`] says so.
-pub fn run_fit(study: &FitStudy, data: Option<&Path>) -> Result<FitOutcome, Error> {
-    let out = crate::output::OutputDir::create(&study.output.dir, &study.inputs(data))?;
-    let mut outcome = fit_into(study, data, out.path())?;
-    match on_bound_rejection(&outcome.at_bound, "", &out) {
-        None => outcome.files = out.commit(&outcome.files)?,
-        Some(rejection) => {
-            outcome.rejection = Some(rejection);
-            outcome.files = out.reject(&outcome.files)?;
-        }
-    }
-    Ok(outcome)
-}
-
 /// The error a run exits with when its fit ended with parameters on a bound of their search
 /// range (`None` when none did): it names each parameter and its bound, and the `NAME.rejected`
 /// folder of `out` its outputs go to (the caller moves them there with
@@ -320,15 +303,12 @@ pub(crate) fn on_bound_rejection(at_bound: &[super::OnBound], then: &str, out: &
 /// Fewest residual degrees of freedom (points less fitted parameters) without a warning.
 const MIN_DEGREES_OF_FREEDOM: usize = 10;
 
-/// [`run_fit`] writing into `dir` (a staged output folder).
-pub(crate) fn fit_into(study: &FitStudy, data: Option<&Path>, dir: &Path) -> Result<FitOutcome, Error> {
-    if study.is_joint() {
-        return super::joint_fit::joint_fit_into(study, data, dir);
-    }
+/// The fit of a study with one recording, writing into `dir` (a staged output folder).
+pub(crate) fn single_fit_into(study: &FitStudy, data: Option<&Path>, dir: &Path) -> Result<FitOutcome, Error> {
     let (problem, checks) = study.problem_and_notes(data)?;
     let (method, options) = study.optimiser()?;
     let initial_voltage = problem.simulate(&problem.initial())?;
-    let initial_rmse = crate::problem::fit::weighted_rms(&problem.residuals(&initial_voltage), &problem.weights);
+    let initial_rmse = crate::problem::identification::weighted_rms(&problem.residuals(&initial_voltage), &problem.weights);
     let result = fit(&problem, study.cost, &method, options)?;
     let notes: Vec<String> = study.noise_note(data).into_iter().chain(checks).collect();
     let names: Vec<String> = problem.parameters.iter().map(|p| p.path.clone()).collect();

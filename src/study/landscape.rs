@@ -9,7 +9,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::cost::CostKind;
 use crate::error::Error;
-use crate::problem::fit::{FitObjective, FitResult};
+use crate::problem::identification::{FitObjective, FitResult};
 use crate::problem::fitting::FittingProblem;
 use crate::report::plot::{Overlay, heat_map};
 

@@ -8,6 +8,7 @@ pub mod design;
 pub mod eis;
 pub mod fit;
 mod fit_data;
+pub mod fit_run;
 pub mod joint_fit;
 pub mod landscape;
 pub mod limits;

@@ -10,7 +10,8 @@ use super::Study;
 use crate::error::Error;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-use crate::pareto::{Individual, Nsga2Options, nsga2_repaired};
+use crate::optim::Bounds;
+use crate::optim::nsga2::{Individual, Nsga2Options, nsga2};
 use crate::report::plot::scatter_plot;
 
 /// What a Pareto search produced.
@@ -70,8 +71,7 @@ pub fn run_pareto(study: &Study) -> Result<ParetoOutcome, Error> {
     let problem = study.problem()?;
     let feasibility = super::constraints::Feasibility::of(study)?;
     let out = study.output_dir()?;
-    let lower: Vec<f64> = study.variables.iter().map(|v| v.lower).collect();
-    let upper: Vec<f64> = study.variables.iter().map(|v| v.upper).collect();
+    let bounds = Bounds::new(study.variables.iter().map(|v| v.lower).collect(), study.variables.iter().map(|v| v.upper).collect())?;
     let min_u = study.operating.min_utilisation();
     let (failed, early, repaired, outside) = (AtomicUsize::new(0), AtomicUsize::new(0), AtomicUsize::new(0), AtomicUsize::new(0));
     // Objectives of the designs that stopped early, for the plot only.
@@ -106,7 +106,7 @@ pub fn run_pareto(study: &Study) -> Result<ParetoOutcome, Error> {
     let baseline_m = problem.evaluate(&study.baseline()?)?;
     let baseline: Vec<f64> = metrics.iter().map(|&k| baseline_m.get(k)).collect();
     let bar = indicatif::ProgressBar::new(opts.generations as u64);
-    let (front, archive) = nsga2_repaired(&lower, &upper, &opts, &evaluate, &repair, &mut |g| bar.set_position(g as u64));
+    let (front, archive) = nsga2(&bounds, &opts, &evaluate, &repair, &mut |g| bar.set_position(g as u64));
     bar.finish_and_clear();
     let seconds = start.elapsed().as_secs_f64();
 

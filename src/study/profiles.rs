@@ -9,7 +9,7 @@ use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 use crate::error::Error;
-use crate::problem::fit::FitResult;
+use crate::problem::identification::FitResult;
 use crate::problem::fitting::FittingProblem;
 use crate::problem::profile::{CHI2_95_ONE_DOF, Profile, profile};
 use crate::report::plot::{Series, line_plot};

@@ -11,7 +11,8 @@ use std::path::{Path, PathBuf};
 use rand::SeedableRng;
 use rand_distr::{Distribution, Normal};
 
-use super::fit::{FitStudy, fit_into};
+use super::fit::FitStudy;
+use super::fit_run::fit_into;
 use crate::cost::CostKind;
 use crate::error::Error;
 use crate::problem::posterior::Posterior;

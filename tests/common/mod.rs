@@ -2,7 +2,8 @@
 #![allow(dead_code)]
 
 use cellstudio::data::Recording;
-use cellstudio::geometry::{MeshSizes, ModelBuilder};
+use cellstudio::geometry::MeshSizes;
+use cellstudio::models::ModelBuilder;
 use cellstudio::models::{ModelKind, Submodels};
 use cellstudio::params::ParameterSet;
 use cellstudio::protocol::Protocol;

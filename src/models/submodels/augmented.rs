@@ -171,7 +171,8 @@ impl PhysicsModel for Augmented {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::{MeshSizes, ModelBuilder};
+    use crate::geometry::MeshSizes;
+    use crate::models::ModelBuilder;
     use crate::models::ModelKind;
     use crate::protocol::{Protocol, Step};
     use crate::simulation::{SimOptions, simulate};

@@ -6,6 +6,7 @@ use std::collections::VecDeque;
 use super::gradient_descent::{LineSearch, projected_line_search, require_finite_start};
 use super::run::{Run, max_abs_diff, projected_gradient};
 use super::{Observer, OptimOptions, OptimResult, Optimiser, Problem, StopReason};
+use crate::linalg::dot;
 use crate::error::{Error, Result};
 
 /// Projected L-BFGS.
@@ -21,22 +22,22 @@ use crate::error::{Error, Result};
 /// when a step changes `u` by at most `x_tolerance` and `f` by at most `f_tolerance`, or
 /// when the projected gradient vanishes. Deterministic.
 #[derive(Clone, Debug)]
-pub struct LbfgsB {
+pub struct ProjectedLbfgs {
     options: OptimOptions,
     memory: usize,
 }
 
-impl LbfgsB {
+impl ProjectedLbfgs {
     pub fn new(options: OptimOptions) -> Result<Self> {
         options.validate()?;
-        Ok(LbfgsB { options, memory: 10 })
+        Ok(ProjectedLbfgs { options, memory: 10 })
     }
 
     /// Number of correction pairs kept (>= 1, default 10).
     ///
     /// ```
-    /// use cellstudio::optim::{LbfgsB, OptimOptions};
-    /// let err = LbfgsB::new(OptimOptions::default()).unwrap().with_memory(0).unwrap_err();
+    /// use cellstudio::optim::{ProjectedLbfgs, OptimOptions};
+    /// let err = ProjectedLbfgs::new(OptimOptions::default()).unwrap().with_memory(0).unwrap_err();
     /// assert_eq!(err.to_string(), "invalid setting `memory`: must be at least 1");
     /// ```
     pub fn with_memory(mut self, m: usize) -> Result<Self> {
@@ -46,10 +47,6 @@ impl LbfgsB {
         self.memory = m;
         Ok(self)
     }
-}
-
-fn dot(a: &[f64], b: &[f64]) -> f64 {
-    a.iter().zip(b).map(|(a, b)| a * b).sum()
 }
 
 /// `H·q` by the L-BFGS two-loop recursion, `H₀ = γ·I` with `γ = sᵀy / yᵀy` of the newest pair.
@@ -79,7 +76,7 @@ fn two_loop(memory: &VecDeque<(Vec<f64>, Vec<f64>)>, q: &[f64]) -> Vec<f64> {
     q
 }
 
-impl Optimiser for LbfgsB {
+impl Optimiser for ProjectedLbfgs {
     fn name(&self) -> &str {
         "lbfgsb"
     }

@@ -1,13 +1,13 @@
 //! The geometry-aware model builder: keeps the last build (mesh, operators, Jacobian
 //! colouring, symbolic LU) and rebuilds only when a geometric parameter changes.
 
-use super::{Discretisation, Geometry, MeshSizes};
+use crate::geometry::{Discretisation, Geometry, MeshSizes};
 use crate::error::Error;
-use crate::models::dfn::Dfn;
-use crate::models::spm::Spm;
-use crate::models::spme::Spme;
-use crate::models::submodels::Augmented;
-use crate::models::{Electrochem, ModelKind, PhysicsModel, Submodels};
+use super::dfn::Dfn;
+use super::spm::Spm;
+use super::spme::Spme;
+use super::submodels::Augmented;
+use super::{Electrochem, ModelKind, PhysicsModel, Submodels};
 use crate::params::ParameterSet;
 use crate::solver::Workspace;
 

@@ -3,7 +3,7 @@
 
 use std::sync::Mutex;
 
-use super::ModelBuilder;
+use super::builder::ModelBuilder;
 
 /// A pool of model builders, one per concurrent evaluation.
 #[derive(Default)]

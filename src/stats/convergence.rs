@@ -1,9 +1,9 @@
-//! Convergence diagnostics: split R-hat and effective sample size over several chains
-//! (Gelman et al., Bayesian Data Analysis 3rd ed., section 11.4-11.5; the estimators of Stan),
-//! and sample quantiles.
+//! Convergence diagnostics of Markov chains: split R-hat and effective sample size over
+//! several chains (Gelman et al., Bayesian Data Analysis 3rd ed., section 11.4-11.5; the
+//! estimators of Stan).
 //!
 //! ```
-//! use cellstudio::sample::diagnostics::{effective_sample_size, split_rhat};
+//! use cellstudio::stats::convergence::{effective_sample_size, split_rhat};
 //! // Two chains stuck in different places: R-hat far above 1.
 //! let stuck = vec![vec![0.0, 0.1, 0.0, 0.1, 0.0, 0.1], vec![5.0, 5.1, 5.0, 5.1, 5.0, 5.1]];
 //! assert!(split_rhat(&stuck) > 5.0);
@@ -25,16 +25,8 @@ fn split(chains: &[Vec<f64>]) -> Vec<&[f64]> {
         .collect()
 }
 
-use crate::stats::mean;
-
-/// Unbiased sample variance (0 for fewer than two values).
-fn variance(x: &[f64]) -> f64 {
-    if x.len() < 2 {
-        return 0.0;
-    }
-    let m = mean(x);
-    x.iter().map(|v| (v - m) * (v - m)).sum::<f64>() / (x.len() - 1) as f64
-}
+use super::descriptive::{mean, quantile, variance};
+use super::distributions::normal_quantile;
 
 /// Within-chain variance `W` and the pooled estimate `var⁺ = (n-1)/n·W + B/n` of equally long
 /// chains (the shortest length is used).
@@ -60,28 +52,6 @@ pub fn split_rhat(chains: &[Vec<f64>]) -> f64 {
         return if var_plus == 0.0 { 1.0 } else { f64::NAN };
     }
     (var_plus / w).sqrt()
-}
-
-/// Inverse of the standard normal distribution function, `Φ⁻¹(p)` for `p` in (0, 1)
-/// (Acklam's rational approximation, relative error below 1.2e-9).
-fn normal_quantile(p: f64) -> f64 {
-    const A: [f64; 6] = [-3.969683028665376e1, 2.209460984245205e2, -2.759285104469687e2, 1.38357751867269e2, -3.066479806614716e1, 2.506628277459239];
-    const B: [f64; 5] = [-5.447609879822406e1, 1.615858368580409e2, -1.556989798598866e2, 6.680131188771972e1, -1.328068155288572e1];
-    const C: [f64; 6] = [-7.784894002430293e-3, -3.223964580411365e-1, -2.400758277161838, -2.549732539343734, 4.374664141464968, 2.938163982698783];
-    const D: [f64; 4] = [7.784695709041462e-3, 3.224671290700398e-1, 2.445134137142996, 3.754408661907416];
-    let tail = |q: f64| {
-        (((((C[0] * q + C[1]) * q + C[2]) * q + C[3]) * q + C[4]) * q + C[5]) / ((((D[0] * q + D[1]) * q + D[2]) * q + D[3]) * q + 1.0)
-    };
-    if p < 0.02425 {
-        tail((-2.0 * p.ln()).sqrt())
-    } else if p > 1.0 - 0.02425 {
-        -tail((-2.0 * (1.0 - p).ln()).sqrt())
-    } else {
-        let q = p - 0.5;
-        let r = q * q;
-        (((((A[0] * r + A[1]) * r + A[2]) * r + A[3]) * r + A[4]) * r + A[5]) * q
-            / (((((B[0] * r + B[1]) * r + B[2]) * r + B[3]) * r + B[4]) * r + 1.0)
-    }
 }
 
 /// Rank normalisation over all chains: each draw becomes `Φ⁻¹((r - 3/8) / (S + 1/4))`, `r` its
@@ -172,18 +142,6 @@ pub fn effective_sample_size(chains: &[Vec<f64>]) -> f64 {
     total / tau
 }
 
-/// Quantile `q` in [0, 1] of `sorted` (ascending) by linear interpolation between order
-/// statistics (Hyndman & Fan type 7, the default of R and NumPy); `NaN` when empty.
-pub fn quantile(sorted: &[f64], q: f64) -> f64 {
-    if sorted.is_empty() {
-        return f64::NAN;
-    }
-    let h = (sorted.len() - 1) as f64 * q.clamp(0.0, 1.0);
-    let lo = h.floor() as usize;
-    let hi = (lo + 1).min(sorted.len() - 1);
-    sorted[lo] + (h - lo as f64) * (sorted[hi] - sorted[lo])
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -229,20 +187,4 @@ mod tests {
         assert!(rank_normalised_rhat(&same) < 1.01);
     }
 
-    #[test]
-    fn normal_quantiles() {
-        // Φ⁻¹ at tabulated points.
-        for (p, z) in [(0.5, 0.0), (0.975, 1.959_963_984_540_054), (0.001, -3.090_232_306_167_813_5), (0.9999, 3.719_016_485_455_709)] {
-            assert!((normal_quantile(p) - z).abs() < 1e-8 * (1.0 + z.abs()), "{p}: {}", normal_quantile(p));
-        }
-    }
-
-    #[test]
-    fn quantiles_type_7() {
-        let x = [1.0, 2.0, 3.0, 4.0];
-        assert_eq!(quantile(&x, 0.5), 2.5);
-        assert_eq!(quantile(&x, 0.0), 1.0);
-        assert_eq!(quantile(&x, 1.0), 4.0);
-        assert!((quantile(&x, 0.025) - 1.075).abs() < 1e-12);
-    }
 }

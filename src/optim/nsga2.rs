@@ -7,6 +7,8 @@ use rand::{Rng, SeedableRng};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
+use super::Bounds;
+
 /// NSGA-II settings.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
@@ -28,7 +30,7 @@ impl Nsga2Options {
     /// positive distribution indices; errors name the `[optimiser]` key.
     ///
     /// ```
-    /// use cellstudio::pareto::Nsga2Options;
+    /// use cellstudio::optim::nsga2::Nsga2Options;
     /// let e = Nsga2Options { generations: 0, ..Default::default() }.validate().unwrap_err();
     /// assert!(e.to_string().contains("optimiser.generations"), "{e}");
     /// ```
@@ -122,29 +124,19 @@ fn crowding(front: &[usize], f: &[Vec<f64>]) -> Vec<f64> {
     d
 }
 
-/// Runs NSGA-II on `evaluate` (objectives to maximise) within the box `[lower, upper]`,
-/// calling `progress(generation)` after each generation; returns the final population's
-/// first front and every individual evaluated.
+/// Runs NSGA-II on `evaluate` (objectives to maximise) within `bounds`, every candidate
+/// (initial or child) passed through `repair` before it is evaluated and stored (e.g. a
+/// projection onto linear constraints; `|x| x.to_vec()` for none), calling
+/// `progress(generation)` after each generation; returns the final population's first front
+/// and every individual evaluated.
 pub fn nsga2(
-    lower: &[f64],
-    upper: &[f64],
-    opts: &Nsga2Options,
-    evaluate: &(dyn Fn(&[f64]) -> Vec<f64> + Sync),
-    progress: &mut dyn FnMut(usize),
-) -> (Vec<Individual>, Vec<Individual>) {
-    nsga2_repaired(lower, upper, opts, evaluate, &|x: &[f64]| x.to_vec(), progress)
-}
-
-/// [`nsga2`] with every candidate (initial or child) passed through `repair` before it is
-/// evaluated and stored, e.g. a projection onto linear constraints.
-pub fn nsga2_repaired(
-    lower: &[f64],
-    upper: &[f64],
+    bounds: &Bounds,
     opts: &Nsga2Options,
     evaluate: &(dyn Fn(&[f64]) -> Vec<f64> + Sync),
     repair: &(dyn Fn(&[f64]) -> Vec<f64> + Sync),
     progress: &mut dyn FnMut(usize),
 ) -> (Vec<Individual>, Vec<Individual>) {
+    let (lower, upper) = (bounds.lower(), bounds.upper());
     let dim = lower.len();
     let pop_size = opts.population.max(4) & !1; // validated by Nsga2Options::validate in studies
     let mut rng = StdRng::seed_from_u64(opts.seed);
@@ -247,7 +239,7 @@ mod tests {
     fn finds_schaffer_pareto_set() {
         let eval = |x: &[f64]| vec![-x[0] * x[0], -(x[0] - 2.0) * (x[0] - 2.0)];
         let opts = Nsga2Options { population: 40, generations: 30, ..Default::default() };
-        let (front, _) = nsga2(&[-10.0], &[10.0], &opts, &eval, &mut |_| {});
+        let (front, _) = nsga2(&Bounds::new(vec![-10.0], vec![10.0]).unwrap(), &opts, &eval, &|x: &[f64]| x.to_vec(), &mut |_| {});
         assert!(front.len() >= 10);
         for ind in &front {
             assert!((-0.05..=2.05).contains(&ind.x[0]), "{}", ind.x[0]);
@@ -256,7 +248,7 @@ mod tests {
             - front.iter().map(|i| i.x[0]).fold(f64::INFINITY, f64::min);
         assert!(spread > 1.5, "front should span the Pareto set, spread {spread}");
         // Reproducible for a seed.
-        let (again, _) = nsga2(&[-10.0], &[10.0], &opts, &eval, &mut |_| {});
+        let (again, _) = nsga2(&Bounds::new(vec![-10.0], vec![10.0]).unwrap(), &opts, &eval, &|x: &[f64]| x.to_vec(), &mut |_| {});
         assert_eq!(front.iter().map(|i| i.x[0]).collect::<Vec<_>>(), again.iter().map(|i| i.x[0]).collect::<Vec<_>>());
     }
 

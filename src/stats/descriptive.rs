@@ -1,9 +1,41 @@
-//! Sample statistics shared by the layers above (fitting, sampling, diagnosis): means and
-//! autocorrelations of series such as residuals and chains.
+//! Descriptive statistics of a series (residuals, chains): mean, variance, median, quantiles
+//! and autocorrelation.
 
 /// Arithmetic mean (0 for an empty slice).
 pub fn mean(x: &[f64]) -> f64 {
     x.iter().sum::<f64>() / x.len().max(1) as f64
+}
+
+/// Unbiased sample variance (0 for fewer than two values).
+pub fn variance(x: &[f64]) -> f64 {
+    if x.len() < 2 {
+        return 0.0;
+    }
+    let m = mean(x);
+    x.iter().map(|v| (v - m) * (v - m)).sum::<f64>() / (x.len() - 1) as f64
+}
+
+/// Median (NaN for an empty slice).
+pub fn median(x: &[f64]) -> f64 {
+    if x.is_empty() {
+        return f64::NAN;
+    }
+    let mut s = x.to_vec();
+    s.sort_by(f64::total_cmp);
+    let n = s.len();
+    if n % 2 == 1 { s[n / 2] } else { 0.5 * (s[n / 2 - 1] + s[n / 2]) }
+}
+
+/// Quantile `q` in [0, 1] of `sorted` (ascending) by linear interpolation between order
+/// statistics (Hyndman & Fan type 7, the default of R and NumPy); `NaN` when empty.
+pub fn quantile(sorted: &[f64], q: f64) -> f64 {
+    if sorted.is_empty() {
+        return f64::NAN;
+    }
+    let h = (sorted.len() - 1) as f64 * q.clamp(0.0, 1.0);
+    let lo = h.floor() as usize;
+    let hi = (lo + 1).min(sorted.len() - 1);
+    sorted[lo] + (h - lo as f64) * (sorted[hi] - sorted[lo])
 }
 
 /// Sample autocorrelation of `x` at lags `1..=max_lag` (0 where it is undefined: a lag as long
@@ -34,6 +66,15 @@ pub fn lag1(r: &[f64], weights: &[f64]) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn quantiles_type_7() {
+        let x = [1.0, 2.0, 3.0, 4.0];
+        assert_eq!(quantile(&x, 0.5), 2.5);
+        assert_eq!(quantile(&x, 0.0), 1.0);
+        assert_eq!(quantile(&x, 1.0), 4.0);
+        assert!((quantile(&x, 0.025) - 1.075).abs() < 1e-12);
+    }
 
     #[test]
     fn autocorrelation_of_an_alternating_and_a_constant_series() {

@@ -7,7 +7,8 @@
 
 use super::spectrum::Spectrum;
 use crate::error::Error;
-use crate::geometry::{BuilderPool, MeshSizes, ModelBuilder};
+use crate::geometry::MeshSizes;
+use crate::models::{BuilderPool, ModelBuilder};
 use crate::models::{ModelKind, Submodels};
 use crate::optim::Objective;
 use crate::params::{ParameterSet, set_initial_soc};

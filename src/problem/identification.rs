@@ -232,7 +232,7 @@ pub fn covariance<'a>(r: &[f64], w: &[f64], sensitivity: impl IntoIterator<Item 
             }
         }
     }
-    let (values, vectors) = crate::optim::linalg::sym_eigen(&fisher, p)?;
+    let (values, vectors) = crate::linalg::sym_eigen(&fisher, p)?;
     let largest = values.iter().fold(0.0f64, |m, v| m.max(*v));
     let mut cov = vec![0.0; p * p];
     for a in 0..p {
