@@ -81,7 +81,7 @@ pub struct StepResponse {
     pub windows: Vec<Window>,
 }
 
-/// Everything the residual analysis found. Residuals are `r = V_data - V_model` (V).
+/// Everything the residual analysis found. Residuals are `r = V_model - V_data` (V), as in fitting.
 #[derive(Clone, Debug, Serialize)]
 pub struct ResidualAnalysis {
     /// Points analysed (repeated-time points excluded).
@@ -152,7 +152,7 @@ fn bands(x: &[f64], r: &[f64], edges: &[f64]) -> Vec<Band> {
         .collect()
 }
 
-/// Analyses the residual `r = V_data - V_model` at every recorded point.
+/// Analyses the residual `r = V_model - V_data` at every recorded point.
 pub fn analyse(rec: &Recording, features: &Features, residual: &[f64], nominal_capacity: f64) -> ResidualAnalysis {
     let idx: Vec<usize> = (0..residual.len()).filter(|&k| features.valid[k]).collect();
     let r: Vec<f64> = idx.iter().map(|&k| residual[k]).collect();
@@ -180,13 +180,14 @@ pub fn analyse(rec: &Recording, features: &Features, residual: &[f64], nominal_c
         }
     }
     let (instantaneous_resistance, step_r2) = if di.len() >= 2 {
-        // Through the origin: Δr = -R ΔI.
+        // Through the origin: Δr = R ΔI (a model without a series resistance R sits R I above
+        // the data under a discharge current I).
         let num: f64 = di.iter().zip(&dr).map(|(a, b)| a * b).sum();
         let den: f64 = di.iter().map(|a| a * a).sum();
         let slope = num / den;
         let ss: f64 = dr.iter().map(|v| v * v).sum();
         let res: f64 = di.iter().zip(&dr).map(|(a, b)| (b - slope * a).powi(2)).sum();
-        (-slope, if ss > 0.0 { 1.0 - res / ss } else { 0.0 })
+        (slope, if ss > 0.0 { 1.0 - res / ss } else { 0.0 })
     } else {
         (0.0, 0.0)
     };
@@ -309,7 +310,7 @@ fn segments(time: &[f64], current: &[f64], r: &[f64], floor: f64) -> Vec<Segment
 mod tests {
     use super::*;
 
-    /// A residual `-R I` (a missing series resistance) on a pulse recording: the step jumps
+    /// A residual `R I` (a missing series resistance) on a pulse recording: the step jumps
     /// and the current regression both give `R`, rests carry no error, and the load windows
     /// show no concentration after the steps.
     #[test]
@@ -327,10 +328,10 @@ mod tests {
         let voltage = vec![3.7; time.len()];
         let rec = Recording { time, current, voltage, temperature: None };
         let f = Features::of(&rec);
-        let r: Vec<f64> = rec.current.iter().map(|i| -0.01 * i).collect();
+        let r: Vec<f64> = rec.current.iter().map(|i| 0.01 * i).collect();
         let a = analyse(&rec, &f, &r, 5.0);
         assert!((a.step_response.instantaneous_resistance - 0.01).abs() < 1e-12);
-        assert!((a.vs_current.unwrap().slope + 0.01).abs() < 1e-12);
+        assert!((a.vs_current.unwrap().slope - 0.01).abs() < 1e-12);
         assert!(a.rest_rms < 1e-15 && a.load_rms > 0.05);
         for w in a.step_response.windows.iter().filter(|w| w.load && w.point_share > 0.0) {
             assert!((w.concentration() - 1.0).abs() < 1e-9, "{w:?}");

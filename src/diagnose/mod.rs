@@ -7,7 +7,7 @@
 //!    state of charge is a nuisance fitted with it (a recording may start part-way through a
 //!    discharge or under load). If the model fails part-way, the recording is diagnosed up
 //!    to that point and the report says where it broke down.
-//! 3. Locate: the residual `r = V_data - V_model` is analysed ([`locate`]): where in time,
+//! 3. Locate: the residual `r = V_model - V_data` (the fits' convention) is analysed ([`locate`]): where in time,
 //!    after which current steps, at rest or under load, and whether noise explains it.
 //! 4. Candidates: every identifiable candidate of the [`candidates`] library is added to the
 //!    model and fitted by Levenberg-Marquardt on a training part of the recording, in
@@ -236,7 +236,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
     for (p, v) in warm.iter_mut().zip(&baseline.values) {
         p.initial = v.clamp(p.lower, p.upper);
     }
-    let residual: Vec<f64> = data.voltage.iter().zip(&baseline.voltage).map(|(d, m)| d - m).collect();
+    let residual: Vec<f64> = data.voltage.iter().zip(&baseline.voltage).map(|(d, m)| m - d).collect();
     let q = base.cell.nominal_capacity;
     let analysis = locate::analyse(&data, &features, &residual, q);
     let noise = analysis.noise;
@@ -349,7 +349,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
         }
     }
     let residual_after = outcomes.first().and_then(|c| c.fit.as_ref()).map(|f| {
-        let r: Vec<f64> = data.voltage.iter().zip(&f.voltage).map(|(d, m)| d - m).collect();
+        let r: Vec<f64> = data.voltage.iter().zip(&f.voltage).map(|(d, m)| m - d).collect();
         locate::analyse(&data, &features, &r, q)
     });
     if data.temperature.is_some() {

@@ -231,7 +231,7 @@ pub fn fit_and_score(
         (None, Some(e)) => return Err(e),
         (None, None) => unreachable!("at least one start"),
     };
-    let r: Vec<f64> = data.voltage.iter().zip(&fit.voltage).map(|(d, m)| d - m).collect();
+    let r: Vec<f64> = data.voltage.iter().zip(&fit.voltage).map(|(d, m)| m - d).collect();
     let n = split.train_points() as f64;
     let sse: f64 = r.iter().zip(&split.train).map(|(r, w)| w * r * r).sum();
     let sigma2 = (sse / n).max(f64::MIN_POSITIVE);

@@ -84,7 +84,7 @@ pub fn write_plots(d: &Diagnosis, dir: &Path, stem: &str) -> Result<Vec<(String,
     let rec = &d.data;
     let valid: Vec<usize> = (0..rec.time.len()).filter(|&k| !rec.is_repeated(k)).collect();
     let curve = |v: &[f64]| valid.iter().map(|&k| (rec.time[k], v[k])).collect::<Vec<_>>();
-    let residual = |v: &[f64]| valid.iter().map(|&k| (rec.time[k], 1e3 * (rec.voltage[k] - v[k]))).collect::<Vec<_>>();
+    let residual = |v: &[f64]| valid.iter().map(|&k| (rec.time[k], 1e3 * (v[k] - rec.voltage[k]))).collect::<Vec<_>>();
     let best = d.best().and_then(|c| c.fit.as_ref().map(|f| (c.name.clone(), f)));
     let holdout = Shading { label: "held out".into(), spans: spans(&rec.time, &d.split.holdout), colour: RGBColor(120, 120, 120), alpha: 0.12 };
     let mismatch = Shading {
@@ -107,7 +107,7 @@ pub fn write_plots(d: &Diagnosis, dir: &Path, stem: &str) -> Result<Vec<(String,
         res.push((format!("with {name}"), residual(&f.voltage)));
     }
     let path = dir.join(format!("{stem}_residual.svg"));
-    shaded_plot(&path, "Residual V_data - V_model (mismatching segments shaded)", "Residual (mV)", &res, &[holdout, mismatch])?;
+    shaded_plot(&path, "Residual V_model - V_data (mismatching segments shaded)", "Residual (mV)", &res, &[holdout, mismatch])?;
     out.push(("Residual before and after, mismatching segments".to_string(), path));
     Ok(out)
 }
