@@ -172,7 +172,7 @@ fn measured_lgm50_half_c_and_one_c_jointly() {
             .starting_at_rest()
             .unwrap();
         let v = chen.simulate(&[]).unwrap();
-        let chen_rmse = cellstudio::problem::identification::weighted_rms(&chen.residuals(&v), &chen.weights);
+        let chen_rmse = cellstudio::stats::weighted_rms(&chen.residuals(&v), &chen.weights);
         eprintln!("{}: joint fit RMSE {:.2} mV, Chen 2020 {:.2} mV", e.name, e.rmse * 1e3, chen_rmse * 1e3);
         assert!(e.rmse < chen_rmse, "{}: {} V vs Chen 2020 {} V", e.name, e.rmse, chen_rmse);
     }

@@ -4,7 +4,7 @@
 use serde::Serialize;
 
 use super::features::Features;
-use crate::stats::{TestResult, least_squares, ljung_box, noise_from_dense_differences, runs_test};
+use crate::stats::{TestResult, least_squares, ljung_box, noise_from_dense_differences, rms, runs_test};
 use crate::data::Recording;
 
 /// Straight-line fit `r ≈ a + b x`.
@@ -128,10 +128,6 @@ pub struct ResidualAnalysis {
 
 /// Least temperature rise (K) the residual is regressed on: ten steps of a 0.1 K thermocouple.
 pub const MIN_TEMPERATURE_SPAN: f64 = 1.0;
-
-fn rms(v: &[f64]) -> f64 {
-    if v.is_empty() { 0.0 } else { (v.iter().map(|x| x * x).sum::<f64>() / v.len() as f64).sqrt() }
-}
 
 fn bands(x: &[f64], r: &[f64], edges: &[f64]) -> Vec<Band> {
     edges

@@ -11,7 +11,7 @@ use crate::params::ParameterSet;
 use crate::problem::fitting::{FitParameter, FittingProblem, ModelSpec};
 use crate::problem::least_squares::{LeastSquaresFit, LmSettings, levenberg_marquardt};
 use crate::stats::noise_from_dense_differences;
-use crate::stats::lag1;
+use crate::stats::{lag1, weighted_rms};
 
 /// Which points train and which validate.
 #[derive(Clone, Debug)]
@@ -170,9 +170,9 @@ impl FitOutcome {
     }
 }
 
-fn rms_where(r: &[f64], keep: impl Fn(usize) -> bool) -> f64 {
-    let (s, n) = r.iter().enumerate().filter(|(k, _)| keep(*k)).fold((0.0, 0usize), |(s, n), (_, v)| (s + v * v, n + 1));
-    if n == 0 { f64::NAN } else { (s / n as f64).sqrt() }
+/// Weights 1 at the points `keep` selects, 0 elsewhere.
+fn indicator(n: usize, keep: impl Fn(usize) -> bool) -> Vec<f64> {
+    (0..n).map(|i| if keep(i) { 1.0 } else { 0.0 }).collect()
 }
 
 /// Fits `parameters` of the model `spec` on the training points of `data` from each of
@@ -248,8 +248,8 @@ pub fn fit_and_score(
         on_bound: fit.on_bound.clone(),
         parameters: k + structural,
         rmse_train: sigma2.sqrt(),
-        rmse_holdout: rms_where(&r, |i| split.holdout[i]),
-        rmse_all: rms_where(&r, |i| split.holdout[i] || split.train[i] > 0.0),
+        rmse_holdout: weighted_rms(&r, &indicator(r.len(), |i| split.holdout[i])),
+        rmse_all: weighted_rms(&r, &indicator(r.len(), |i| split.holdout[i] || split.train[i] > 0.0)),
         lag1: lag1(&r, &split.train),
         log_likelihood: -0.5 * n * ((2.0 * std::f64::consts::PI * sigma2).ln() + 1.0),
         ln_det_information: fit.ln_det_information,

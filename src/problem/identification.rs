@@ -8,6 +8,7 @@ use serde::Serialize;
 use super::fitting::{FitParameter, FittingProblem, Simulated};
 use crate::cost::CostKind;
 use crate::error::Error;
+use crate::stats::weighted_rms;
 use crate::optim::{Bounds, Objective, OptimOptions, Problem, ProgressObserver, StopReason, TraceEntry, Transform, by_name};
 
 /// Bounds and start of the noise level when it is fitted (V).
@@ -189,12 +190,6 @@ pub(crate) fn minimise(
         return Err(Error::Solver { t: 0.0, reason: "every simulation of the fit failed".into() });
     }
     Ok(Search { names, result, trace: trace.entries, seconds })
-}
-
-/// Root-mean-square of residuals `r` with point weights `w` (units of `r`).
-pub fn weighted_rms(r: &[f64], w: &[f64]) -> f64 {
-    let weight: f64 = w.iter().sum();
-    (r.iter().zip(w).map(|(r, w)| w * r * r).sum::<f64>() / weight).sqrt()
 }
 
 /// Local identifiability at a fitted point.

@@ -8,7 +8,8 @@
 use rayon::prelude::*;
 use serde::Serialize;
 
-use super::identification::{FitObjective, FitResult, Identifiability, minimise, weighted_rms};
+use super::identification::{FitObjective, FitResult, Identifiability, minimise};
+use crate::stats::weighted_rms;
 use super::fitting::{FitParameter, FittingProblem};
 use crate::cost::CostKind;
 use crate::error::Error;

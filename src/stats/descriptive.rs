@@ -6,6 +6,18 @@ pub fn mean(x: &[f64]) -> f64 {
     x.iter().sum::<f64>() / x.len().max(1) as f64
 }
 
+/// Root-mean-square (0 for an empty slice).
+pub fn rms(x: &[f64]) -> f64 {
+    if x.is_empty() { 0.0 } else { (x.iter().map(|v| v * v).sum::<f64>() / x.len() as f64).sqrt() }
+}
+
+/// Root-mean-square of `r` with point weights `w` (units of `r`); points of zero weight are
+/// left out (even a NaN there), NaN when no weight is positive.
+pub fn weighted_rms(r: &[f64], w: &[f64]) -> f64 {
+    let weight: f64 = w.iter().sum();
+    (r.iter().zip(w).filter(|(_, w)| **w != 0.0).map(|(r, w)| w * r * r).sum::<f64>() / weight).sqrt()
+}
+
 /// Unbiased sample variance (0 for fewer than two values).
 pub fn variance(x: &[f64]) -> f64 {
     if x.len() < 2 {

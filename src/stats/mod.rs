@@ -9,7 +9,7 @@ pub mod noise;
 pub mod regression;
 pub mod whiteness;
 
-pub use descriptive::{autocorrelation, lag1, mean, median, quantile, variance};
+pub use descriptive::{autocorrelation, lag1, mean, median, quantile, rms, variance, weighted_rms};
 pub use distributions::{chi2_sf, normal_quantile, normal_sf};
 pub use noise::{noise_from_dense_differences, noise_from_differences};
 pub use regression::least_squares;

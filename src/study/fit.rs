@@ -308,7 +308,7 @@ pub(crate) fn single_fit_into(study: &FitStudy, data: Option<&Path>, dir: &Path)
     let (problem, checks) = study.problem_and_notes(data)?;
     let (method, options) = study.optimiser()?;
     let initial_voltage = problem.simulate(&problem.initial())?;
-    let initial_rmse = crate::problem::identification::weighted_rms(&problem.residuals(&initial_voltage), &problem.weights);
+    let initial_rmse = crate::stats::weighted_rms(&problem.residuals(&initial_voltage), &problem.weights);
     let result = fit(&problem, study.cost, &method, options)?;
     let notes: Vec<String> = study.noise_note(data).into_iter().chain(checks).collect();
     let names: Vec<String> = problem.parameters.iter().map(|p| p.path.clone()).collect();
