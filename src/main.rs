@@ -1,22 +1,15 @@
 //! Command-line interface (thin: parsing and printing only).
 
-use std::path::PathBuf;
 use std::process::ExitCode;
-use std::time::Instant;
 
 use clap::Parser;
 
 mod cli;
 use cli::{Cli, Command, DataCommand, Overrides};
 
-use cellstudio::geometry::MeshSizes;
-use cellstudio::models::ModelBuilder;
 use cellstudio::models::Submodels;
 use cellstudio::output::OutputDir;
 use cellstudio::params::{ParameterSet, apply_overrides};
-use cellstudio::protocol::Protocol;
-use cellstudio::report::plot::{Series, line_plot};
-use cellstudio::simulation::{SimOptions, simulate};
 use cellstudio::Error;
 use cellstudio::study::Study;
 use cellstudio::study::design::run_design;
@@ -25,6 +18,7 @@ use cellstudio::study::fit_run::run_fit;
 use cellstudio::study::sample::run_sample;
 use cellstudio::study::eis;
 use cellstudio::study::pareto::run_pareto;
+use cellstudio::study::simulate::{ProtocolSource, SimulateRun, run_simulate};
 use cellstudio::study::sweep::run_sweep;
 use cellstudio::problem::design::Metric;
 
@@ -36,11 +30,6 @@ fn main() -> ExitCode {
             ExitCode::FAILURE
         }
     }
-}
-
-fn read_toml<T: serde::de::DeserializeOwned>(path: &PathBuf) -> Result<T, Error> {
-    let text = std::fs::read_to_string(path).map_err(Error::io(&path))?;
-    toml::from_str(&text).map_err(|e| Error::Parse { path: path.display().to_string(), message: e.to_string() })
 }
 
 /// The parameter set from `--params` (or the embedded default) with `--set` overrides.
@@ -257,92 +246,32 @@ fn run(cli: Cli) -> Result<(), Error> {
             }
             Ok(())
         }
-        Command::Simulate { overrides, model, c_rate, protocol: protocol_file, experiment, params, contact_resistance, thermal, mesh, out, repeat, json } => {
-            if !(c_rate > 0.0 && c_rate.is_finite()) {
-                return Err(Error::invalid("--c-rate", c_rate, "must be positive"));
-            }
-            if mesh < 2 {
-                return Err(Error::invalid("--mesh", mesh as f64, "must be at least 2 volumes"));
-            }
+        Command::Simulate { overrides, model, c_rate, protocol, experiment, params, contact_resistance, thermal, mesh, out, repeat, json } => {
             let mut p = load_parameters(params.as_deref(), &overrides)?;
             set_contact_resistance(&mut p, contact_resistance)?;
-            let protocol = match &protocol_file {
-                Some(path) => read_toml::<Protocol>(path)?,
-                None if !experiment.is_empty() => cellstudio::protocol::experiment::parse(&experiment, p.cell.nominal_capacity)?,
-                None => Protocol::discharge_within(c_rate, p.discharge_time_limit(c_rate)),
+            let protocol = match protocol {
+                Some(path) => ProtocolSource::File(path),
+                None if !experiment.is_empty() => ProtocolSource::Experiment(experiment),
+                None => ProtocolSource::Discharge { c_rate },
             };
-            let staged = OutputDir::create(&out, &[params.as_deref(), protocol_file.as_deref()].into_iter().flatten().collect::<Vec<_>>())?;
-            let dir = staged.path();
             let submodels = Submodels { contact_resistance: contact_resistance.is_some() || overrides.sets("cell.contact_resistance"), thermal, ..Default::default() };
-            let sizes = MeshSizes { x_n: mesh, x_s: mesh, x_p: mesh, r_n: mesh, r_p: mesh };
-            let mut builder = ModelBuilder::new(model, submodels, sizes);
-            let t_build = Instant::now();
-            let built = builder.build(&p)?;
-            let build_time = t_build.elapsed().as_secs_f64();
-            let opts = SimOptions::for_cell(&p);
-            let mut times = Vec::new();
-            let mut sol = None;
-            for _ in 0..repeat.max(1) {
-                let t = Instant::now();
-                sol = Some(simulate(built.model.as_ref(), &mut built.workspace, &protocol, &opts, None).map_err(|e| match &protocol_file {
-                    // Name what the user wrote: the rate, the experiment, or the protocol file.
-                    None if !experiment.is_empty() => Error::InvalidSetting { field: "--experiment".into(), reason: format!("{experiment:?} failed: {e}") },
-                    None if matches!(e, Error::StepDemand { .. }) => e.demand_named("--c-rate", c_rate),
-                    None => Error::InvalidSetting { field: "--c-rate".into(), reason: format!("a {c_rate} C discharge failed: {e}") },
-                    Some(path) => Error::InvalidSetting { field: "--protocol".into(), reason: format!("{} failed: {e}", path.display()) },
-                })?);
-                times.push(t.elapsed().as_secs_f64());
-            }
-            let sol = sol.expect("at least one run");
-            if protocol_file.is_none() && experiment.is_empty() && sol.cutoff_times.is_empty() {
-                eprintln!(
-                    "warning: the {c_rate} C discharge ended at its time limit ({:.0} s), not at the lower cut-off ({} V): it is cut short",
-                    sol.time.last().copied().unwrap_or(0.0),
-                    p.cell.lower_cutoff
-                );
-            }
-            times.sort_by(f64::total_cmp);
-            let median = times[times.len() / 2];
-            let stem = format!("{}_simulation", model.to_string().to_lowercase());
-            let csv = dir.join(format!("{stem}.csv"));
-            let svg = dir.join(format!("{stem}_voltage.svg"));
-            sol.write_csv(&csv)?;
-            let label = format!("{model} {}", p.name);
-            line_plot(&svg, "Terminal voltage", "Time (s)", "Voltage (V)", &[Series { label, x: &sol.time, y: &sol.voltage }])?;
-            // Concentration and potential profiles, from one more run that keeps the states
-            // (the timed runs do not pay for the copies).
-            let kept = SimOptions { keep_states: true, ..opts.clone() };
-            let with_states = simulate(built.model.as_ref(), &mut built.workspace, &protocol, &kept, None)?;
-            let fields = cellstudio::report::fields::write_fields(built.model.as_ref(), &with_states, dir, &stem)?;
-            let mut written = staged.commit(&[vec![csv, svg], fields].concat())?;
-            let fields = written.split_off(2);
-            let (csv, svg) = (written[0].clone(), written[1].clone());
+            let run = SimulateRun { model, submodels, params: p, protocol, mesh, repeat, out, inputs: params.into_iter().collect() };
+            let outcome = run_simulate(&run)?;
+            warn(&outcome.warnings);
+            let sol = &outcome.solution;
             if json {
-                let summary = serde_json::json!({
-                    "model": model.to_string(),
-                    "capacity_Ah": sol.final_capacity(),
-                    "energy_Wh": sol.final_energy(),
-                    "final_voltage_V": sol.final_voltage(),
-                    "end_time_s": sol.time.last(),
-                    "build_time_s": build_time,
-                    "solve_time_s_median": median,
-                    "repeats": times.len(),
-                    "steps": sol.stats.steps,
-                    "csv": csv.display().to_string(),
-                    "fields": fields.iter().map(|f| f.display().to_string()).collect::<Vec<_>>(),
-                });
-                println!("{summary}");
+                println!("{}", outcome.summary_json(model));
             } else {
-                println!("model            {model} ({})", p.name);
+                println!("model            {model} ({})", run.params.name);
                 println!("capacity         {:.4} A h", sol.final_capacity());
                 println!("energy           {:.4} W h", sol.final_energy());
                 println!("final voltage    {:.4} V at t = {:.1} s", sol.final_voltage(), sol.time.last().copied().unwrap_or(0.0));
-                println!("build time       {:.3} ms", build_time * 1e3);
-                println!("solve time       {:.3} ms (median of {})", median * 1e3, times.len());
+                println!("build time       {:.3} ms", outcome.build_time * 1e3);
+                println!("solve time       {:.3} ms (median of {})", outcome.solve_time_median * 1e3, outcome.repeats);
                 println!("solver steps     {} ({} Jacobians, {} rhs evaluations)", sol.stats.steps, sol.stats.jacobian_evals, sol.stats.rhs_evals);
-                println!("wrote            {} and {}", csv.display(), svg.display());
-                if let Some(f) = fields.first() {
-                    println!("fields           {} (+ {} profile plots)", f.display(), fields.len() - 1);
+                println!("wrote            {} and {}", outcome.csv.display(), outcome.svg.display());
+                if let Some(f) = outcome.fields.first() {
+                    println!("fields           {} (+ {} profile plots)", f.display(), outcome.fields.len() - 1);
                 }
             }
             Ok(())

@@ -15,6 +15,7 @@ pub mod limits;
 pub mod profiles;
 pub mod sample;
 pub mod shard;
+pub mod simulate;
 pub mod pareto;
 pub mod sweep;
 mod warnings;
