@@ -12,9 +12,14 @@ const NEWTON_TOL: f64 = 0.03;
 /// Largest relative change of `c = h / alpha` before the Newton matrix is refactorised.
 const MAX_GAMMA_DRIFT: f64 = 0.3;
 
-/// Newton iteration state: which Jacobian and matrix are held, and the solution of the last
-/// solve.
-pub(super) struct Newton {
+/// Newton iteration state: the DAE and work space, which Jacobian and matrix are held, and
+/// the solution of the last solve.
+pub(super) struct Newton<'a> {
+    dae: &'a dyn Dae,
+    ws: &'a mut Workspace,
+    /// The DAE's mass-matrix diagonal and state scales.
+    mass: &'a [f64],
+    scale: &'a [f64],
     /// Stopping threshold on the estimated remaining correction, in error weights.
     tol: f64,
     /// A Jacobian has been evaluated (in the work space).
@@ -37,10 +42,15 @@ pub(super) struct Newton {
     pub(super) dvec: Vec<f64>,
 }
 
-impl Newton {
-    /// The state for `n` unknowns at relative tolerance `rtol`, with no Jacobian yet.
-    pub(super) fn new(n: usize, rtol: f64) -> Self {
+impl<'a> Newton<'a> {
+    /// The state for `dae` at relative tolerance `rtol`, with no Jacobian yet.
+    pub(super) fn new(dae: &'a dyn Dae, ws: &'a mut Workspace, rtol: f64) -> Self {
+        let n = dae.len();
         Self {
+            dae,
+            ws,
+            mass: dae.mass(),
+            scale: dae.scale(),
             // Newton stops when the estimated remaining correction is below this fraction of the
             // error weights (SciPy's value at loose rtol; CVODE allows ~0.1). Tighter values only
             // add iterations and, through slower convergence tests, Jacobian evaluations.
@@ -71,20 +81,17 @@ impl Newton {
     /// `pred`, measuring corrections in the error weights `weight`. Returns the number of
     /// iterations if it converged (solution in `y_new`, `dvec`), `None` if not even a fresh
     /// Jacobian made it converge.
-    #[allow(clippy::too_many_arguments)]
     pub(super) fn solve(
         &mut self,
-        dae: &dyn Dae,
-        ws: &mut Workspace,
         t_new: f64,
         c: f64,
         pred: &Prediction,
         weight: &[f64],
         stats: &mut SolverStats,
     ) -> Result<Option<usize>, Error> {
-        let (mass, state_scale) = (dae.mass(), dae.scale());
-        let (y_pred, psi) = (&pred.y, &pred.psi);
-        let (f, rhs, y_new, dvec) = (&mut self.f, &mut self.rhs, &mut self.y_new, &mut self.dvec);
+        let (dae, ws, mass, state_scale) = (self.dae, &mut *self.ws, self.mass, self.scale);
+        let (y_pred, psi) = (&pred.y[..], &pred.psi[..]);
+        let (f, rhs, y_new, dvec) = (&mut self.f[..], &mut self.rhs[..], &mut self.y_new[..], &mut self.dvec[..]);
         let mut n_iter = 0;
         loop {
             if !self.have_jac {
@@ -174,3 +181,4 @@ impl Newton {
         }
     }
 }
+

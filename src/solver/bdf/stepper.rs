@@ -23,15 +23,13 @@ pub struct StepInfo {
 
 /// Variable-order, variable-step BDF/NDF stepper for `M y' = f(t, y)` from `t0` to a stop time.
 pub struct Bdf<'a> {
-    dae: &'a dyn Dae,
-    ws: &'a mut Workspace,
     pub(super) opts: &'a SolverOptions,
     /// Absolute tolerance of each state (its scale times `opts.atol`).
     atol: Vec<f64>,
     coeffs: Coefficients,
     d: Differences,
     pred: Prediction,
-    newton: Newton,
+    newton: Newton<'a>,
     /// Error weights 1 / (atol + rtol |y|) of the current step.
     weight: Vec<f64>,
     /// Time (s) of the state `d[0]`.
@@ -80,14 +78,12 @@ impl<'a> Bdf<'a> {
         let fdiff: Vec<f64> = f0.iter().zip(dae.mass()).map(|(f, m)| f * m).collect();
         let h_abs = control::initial_step(dae, t0, y0, &fdiff, &atol, opts, span, &mut stats);
         Ok(Self {
-            dae,
-            ws,
             opts,
             atol,
             coeffs: Coefficients::new(),
             d: Differences::new(y0, fdiff.iter().map(|f| f * h_abs)),
             pred: Prediction::new(n),
-            newton: Newton::new(n, opts.rtol),
+            newton: Newton::new(dae, ws, opts.rtol),
             weight: vec![0.0; n],
             t: t0,
             t_stop,
@@ -168,7 +164,7 @@ impl<'a> Bdf<'a> {
             self.d.predict(order, &self.coeffs, &mut self.pred);
             set_weights(&mut self.weight, &self.atol, self.opts.rtol, &self.pred.y);
             let c = h / self.coeffs.alpha[order];
-            let solved = self.newton.solve(self.dae, self.ws, t_new, c, &self.pred, &self.weight, &mut self.stats)?;
+            let solved = self.newton.solve(t_new, c, &self.pred, &self.weight, &mut self.stats)?;
             let Some(n_iter) = solved else {
                 self.h_abs *= 0.5;
                 self.d.rescale(order, 0.5);
