@@ -5,7 +5,7 @@
 use super::{Dae, SolverOptions, SolverStats};
 
 pub(super) const MAX_ORDER: usize = 5;
-pub(super) const MIN_FACTOR: f64 = 0.2;
+const MIN_FACTOR: f64 = 0.2;
 const MAX_FACTOR: f64 = 10.0;
 /// NDF coefficients kappa_k of Shampine & Reichelt (1997).
 const KAPPA: [f64; 6] = [0.0, -0.1850, -1.0 / 9.0, -0.0823, -0.0415, 0.0];
