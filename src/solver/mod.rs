@@ -9,4 +9,4 @@ pub mod sparse;
 pub mod static_lu;
 mod workspace;
 
-pub use bdf::{Dae, DenseOutput, SolverOptions, SolverStats, StopReason, Workspace, integrate};
+pub use bdf::{Bdf, Dae, DenseOutput, SolverOptions, SolverStats, StepInfo, StopReason, Workspace, integrate};
