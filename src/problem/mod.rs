@@ -4,6 +4,7 @@ pub mod bracket;
 pub mod design;
 pub mod fast_charge;
 pub mod fitting;
+pub mod global_sensitivity;
 pub mod identification;
 pub mod joint;
 pub mod least_squares;

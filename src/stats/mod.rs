@@ -1,12 +1,13 @@
 //! The statistics layer, shared by fitting, sampling and diagnosis: descriptive statistics,
 //! distribution tails (`statrs`), whiteness tests and noise levels of residuals, least-squares
-//! regression, and convergence diagnostics of Markov chains.
+//! regression, Sobol' global sensitivity indices, and convergence diagnostics of Markov chains.
 
 pub mod convergence;
 pub mod descriptive;
 pub mod distributions;
 pub mod noise;
 pub mod regression;
+pub mod sobol;
 pub mod whiteness;
 
 pub use descriptive::{autocorrelation, lag1, mean, median, quantile, rms, variance, weighted_rms};

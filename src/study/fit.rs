@@ -53,6 +53,9 @@ pub struct FitStudy {
     /// Profile likelihood of every fitted parameter.
     #[serde(default)]
     pub profile: Option<super::profiles::ProfileSettings>,
+    /// Sobol' (global) sensitivity indices of every fitted parameter over its search box.
+    #[serde(default)]
+    pub sobol: Option<crate::stats::sobol::SobolSettings>,
     #[serde(default)]
     pub output: Output,
 }
@@ -94,6 +97,12 @@ impl FitStudy {
             p.validate()?;
             if self.data.len() > 1 {
                 return Err(Error::InvalidSetting { field: "profile".into(), reason: "profile likelihoods take one [data] entry, not a joint fit".into() });
+            }
+        }
+        if let Some(s) = &self.sobol {
+            s.validate()?;
+            if self.data.len() > 1 {
+                return Err(Error::InvalidSetting { field: "sobol".into(), reason: "Sobol' indices take one [data] entry, not a joint fit".into() });
             }
         }
         for (k, d) in self.data.iter().enumerate() {
@@ -338,6 +347,12 @@ pub(crate) fn single_fit_into(study: &FitStudy, data: Option<&Path>, dir: &Path)
         md.push_str(&profiles.section);
         files.extend(profiles.files);
         warnings.extend(profiles.warnings);
+    }
+    if let Some(settings) = &study.sobol {
+        let sobol = super::sobol::write_sobol(dir, &problem, settings)?;
+        md.push_str(&sobol.section);
+        files.extend(sobol.files);
+        warnings.extend(sobol.warnings);
     }
     write_output(dir, "report.md", with_notes(md, &notes, &warnings), &mut files)?;
     Ok(FitOutcome { result, initial_rmse, files, notes, warnings, at_bound, experiments: Vec::new(), rejection: None })

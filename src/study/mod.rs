@@ -16,6 +16,7 @@ pub mod profiles;
 pub mod sample;
 pub mod shard;
 pub mod simulate;
+pub mod sobol;
 pub mod pareto;
 pub mod sweep;
 mod warnings;
