@@ -2,6 +2,7 @@
 
 pub mod bracket;
 pub mod design;
+pub mod experiment_design;
 pub mod fast_charge;
 pub mod fitting;
 pub mod global_sensitivity;

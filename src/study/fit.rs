@@ -56,6 +56,9 @@ pub struct FitStudy {
     /// Sobol' (global) sensitivity indices of every fitted parameter over its search box.
     #[serde(default)]
     pub sobol: Option<crate::stats::sobol::SobolSettings>,
+    /// Candidate next experiments ranked by what they would determine.
+    #[serde(default)]
+    pub experiment_design: Option<crate::problem::experiment_design::DesignSettings>,
     #[serde(default)]
     pub output: Output,
 }
@@ -97,6 +100,12 @@ impl FitStudy {
             p.validate()?;
             if self.data.len() > 1 {
                 return Err(Error::InvalidSetting { field: "profile".into(), reason: "profile likelihoods take one [data] entry, not a joint fit".into() });
+            }
+        }
+        if let Some(d) = &self.experiment_design {
+            d.validate()?;
+            if self.data.len() > 1 {
+                return Err(Error::InvalidSetting { field: "experiment_design".into(), reason: "experiment design takes one [data] entry, not a joint fit".into() });
             }
         }
         if let Some(s) = &self.sobol {
@@ -347,6 +356,11 @@ pub(crate) fn single_fit_into(study: &FitStudy, data: Option<&Path>, dir: &Path)
         md.push_str(&profiles.section);
         files.extend(profiles.files);
         warnings.extend(profiles.warnings);
+    }
+    if let Some(settings) = &study.experiment_design {
+        let design = super::experiment_design::write_design(dir, &problem, &result, settings)?;
+        md.push_str(&design.section);
+        files.extend(design.files);
     }
     if let Some(settings) = &study.sobol {
         let sobol = super::sobol::write_sobol(dir, &problem, settings)?;

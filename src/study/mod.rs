@@ -6,6 +6,7 @@ pub mod cell;
 pub mod constraints;
 pub mod design;
 pub mod eis;
+pub mod experiment_design;
 pub mod fit;
 mod fit_data;
 pub mod fit_run;
