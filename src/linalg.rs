@@ -45,6 +45,30 @@ pub fn cholesky_solve(a: &[f64], n: usize, b: &[f64], min_pivot: f64) -> Option<
     Some((0..n).map(|i| x[(i, 0)]).collect())
 }
 
+/// Inverse of the symmetric positive semi-definite `n × n` matrix `a` through its
+/// eigen-decomposition: directions with eigenvalues below `1e-12` of the largest are not
+/// informed, and every entry they reach is infinite (a covariance from a Fisher information).
+pub fn sym_inverse(a: &[f64], n: usize) -> Result<Vec<f64>> {
+    let (values, vectors) = sym_eigen(a, n)?;
+    let largest = values.iter().fold(0.0f64, |m, v| m.max(*v));
+    let mut inv = vec![0.0; n * n];
+    for i in 0..n {
+        for j in 0..n {
+            inv[i * n + j] = (0..n)
+                .map(|k| {
+                    let w = vectors[i * n + k] * vectors[j * n + k];
+                    match (w == 0.0, values[k] > 1e-12 * largest) {
+                        (true, _) => 0.0,
+                        (false, true) => w / values[k],
+                        (false, false) => f64::INFINITY,
+                    }
+                })
+                .sum();
+        }
+    }
+    Ok(inv)
+}
+
 /// `aᵀ b` of two vectors.
 pub fn dot(a: &[f64], b: &[f64]) -> f64 {
     a.iter().zip(b).map(|(a, b)| a * b).sum()

@@ -19,7 +19,7 @@ use super::fitting::FittingProblem;
 use super::verdict::{MAX_CORRELATION, MAX_RELATIVE_ERROR};
 use crate::data::Recording;
 use crate::error::Error;
-use crate::linalg::sym_eigen;
+use crate::linalg::{sym_eigen, sym_inverse};
 use crate::models::ModelBuilder;
 use crate::protocol::experiment;
 use crate::simulation::{SimOptions, simulate};
@@ -122,28 +122,9 @@ pub fn relative_fisher(problem: &FittingProblem, x: &[f64], sigma: f64) -> Resul
     Ok(f)
 }
 
-/// Covariance `F⁻¹` (infinite along directions `F` does not inform).
-fn covariance(f: &[f64], p: usize) -> Result<Vec<f64>, Error> {
-    let (values, vectors) = sym_eigen(f, p)?;
-    let largest = values.iter().fold(0.0f64, |m, v| m.max(*v));
-    let mut cov = vec![0.0; p * p];
-    for a in 0..p {
-        for b in 0..p {
-            cov[a * p + b] = (0..p)
-                .map(|k| {
-                    let inv = if values[k] > 1e-12 * largest { 1.0 / values[k] } else { f64::INFINITY };
-                    let v = vectors[a * p + k] * vectors[b * p + k];
-                    if v == 0.0 { 0.0 } else { v * inv }
-                })
-                .sum();
-        }
-    }
-    Ok(cov)
-}
-
 /// Relative standard errors and the D_s criterion of `f` on `targets`.
 fn standing(f: &[f64], p: usize, targets: &[usize]) -> Result<(Vec<f64>, f64), Error> {
-    let cov = covariance(f, p)?;
+    let cov = sym_inverse(f, p)?;
     let se = (0..p).map(|a| cov[a * p + a].max(0.0).sqrt()).collect();
     let t = targets.len();
     let block: Vec<f64> = (0..t * t).map(|k| cov[targets[k / t] * p + targets[k % t]]).collect();
@@ -158,7 +139,7 @@ fn standing(f: &[f64], p: usize, targets: &[usize]) -> Result<(Vec<f64>, f64), E
 
 /// Parameters the fitted recording leaves undetermined (all of them when none is).
 fn undetermined(f: &[f64], p: usize) -> Result<Vec<usize>, Error> {
-    let cov = covariance(f, p)?;
+    let cov = sym_inverse(f, p)?;
     let se = |a: usize| cov[a * p + a].max(0.0).sqrt();
     let loose: Vec<usize> = (0..p)
         .filter(|&a| !(se(a) <= MAX_RELATIVE_ERROR) || (0..p).any(|b| b != a && (cov[a * p + b] / (se(a) * se(b))).abs() > MAX_CORRELATION))

@@ -227,21 +227,10 @@ pub fn covariance<'a>(r: &[f64], w: &[f64], sensitivity: impl IntoIterator<Item 
             }
         }
     }
-    let (values, vectors) = crate::linalg::sym_eigen(&fisher, p)?;
-    let largest = values.iter().fold(0.0f64, |m, v| m.max(*v));
-    let mut cov = vec![0.0; p * p];
+    let mut cov = crate::linalg::sym_inverse(&fisher, p)?;
     for a in 0..p {
         for b in 0..p {
-            cov[a * p + b] = (0..p)
-                .map(|k| {
-                    let inv = if values[k] > 1e-12 * largest { 1.0 / values[k] } else { f64::INFINITY };
-                    vectors[a * p + k] * vectors[b * p + k] * inv
-                })
-                .filter(|v| !v.is_nan())
-                .sum::<f64>()
-                * s2
-                * scale[a]
-                * scale[b];
+            cov[a * p + b] *= s2 * scale[a] * scale[b];
         }
     }
     let std_errors: Vec<f64> = (0..p).map(|a| cov[a * p + a].sqrt()).collect();
