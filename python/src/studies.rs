@@ -14,6 +14,7 @@ use pyo3::prelude::*;
 
 use crate::{json, to_py};
 
+
 /// `--set PATH=VALUE` overrides from Python's `{path: value}` pairs.
 fn overrides(set: Vec<(String, f64)>) -> Vec<Override> {
     set.into_iter().map(|(path, value)| Override { path, value }).collect()
@@ -42,20 +43,28 @@ fn variables(study: &Study) -> Vec<String> {
     study.variables.iter().map(|v| v.path.clone()).collect()
 }
 
-/// Written files as text.
-fn files(files: &[PathBuf]) -> Vec<String> {
-    files.iter().map(|f| f.display().to_string()).collect()
+/// Runs `body` without the GIL: its JSON as text, its error as `CellstudioError`.
+fn detached(py: Python<'_>, body: impl FnOnce() -> Result<Value, Error> + Send) -> PyResult<String> {
+    py.detach(body).map(|v| json(&v)).map_err(to_py)
+}
+
+/// A run's own `fields` with what every run reports: the study's name, the warnings (also in
+/// its report) and the files it wrote.
+fn outcome(name: &str, warnings: &[String], files: &[PathBuf], mut fields: Value) -> Value {
+    fields["study"] = json!(name);
+    fields["warnings"] = json!(warnings);
+    fields["files"] = json!(files.iter().map(|f| f.display().to_string()).collect::<Vec<_>>());
+    fields
 }
 
 /// Runs the study's optimiser (`cellstudio design`).
 #[pyfunction]
 #[pyo3(signature = (path, set=Vec::new(), out=None))]
 pub fn design(py: Python<'_>, path: PathBuf, set: Vec<(String, f64)>, out: Option<PathBuf>) -> PyResult<String> {
-    py.detach(|| {
+    detached(py, || {
         let study = design_study(&path, set, out)?;
         let o = cellstudio::study::design::run_design(&study)?;
-        Ok(json(&json!({
-            "study": study.name,
+        Ok(outcome(&study.name, &o.warnings, &o.files, json!({
             "variables": variables(&study),
             "metric": o.metric,
             "metric_label": o.metric.label(),
@@ -72,18 +81,15 @@ pub fn design(py: Python<'_>, path: PathBuf, set: Vec<(String, f64)>, out: Optio
             "active_limits": o.active_limits,
             "start_values": o.start_values,
             "sweep_best": o.sweep_best,
-            "warnings": o.warnings,
-            "files": files(&o.files),
         })))
     })
-    .map_err(to_py)
 }
 
 /// Evaluates the study's grid or Latin hypercube (`cellstudio sweep`).
 #[pyfunction]
 #[pyo3(signature = (path, set=Vec::new(), out=None))]
 pub fn sweep(py: Python<'_>, path: PathBuf, set: Vec<(String, f64)>, out: Option<PathBuf>) -> PyResult<String> {
-    py.detach(|| {
+    detached(py, || {
         let study = design_study(&path, set, out)?;
         let o = cellstudio::study::sweep::run_sweep(&study)?;
         let best: Value = [Metric::GravimetricEnergyDensity, Metric::VolumetricEnergyDensity]
@@ -91,30 +97,25 @@ pub fn sweep(py: Python<'_>, path: PathBuf, set: Vec<(String, f64)>, out: Option
             .filter_map(|m| o.best(m).map(|(p, metrics)| (serde_json::to_value(m).unwrap_or_default().as_str().unwrap_or_default().to_string(), json!({"x": p.x, "metrics": metrics}))))
             .collect::<serde_json::Map<_, _>>()
             .into();
-        Ok(json(&json!({
-            "study": study.name,
+        Ok(outcome(&study.name, &o.warnings, &o.files, json!({
             "variables": variables(&study),
             "points": o.points,
             "baseline": o.baseline,
             "best": best,
             "rebuilds": o.rebuilds,
             "seconds": o.seconds,
-            "warnings": o.warnings,
-            "files": files(&o.files),
         })))
     })
-    .map_err(to_py)
 }
 
 /// Runs NSGA-II on the study's objectives (`cellstudio pareto`).
 #[pyfunction]
 #[pyo3(signature = (path, set=Vec::new(), out=None))]
 pub fn pareto(py: Python<'_>, path: PathBuf, set: Vec<(String, f64)>, out: Option<PathBuf>) -> PyResult<String> {
-    py.detach(|| {
+    detached(py, || {
         let study = design_study(&path, set, out)?;
         let o = cellstudio::study::pareto::run_pareto(&study)?;
-        Ok(json(&json!({
-            "study": study.name,
+        Ok(outcome(&study.name, &o.warnings, &o.files, json!({
             "variables": variables(&study),
             "objectives": study.objective.maximise,
             "front": o.front,
@@ -125,11 +126,8 @@ pub fn pareto(py: Python<'_>, path: PathBuf, set: Vec<(String, f64)>, out: Optio
             "repaired": o.repaired,
             "rebuilds": o.rebuilds,
             "seconds": o.seconds,
-            "warnings": o.warnings,
-            "files": files(&o.files),
         })))
     })
-    .map_err(to_py)
 }
 
 /// Fits the study's parameters to its recording or to `data` (`cellstudio fit`). A fit that
@@ -138,24 +136,20 @@ pub fn pareto(py: Python<'_>, path: PathBuf, set: Vec<(String, f64)>, out: Optio
 #[pyfunction]
 #[pyo3(signature = (path, data=None, set=Vec::new(), out=None))]
 pub fn fit(py: Python<'_>, path: PathBuf, data: Option<PathBuf>, set: Vec<(String, f64)>, out: Option<PathBuf>) -> PyResult<String> {
-    py.detach(|| {
+    detached(py, || {
         let study = fit_study(&path, set, out)?;
         let o = cellstudio::study::fit_run::run_fit(&study, data.as_deref())?;
         if let Some(rejection) = o.rejection {
             return Err(rejection);
         }
-        Ok(json(&json!({
-            "study": study.name,
+        Ok(outcome(&study.name, &o.warnings, &o.files, json!({
             "result": o.result,
             "initial_rmse": o.initial_rmse,
             "experiments": o.experiments,
             "table": parameter_table(&o.result),
             "notes": o.notes,
-            "warnings": o.warnings,
-            "files": files(&o.files),
         })))
     })
-    .map_err(to_py)
 }
 
 /// Samples the study's posterior (`cellstudio sample`); `sampler` entries (e.g. `chains`,
@@ -163,24 +157,20 @@ pub fn fit(py: Python<'_>, path: PathBuf, data: Option<PathBuf>, set: Vec<(Strin
 #[pyfunction]
 #[pyo3(signature = (path, data=None, set=Vec::new(), out=None, sampler=Vec::new()))]
 pub fn sample(py: Python<'_>, path: PathBuf, data: Option<PathBuf>, set: Vec<(String, f64)>, out: Option<PathBuf>, sampler: Vec<(String, i64)>) -> PyResult<String> {
-    py.detach(|| {
+    detached(py, || {
         let mut study = fit_study(&path, set, out)?;
         for (key, value) in sampler {
             study.sampler.insert(key, toml::Value::Integer(value));
         }
         let o = cellstudio::study::sample::run_sample(&study, data.as_deref())?;
-        Ok(json(&json!({
-            "study": study.name,
+        Ok(outcome(&study.name, &o.warnings, &o.files, json!({
             "names": o.names,
             "summary": o.summary,
             "table": o.summary.table(),
             "seconds": o.seconds,
             "notes": o.notes,
-            "warnings": o.warnings,
-            "files": files(&o.files),
         })))
     })
-    .map_err(to_py)
 }
 
 /// Reads and checks the design study at `path` with `set` overrides (as every run does
