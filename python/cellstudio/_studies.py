@@ -1,0 +1,64 @@
+"""Design and fitting studies from their TOML files (``designs/*.toml``, ``fits/*.toml``),
+run as the command line runs them, writing the same files. Relative paths in a study (its
+recording, its output folder) are read from the working directory, as on the command line;
+``out=`` moves a run's output folder. ``set={"path": value}`` is the CLI's ``--set``."""
+
+import json
+import os
+
+from . import _native
+from ._results import DesignResult, FitResult, ParetoResult, SampleResult, SweepResult
+
+
+def _pairs(overrides):
+    return [(str(k), float(v)) for k, v in (overrides or {}).items()]
+
+
+def _path(p):
+    return None if p is None else os.fspath(p)
+
+
+class DesignStudy:
+    """A design study file, read and checked; ``run()``, ``sweep()`` and ``pareto()`` are
+    ``cellstudio design``, ``sweep`` and ``pareto`` on it."""
+
+    def __init__(self, path, set=None):
+        self.path = os.fspath(path)
+        self.overrides = dict(set or {})
+        self.study = json.loads(_native.load_design(self.path, _pairs(self.overrides)))
+
+    @classmethod
+    def from_file(cls, path, set=None):
+        return cls(path, set)
+
+    @property
+    def name(self):
+        return self.study["name"]
+
+    def run(self, out=None):
+        """Runs the study's optimiser from the baseline design (GIL released)."""
+        return DesignResult(json.loads(_native.design(self.path, _pairs(self.overrides), _path(out))))
+
+    def sweep(self, out=None):
+        """Evaluates the study's ``[sweep]`` grid in parallel (GIL released)."""
+        return SweepResult(json.loads(_native.sweep(self.path, _pairs(self.overrides), _path(out))))
+
+    def pareto(self, out=None):
+        """Runs NSGA-II on the study's objectives (GIL released)."""
+        return ParetoResult(json.loads(_native.pareto(self.path, _pairs(self.overrides), _path(out))))
+
+    def __repr__(self):
+        return f"DesignStudy({self.path!r})"
+
+
+def fit(study_path, data=None, set=None, out=None):
+    """``cellstudio fit STUDY [--data DATA]``: fits the study's parameters; raises
+    ``CellstudioError`` when a parameter ends on a bound (outputs in ``NAME.rejected``)."""
+    return FitResult(json.loads(_native.fit(os.fspath(study_path), _path(data), _pairs(set), _path(out))))
+
+
+def sample(study_path, data=None, set=None, out=None, sampler=None):
+    """``cellstudio sample STUDY``: MCMC of the study's posterior; ``sampler`` entries
+    (``chains``, ``iterations``, ``warmup``, ``seed``) replace the study's ``[sampler]`` ones."""
+    options = [(str(k), int(v)) for k, v in (sampler or {}).items()]
+    return SampleResult(json.loads(_native.sample(os.fspath(study_path), _path(data), _pairs(set), _path(out), options)))
