@@ -5,8 +5,8 @@ use std::time::Instant;
 
 use cellstudio::geometry::MeshSizes;
 use cellstudio::models::{ModelBuilder, ModelKind, Submodels};
-use cellstudio::protocol::Protocol;
 use cellstudio::simulation::{SimOptions, Solution};
+use cellstudio::study::simulate::ProtocolSource;
 use cellstudio::Error;
 use numpy::IntoPyArray;
 use pyo3::prelude::*;
@@ -67,11 +67,9 @@ fn run(kind: ModelKind, p: &cellstudio::params::ParameterSet, experiment: &[Stri
     if mesh < 2 {
         return Err(Error::invalid("mesh", mesh as f64, "must be at least 2 volumes"));
     }
-    let protocol = if experiment.is_empty() {
-        Protocol::discharge_within(c_rate, p.discharge_time_limit(c_rate))
-    } else {
-        cellstudio::protocol::experiment::parse(experiment, p.cell.nominal_capacity)?
-    };
+    // The command line's protocol choice and error naming (`study::simulate`).
+    let source = if experiment.is_empty() { ProtocolSource::Discharge { c_rate } } else { ProtocolSource::Experiment(experiment.to_vec()) };
+    let protocol = source.protocol(p)?;
     let submodels = Submodels { contact_resistance: contact_resistance || p.cell.contact_resistance > 0.0, thermal, ..Default::default() };
     let sizes = MeshSizes { x_n: mesh, x_s: mesh, x_p: mesh, r_n: mesh, r_p: mesh };
     let t = Instant::now();
@@ -79,15 +77,6 @@ fn run(kind: ModelKind, p: &cellstudio::params::ParameterSet, experiment: &[Stri
     let built = builder.build(p)?;
     let build_time = t.elapsed().as_secs_f64();
     let t = Instant::now();
-    let sol = cellstudio::simulation::simulate(built.model.as_ref(), &mut built.workspace, &protocol, &SimOptions::for_cell(p), None).map_err(|e| {
-        if experiment.is_empty() {
-            match e {
-                Error::StepDemand { .. } => e.demand_named("c_rate", c_rate),
-                e => Error::InvalidSetting { field: "c_rate".into(), reason: format!("a {c_rate} C discharge failed: {e}") },
-            }
-        } else {
-            Error::InvalidSetting { field: "experiment".into(), reason: format!("{experiment:?} failed: {e}") }
-        }
-    })?;
+    let sol = cellstudio::simulation::simulate(built.model.as_ref(), &mut built.workspace, &protocol, &SimOptions::for_cell(p), None).map_err(|e| source.name_failure(e))?;
     Ok((sol, build_time, t.elapsed().as_secs_f64()))
 }

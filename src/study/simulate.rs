@@ -74,7 +74,8 @@ impl SimulateOutcome {
 }
 
 impl ProtocolSource {
-    fn protocol(&self, p: &ParameterSet) -> Result<Protocol, Error> {
+    /// The protocol for the cell `p` (a bad rate, step string or file is an error naming it).
+    pub fn protocol(&self, p: &ParameterSet) -> Result<Protocol, Error> {
         match self {
             ProtocolSource::Discharge { c_rate } => {
                 if !(*c_rate > 0.0 && c_rate.is_finite()) {
@@ -91,7 +92,7 @@ impl ProtocolSource {
     }
 
     /// A failed simulation named by what the user wrote: the rate, the experiment or the file.
-    fn name_failure(&self, e: Error) -> Error {
+    pub fn name_failure(&self, e: Error) -> Error {
         match self {
             ProtocolSource::Experiment(steps) => Error::InvalidSetting { field: "--experiment".into(), reason: format!("{steps:?} failed: {e}") },
             ProtocolSource::Discharge { c_rate } if matches!(e, Error::StepDemand { .. }) => e.demand_named("--c-rate", *c_rate),
