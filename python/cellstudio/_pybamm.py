@@ -29,6 +29,21 @@ _PREFIX = {
 _PYBAMM_RENAMES = {"External surface area [m2]": "Cell cooling surface area [m2]", "Volume [m3]": "Cell volume [m3]"}
 
 
+# PyBaMM's own names (as in `pybamm.ParameterValues("Chen2020")`) for scalars that BPX names
+# differently or converts: each is one field here.
+_PYBAMM_NAMES = {
+    **{f"{side.title()} particle diffusivity [m2.s-1]": f"{side}.diffusivity" for side in ("negative", "positive")},
+    **{f"{side.title()} electrode active material volume fraction": f"{side}.active_fraction" for side in ("negative", "positive")},
+    **{f"{side.title()} electrode Bruggeman coefficient (electrolyte)": f"{side}.bruggeman_electrolyte" for side in ("negative", "positive")},
+    **{f"{side.title()} electrode Bruggeman coefficient (electrode)": f"{side}.bruggeman_solid" for side in ("negative", "positive")},
+    **{f"{side.title()} electrode conductivity [S.m-1]": f"{side}.conductivity" for side in ("negative", "positive")},
+    "Separator Bruggeman coefficient (electrolyte)": "separator.bruggeman",
+    "Separator porosity": "separator.porosity",
+    "Separator thickness [m]": "separator.thickness",
+    "Contact resistance [Ohm]": "cell.contact_resistance",
+}
+
+
 def pybamm_name(section, key):
     """The PyBaMM parameter name of BPX ``key`` in ``section``, by PyBaMM's BPX naming rule."""
     pre, short = _PREFIX[section]
@@ -86,6 +101,9 @@ def known_names():
                     direct[n] = hits[0]
                 else:
                     converted[n] = f"BPX `{section}/{key}`, which this crate converts (not one of its scalars); set the field by its dotted path instead"
+    direct.update(_PYBAMM_NAMES)
+    for name in _PYBAMM_NAMES:
+        converted.pop(name, None)
     return direct, converted
 
 

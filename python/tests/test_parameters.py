@@ -86,3 +86,19 @@ def test_pybamm_functions_and_unknown_names_are_refused_by_name():
     assert "Typical current [A]" in str(e.value)
     ps = cs.ParameterSet.from_pybamm(values, ignore_unknown=True)
     assert ps.get("positive.thickness") == 7.0e-5
+
+
+def test_pybamm_own_names_for_particle_diffusivity_fractions_and_contact_resistance():
+    """Names as `pybamm.ParameterValues("Chen2020")` spells them, which BPX names otherwise."""
+    ps = cs.ParameterSet.from_pybamm(
+        {
+            "Negative particle diffusivity [m2.s-1]": 3.0e-14,
+            "Positive electrode active material volume fraction": 0.66,
+            "Negative electrode Bruggeman coefficient (electrolyte)": 1.6,
+            "Contact resistance [Ohm]": 0.012,
+        }
+    )
+    assert ps.get("negative.diffusivity") == 3.0e-14
+    assert ps.get("positive.active_fraction") == 0.66
+    assert ps.get("negative.bruggeman_electrolyte") == 1.6
+    assert ps.get("cell.contact_resistance") == 0.012
