@@ -15,6 +15,7 @@ pub mod optim;
 pub mod output;
 pub mod params;
 pub mod problem;
+pub mod progress;
 pub mod protocol;
 pub mod report;
 pub mod sample;

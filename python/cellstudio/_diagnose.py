@@ -9,6 +9,7 @@ import tempfile
 from . import _native
 from ._errors import CellstudioError
 from ._parameters import ParameterSet
+from ._progress import with_progress
 from ._results import DiagnosisResult
 
 # Accepted column names per recording column: ours, then PyBaMM's.
@@ -32,15 +33,17 @@ def _recording_columns(frame):
     return out
 
 
-def diagnose(recording, model="spme", parameters=None, out="out/diagnosis", discharge_positive=True, **options):
+def diagnose(recording, model="spme", parameters=None, out="out/diagnosis", discharge_positive=True, progress=True, **options):
     """Diagnoses ``recording`` (a DataFrame, or the path of a recording file) with ``model``
     on ``parameters`` (Chen 2020 when None); writes the report into ``out``. ``options``:
     ``contact_resistance``, ``thermal`` (bool), ``fit`` (dotted paths), ``refits``,
     ``start_at_rest``, ``max_rounds``. ``discharge_positive=False`` flips a frame whose
-    discharge current is negative. The GIL is released while it runs."""
+    discharge current is negative. The GIL is released while it runs; ``progress`` draws the
+    refits' bar with tqdm when it is installed."""
     p = parameters if parameters is not None else ParameterSet.chen2020()
     if isinstance(recording, (str, os.PathLike)):
-        return DiagnosisResult(json.loads(_native.diagnose(os.fspath(recording), p._native, model, os.fspath(out), **options)))
+        path = os.fspath(recording)
+        return DiagnosisResult(json.loads(with_progress(lambda: _native.diagnose(path, p._native, model, os.fspath(out), **options), progress=progress)))
     import pandas as pd
 
     columns = _recording_columns(recording)
@@ -49,4 +52,4 @@ def diagnose(recording, model="spme", parameters=None, out="out/diagnosis", disc
     with tempfile.TemporaryDirectory(prefix="cellstudio-") as tmp:
         path = os.path.join(tmp, "recording.csv")
         pd.DataFrame(columns).to_csv(path, index=False, float_format="%.10g")
-        return DiagnosisResult(json.loads(_native.diagnose(path, p._native, model, os.fspath(out), **options)))
+        return DiagnosisResult(json.loads(with_progress(lambda: _native.diagnose(path, p._native, model, os.fspath(out), **options), progress=progress)))

@@ -7,6 +7,7 @@ import json
 import os
 
 from . import _native
+from ._progress import with_progress
 from ._results import DesignResult, FitResult, ParetoResult, SampleResult, SweepResult
 
 
@@ -35,30 +36,30 @@ class DesignStudy:
     def name(self):
         return self.study["name"]
 
-    def run(self, out=None):
+    def run(self, out=None, progress=True):
         """Runs the study's optimiser from the baseline design (GIL released)."""
-        return DesignResult(json.loads(_native.design(self.path, _pairs(self.overrides), _path(out))))
+        return DesignResult(json.loads(with_progress(_native.design, self.path, _pairs(self.overrides), _path(out), progress=progress)))
 
-    def sweep(self, out=None):
+    def sweep(self, out=None, progress=True):
         """Evaluates the study's ``[sweep]`` grid in parallel (GIL released)."""
-        return SweepResult(json.loads(_native.sweep(self.path, _pairs(self.overrides), _path(out))))
+        return SweepResult(json.loads(with_progress(_native.sweep, self.path, _pairs(self.overrides), _path(out), progress=progress)))
 
-    def pareto(self, out=None):
+    def pareto(self, out=None, progress=True):
         """Runs NSGA-II on the study's objectives (GIL released)."""
-        return ParetoResult(json.loads(_native.pareto(self.path, _pairs(self.overrides), _path(out))))
+        return ParetoResult(json.loads(with_progress(_native.pareto, self.path, _pairs(self.overrides), _path(out), progress=progress)))
 
     def __repr__(self):
         return f"DesignStudy({self.path!r})"
 
 
-def fit(study_path, data=None, set=None, out=None):
+def fit(study_path, data=None, set=None, out=None, progress=True):
     """``cellstudio fit STUDY [--data DATA]``: fits the study's parameters; raises
     ``CellstudioError`` when a parameter ends on a bound (outputs in ``NAME.rejected``)."""
-    return FitResult(json.loads(_native.fit(os.fspath(study_path), _path(data), _pairs(set), _path(out))))
+    return FitResult(json.loads(with_progress(_native.fit, os.fspath(study_path), _path(data), _pairs(set), _path(out), progress=progress)))
 
 
-def sample(study_path, data=None, set=None, out=None, sampler=None):
+def sample(study_path, data=None, set=None, out=None, sampler=None, progress=True):
     """``cellstudio sample STUDY``: MCMC of the study's posterior; ``sampler`` entries
     (``chains``, ``iterations``, ``warmup``, ``seed``) replace the study's ``[sampler]`` ones."""
     options = [(str(k), int(v)) for k, v in (sampler or {}).items()]
-    return SampleResult(json.loads(_native.sample(os.fspath(study_path), _path(data), _pairs(set), _path(out), options)))
+    return SampleResult(json.loads(with_progress(_native.sample, os.fspath(study_path), _path(data), _pairs(set), _path(out), options, progress=progress)))

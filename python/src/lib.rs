@@ -24,6 +24,13 @@ pub(crate) fn json(value: &serde_json::Value) -> String {
     value.to_string()
 }
 
+/// Label, position and length of the library's current progress bar while a run goes on
+/// (`None` otherwise): polled by the Python layer to draw it with tqdm.
+#[pyfunction]
+fn progress() -> Option<(String, u64, u64)> {
+    cellstudio::progress::snapshot()
+}
+
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("CellstudioError", m.py().get_type::<CellstudioError>())?;
@@ -36,5 +43,6 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(studies::fit, m)?)?;
     m.add_function(wrap_pyfunction!(studies::sample, m)?)?;
     m.add_function(wrap_pyfunction!(diagnosis::diagnose, m)?)?;
+    m.add_function(wrap_pyfunction!(progress, m)?)?;
     Ok(())
 }

@@ -55,3 +55,33 @@ def test_contact_resistance_fit_and_sample(at_repo, tmp_path):
     posterior = cs.sample(study, out=tmp_path / "sample", sampler={"chains": 2, "iterations": 400, "warmup": 200})
     summary = posterior.to_pandas()
     assert math.isclose(summary.loc["cell.contact_resistance", "mean"], 0.010, rel_tol=0.02)
+
+
+def test_long_runs_draw_the_library_progress_with_tqdm(at_repo, tmp_path, monkeypatch):
+    """A run goes on in a worker thread while the caller polls the library's current bar and
+    hands it to tqdm: the sampler's bar is seen, and the result is the one drawn without."""
+    import cellstudio._progress as progress
+
+    seen = []
+
+    class FakeTqdm:
+        def __init__(self, total, desc, leave):
+            self.total, self.n = total, 0
+            seen.append((desc, total))
+
+        def refresh(self):
+            pass
+
+        def close(self):
+            pass
+
+    monkeypatch.setattr(progress, "_tqdm", lambda: FakeTqdm)
+    study = at_repo / "fits" / "spm_contact_resistance.toml"
+    options = {"chains": 2, "iterations": 3000, "warmup": 500}
+    drawn = cs.sample(study, out=tmp_path / "drawn", sampler=options)
+    plain = cs.sample(study, out=tmp_path / "plain", sampler=options, progress=False)
+    assert any(total == 2 * 3500 for _, total in seen), seen
+    assert drawn.to_pandas().equals(plain.to_pandas())
+    assert progress.with_progress(lambda: 42) == 42
+    with pytest.raises(ZeroDivisionError):
+        progress.with_progress(lambda: 1 / 0)

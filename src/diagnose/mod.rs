@@ -259,10 +259,8 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
             (c, aug)
         })
         .collect();
-    let progress = indicatif::ProgressBar::new(plan.len() as u64).with_message(format!("refitting candidates on {}", describe(&options.spec)));
-    if let Ok(style) = indicatif::ProgressStyle::with_template("{msg} {bar:30} {pos}/{len} [{elapsed}]") {
-        progress.set_style(style);
-    }
+    let progress = crate::progress::bar("diagnose", plan.len() as u64, "{msg} {bar:30} {pos}/{len} [{elapsed}]");
+    progress.set_message(format!("refitting candidates on {}", describe(&options.spec)));
     let mut outcomes: Vec<CandidateOutcome> = plan
         .into_par_iter()
         .map(|(c, aug)| {

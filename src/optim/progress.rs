@@ -1,7 +1,7 @@
 //! A progress bar over an optimiser's iterations, which also records the trace. indicatif
 //! draws it on stderr only when that is a terminal, so logs and tests stay clean.
 
-use indicatif::{ProgressBar, ProgressStyle};
+use indicatif::ProgressBar;
 
 use super::{Observer, TraceObserver};
 
@@ -16,10 +16,7 @@ pub struct ProgressObserver {
 impl ProgressObserver {
     /// A bar of `max_iterations` steps headed `what` (e.g. "fit").
     pub fn new(what: &str, max_iterations: usize, describe: fn(f64) -> String) -> Self {
-        let bar = ProgressBar::new(max_iterations as u64);
-        if let Ok(style) = ProgressStyle::with_template("{prefix} {bar:30} {pos}/{len} iterations [{elapsed}] {msg}") {
-            bar.set_style(style);
-        }
+        let bar = crate::progress::bar(what, max_iterations as u64, "{prefix} {bar:30} {pos}/{len} iterations [{elapsed}] {msg}");
         bar.set_prefix(what.to_string());
         Self { bar, describe, trace: TraceObserver::default() }
     }

@@ -1,6 +1,5 @@
 //! Parameter sweeps: evaluate a design problem over a grid in parallel.
 
-use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
@@ -101,11 +100,7 @@ pub fn latin_hypercube(lower: &[f64], upper: &[f64], n: usize, seed: u64) -> Vec
 /// evaluated in turn by one builder. So the number of model builds is about the number of
 /// distinct geometries plus a few per thread, not a number that grows with interleaving.
 pub fn evaluate_all(problem: &DesignProblem, candidates: &[Vec<f64>]) -> Vec<SweepPoint> {
-    let bar = ProgressBar::new(candidates.len() as u64);
-    bar.set_style(
-        ProgressStyle::with_template("{bar:40} {pos}/{len} designs, {elapsed} elapsed, eta {eta}")
-            .unwrap_or_else(|_| ProgressStyle::default_bar()),
-    );
+    let bar = crate::progress::bar("sweep", candidates.len() as u64, "{bar:40} {pos}/{len} designs, {elapsed} elapsed, eta {eta}");
     let tasks = geometry_runs(problem, candidates, 4 * rayon::current_num_threads());
     let mut results: Vec<(usize, SweepPoint)> = tasks
         .par_iter()

@@ -1,7 +1,7 @@
 //! Running several chains: start checks, per-chain seeds, the progress bar, and recording of
 //! the kept draws.
 
-use indicatif::{ProgressBar, ProgressStyle};
+use indicatif::ProgressBar;
 use serde::{Deserialize, Serialize};
 
 use super::summary::PosteriorSummary;
@@ -97,10 +97,7 @@ pub fn sample(
     let seeds: Vec<u64> = (0..options.chains).map(|k| chain_seed(options.seed, k)).collect();
     let schedule = Schedule { warmup: options.warmup, iterations: options.iterations };
     let bar = if options.progress {
-        let bar = ProgressBar::new((options.chains * schedule.total()) as u64);
-        if let Ok(style) = ProgressStyle::with_template("{msg} [{elapsed_precise}] {wide_bar} {pos}/{len} ({eta})") {
-            bar.set_style(style);
-        }
+        let bar = crate::progress::bar(sampler.name(), (options.chains * schedule.total()) as u64, "{msg} [{elapsed_precise}] {wide_bar} {pos}/{len} ({eta})");
         bar.set_message(sampler.name().to_string());
         bar
     } else {

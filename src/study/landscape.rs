@@ -36,10 +36,7 @@ pub(crate) fn landscape(problem: &FittingProblem, cost: CostKind, result: &FitRe
     };
     let (xs, ys) = (axis(0), axis(1));
     let cells: Vec<(usize, usize)> = (0..points).flat_map(|i| (0..points).map(move |j| (i, j))).collect();
-    let bar = indicatif::ProgressBar::new(cells.len() as u64);
-    if let Ok(style) = indicatif::ProgressStyle::with_template("landscape {bar:30} {pos}/{len} points [{elapsed}, eta {eta}]") {
-        bar.set_style(style);
-    }
+    let bar = crate::progress::bar("landscape", cells.len() as u64, "landscape {bar:30} {pos}/{len} points [{elapsed}, eta {eta}]");
     let values: Vec<f64> = cells
         .par_iter()
         .progress_with(bar.clone())

@@ -105,7 +105,7 @@ pub fn run_pareto(study: &Study) -> Result<ParetoOutcome, Error> {
     let start = Instant::now();
     let baseline_m = problem.evaluate(&study.baseline()?)?;
     let baseline: Vec<f64> = metrics.iter().map(|&k| baseline_m.get(k)).collect();
-    let bar = indicatif::ProgressBar::new(opts.generations as u64);
+    let bar = crate::progress::bar("pareto", opts.generations as u64, "pareto {bar:30} {pos}/{len} generations [{elapsed}]");
     let (front, archive) = nsga2(&bounds, &opts, &evaluate, &repair, &mut |g| bar.set_position(g as u64));
     bar.finish_and_clear();
     let seconds = start.elapsed().as_secs_f64();
