@@ -153,8 +153,9 @@ pub struct FitOutcome {
     pub ln_prior_volume: f64,
     /// Whether the search converged (false: it stopped on its iteration cap).
     pub converged: bool,
+    /// Model runs of the fit over all the starts tried (finite-difference columns included).
     pub simulations: usize,
-    /// Wall time (s).
+    /// Wall time (s) of all the starts.
     pub seconds: f64,
     /// Model voltage (V) at every recorded point.
     #[serde(skip)]
@@ -217,6 +218,8 @@ pub fn fit_and_score(
     if doubtful {
         fits.extend(points[1..].par_iter().map(fit_from).collect::<Vec<_>>());
     }
+    // Work of every start, not only the best one's.
+    let simulations: usize = fits.iter().filter_map(|f| f.as_ref().ok()).map(|f| f.simulations).sum();
     let mut best: Option<LeastSquaresFit> = None;
     let mut error = None;
     for f in fits {
@@ -255,7 +258,7 @@ pub fn fit_and_score(
         ln_det_information: fit.ln_det_information,
         ln_prior_volume,
         converged: fit.converged,
-        simulations: fit.simulations,
+        simulations,
         seconds: start.elapsed().as_secs_f64(),
         voltage: fit.voltage,
     })
