@@ -8,7 +8,7 @@
 //! criterion is D_s-optimality on the targets: the log-determinant of the targets' block of
 //! the covariance `F⁻¹` (the volume of their confidence ellipsoid; lower is better). The
 //! targets are the parameters the fit did not identify (relative standard error above
-//! [`MAX_RELATIVE_ERROR`] or correlated beyond [`MAX_CORRELATION`]); all of them when it
+//! [`MAX_RELATIVE_ERROR`](super::verdict::MAX_RELATIVE_ERROR) or correlated beyond [`MAX_CORRELATION`](super::verdict::MAX_CORRELATION)); all of them when it
 //! identified every one. These are predictions at the fitted point: local, as the Fisher
 //! standard errors are.
 
@@ -16,7 +16,8 @@ use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 use super::fitting::FittingProblem;
-use super::verdict::{MAX_CORRELATION, MAX_RELATIVE_ERROR};
+use super::identification::relative_information;
+use super::verdict::{Standing, standings};
 use crate::data::Recording;
 use crate::error::Error;
 use crate::linalg::{sym_eigen, sym_inverse};
@@ -109,17 +110,8 @@ pub struct ExperimentDesign {
 
 /// Fisher information of `problem` at `x` in relative units, noise `sigma` (V).
 pub fn relative_fisher(problem: &FittingProblem, x: &[f64], sigma: f64) -> Result<Vec<f64>, Error> {
-    let p = problem.dim();
     let sim = problem.simulate_with_sensitivities(x)?;
-    let mut f = vec![0.0; p * p];
-    for (row, w) in sim.sensitivity_rows().zip(&problem.weights) {
-        for a in 0..p {
-            for b in 0..p {
-                f[a * p + b] += w * row[a] * x[a] * row[b] * x[b] / (sigma * sigma);
-            }
-        }
-    }
-    Ok(f)
+    Ok(relative_information(&problem.weights, sim.sensitivity_rows(), x).into_iter().map(|v| v / (sigma * sigma)).collect())
 }
 
 /// Relative standard errors and the D_s criterion of `f` on `targets`.
@@ -140,10 +132,12 @@ fn standing(f: &[f64], p: usize, targets: &[usize]) -> Result<(Vec<f64>, f64), E
 /// Parameters the fitted recording leaves undetermined (all of them when none is).
 fn undetermined(f: &[f64], p: usize) -> Result<Vec<usize>, Error> {
     let cov = sym_inverse(f, p)?;
-    let se = |a: usize| cov[a * p + a].max(0.0).sqrt();
-    let loose: Vec<usize> = (0..p)
-        .filter(|&a| !(se(a) <= MAX_RELATIVE_ERROR) || (0..p).any(|b| b != a && (cov[a * p + b] / (se(a) * se(b))).abs() > MAX_CORRELATION))
-        .collect();
+    let se: Vec<f64> = (0..p).map(|a| cov[a * p + a].max(0.0).sqrt()).collect();
+    let rho: Vec<Vec<f64>> = (0..p).map(|a| (0..p).map(|b| cov[a * p + b] / (se[a] * se[b])).collect()).collect();
+    // Relative units: every parameter at 1.
+    let names: Vec<String> = (0..p).map(|a| a.to_string()).collect();
+    let loose: Vec<usize> =
+        standings(&names, &vec![1.0; p], &se, &rho).iter().enumerate().filter(|(_, s)| !matches!(s, Standing::Identified { .. })).map(|(a, _)| a).collect();
     Ok(if loose.is_empty() { (0..p).collect() } else { loose })
 }
 

@@ -207,6 +207,22 @@ pub fn identifiability(problem: &FittingProblem, sim: &Simulated) -> Result<Iden
     covariance(&problem.residuals(&sim.voltage), &problem.weights, sim.sensitivity_rows(), &scale)
 }
 
+/// `Σ_t w_t (θ_a ∂V_t/∂θ_a)(θ_b ∂V_t/∂θ_b)` (row-major `p × p`, V²) from point weights `w`
+/// and sensitivity rows (V per parameter unit), `θ = scale`: the Fisher information in
+/// relative units (times the noise variance), which keeps the eigenproblem well scaled.
+pub fn relative_information<'a>(w: &[f64], sensitivity: impl IntoIterator<Item = &'a [f64]>, scale: &[f64]) -> Vec<f64> {
+    let p = scale.len();
+    let mut fisher = vec![0.0; p * p];
+    for (row, &wi) in sensitivity.into_iter().zip(w) {
+        for a in 0..p {
+            for b in 0..p {
+                fisher[a * p + b] += wi * row[a] * scale[a] * row[b] * scale[b];
+            }
+        }
+    }
+    fisher
+}
+
 /// [`identifiability`] from residuals `r` (V), point weights `w` and sensitivity rows
 /// (V per parameter unit, one per residual), with `scale` the typical size of each parameter.
 pub fn covariance<'a>(r: &[f64], w: &[f64], sensitivity: impl IntoIterator<Item = &'a [f64]>, scale: &[f64]) -> Result<Identifiability, Error> {
@@ -218,15 +234,7 @@ pub fn covariance<'a>(r: &[f64], w: &[f64], sensitivity: impl IntoIterator<Item 
         return Ok(Identifiability { rmse, std_errors: Vec::new(), correlation: Vec::new() });
     }
     let s2 = sse / (weight - p as f64).max(1.0);
-    // Fisher information in relative units (θ_k ∂V/∂θ_k) keeps the eigenproblem well scaled.
-    let mut fisher = vec![0.0; p * p];
-    for (row, &wi) in sensitivity.into_iter().zip(w) {
-        for a in 0..p {
-            for b in 0..p {
-                fisher[a * p + b] += wi * row[a] * scale[a] * row[b] * scale[b];
-            }
-        }
-    }
+    let fisher = relative_information(w, sensitivity, scale);
     let mut cov = crate::linalg::sym_inverse(&fisher, p)?;
     for a in 0..p {
         for b in 0..p {

@@ -4,7 +4,7 @@
 //! `experiment_design.json`.
 
 use std::fmt::Write as _;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use crate::error::Error;
 use crate::problem::experiment_design::{DesignSettings, design_experiment};
@@ -14,15 +14,8 @@ use crate::problem::identification::FitResult;
 /// Candidates listed in the report (all are in the JSON).
 const LISTED: usize = 8;
 
-/// What the design adds to a fit's outputs.
-pub struct DesignOutputs {
-    pub files: Vec<PathBuf>,
-    /// The report's section (Markdown).
-    pub section: String,
-}
-
 /// Ranks the candidates at the fitted point, with the fit's RMSE as the noise level.
-pub fn write_design(dir: &Path, problem: &FittingProblem, result: &FitResult, settings: &DesignSettings) -> Result<DesignOutputs, Error> {
+pub fn write_design(dir: &Path, problem: &FittingProblem, result: &FitResult, settings: &DesignSettings) -> Result<super::ReportSection, Error> {
     let x = &result.x[..problem.dim()];
     let d = design_experiment(problem, x, result.rmse, settings)?;
     let pct = |v: f64| if v.is_finite() { format!("{:.2} %", 100.0 * v) } else { "inf".into() };
@@ -42,5 +35,5 @@ pub fn write_design(dir: &Path, problem: &FittingProblem, result: &FitResult, se
     }
     let json = dir.join("experiment_design.json");
     crate::error::write_file(&json, serde_json::to_string_pretty(&d).expect("serialisable"))?;
-    Ok(DesignOutputs { files: vec![json], section })
+    Ok(super::ReportSection { files: vec![json], section, warnings: Vec::new() })
 }

@@ -96,23 +96,22 @@ impl FitStudy {
                 return Err(Error::invalid("landscape.points", l.points as f64, "must lie in 2..=200"));
             }
         }
+        // Sections that analyse one recording's fit.
+        let single = |field: &str, what: &str| match self.data.len() > 1 {
+            true => Err(Error::InvalidSetting { field: field.into(), reason: format!("{what} one [data] entry, not a joint fit") }),
+            false => Ok(()),
+        };
         if let Some(p) = &self.profile {
             p.validate()?;
-            if self.data.len() > 1 {
-                return Err(Error::InvalidSetting { field: "profile".into(), reason: "profile likelihoods take one [data] entry, not a joint fit".into() });
-            }
+            single("profile", "profile likelihoods take")?;
         }
         if let Some(d) = &self.experiment_design {
             d.validate()?;
-            if self.data.len() > 1 {
-                return Err(Error::InvalidSetting { field: "experiment_design".into(), reason: "experiment design takes one [data] entry, not a joint fit".into() });
-            }
+            single("experiment_design", "experiment design takes")?;
         }
         if let Some(s) = &self.sobol {
             s.validate()?;
-            if self.data.len() > 1 {
-                return Err(Error::InvalidSetting { field: "sobol".into(), reason: "Sobol' indices take one [data] entry, not a joint fit".into() });
-            }
+            single("sobol", "Sobol' indices take")?;
         }
         for (k, d) in self.data.iter().enumerate() {
             d.validate(k)?;
@@ -351,22 +350,15 @@ pub(crate) fn single_fit_into(study: &FitStudy, data: Option<&Path>, dir: &Path)
     }
     write_output(dir, "fit.json", serde_json::to_string_pretty(&result).expect("serialisable"), &mut files)?;
     let mut md = report(study, &problem, &result, initial_rmse);
-    if let Some(settings) = &study.profile {
-        let profiles = super::profiles::write_profiles(dir, &study.name, &problem, &result, settings)?;
-        md.push_str(&profiles.section);
-        files.extend(profiles.files);
-        warnings.extend(profiles.warnings);
-    }
-    if let Some(settings) = &study.experiment_design {
-        let design = super::experiment_design::write_design(dir, &problem, &result, settings)?;
-        md.push_str(&design.section);
-        files.extend(design.files);
-    }
-    if let Some(settings) = &study.sobol {
-        let sobol = super::sobol::write_sobol(dir, &problem, settings)?;
-        md.push_str(&sobol.section);
-        files.extend(sobol.files);
-        warnings.extend(sobol.warnings);
+    let sections = [
+        study.profile.as_ref().map(|s| super::profiles::write_profiles(dir, &study.name, &problem, &result, s)).transpose()?,
+        study.experiment_design.as_ref().map(|s| super::experiment_design::write_design(dir, &problem, &result, s)).transpose()?,
+        study.sobol.as_ref().map(|s| super::sobol::write_sobol(dir, &problem, s)).transpose()?,
+    ];
+    for section in sections.into_iter().flatten() {
+        md.push_str(&section.section);
+        files.extend(section.files);
+        warnings.extend(section.warnings);
     }
     write_output(dir, "report.md", with_notes(md, &notes, &warnings), &mut files)?;
     Ok(FitOutcome { result, initial_rmse, files, notes, warnings, at_bound, experiments: Vec::new(), rejection: None })

@@ -23,6 +23,16 @@ pub mod sweep;
 mod warnings;
 pub use warnings::{OnBound, at_bound_warnings, named_on_bounds, on_bounds, truncation_warning};
 
+
+/// What an optional section of a fit report (profiles, experiment design, Sobol' indices)
+/// adds to the fit's outputs.
+pub struct ReportSection {
+    pub files: Vec<std::path::PathBuf>,
+    /// The report's section (Markdown).
+    pub section: String,
+    pub warnings: Vec<String>,
+}
+
 use std::path::{Path, PathBuf};
 
 use serde::{Deserialize, Serialize};

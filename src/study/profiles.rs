@@ -3,7 +3,7 @@
 //! and `profiles.json`.
 
 use std::fmt::Write as _;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
@@ -30,17 +30,9 @@ impl ProfileSettings {
     }
 }
 
-/// What the profiles add to a fit's outputs.
-pub struct ProfileOutputs {
-    pub files: Vec<PathBuf>,
-    /// The report's section (Markdown).
-    pub section: String,
-    pub warnings: Vec<String>,
-}
-
 /// Profiles every fitted parameter of `problem` around `result` (in parallel) and writes
 /// `profile_<k>.svg` per parameter and `profiles.json` into `dir`.
-pub fn write_profiles(dir: &Path, title: &str, problem: &FittingProblem, result: &FitResult, settings: &ProfileSettings) -> Result<ProfileOutputs, Error> {
+pub fn write_profiles(dir: &Path, title: &str, problem: &FittingProblem, result: &FitResult, settings: &ProfileSettings) -> Result<super::ReportSection, Error> {
     let best = &result.x[..problem.dim()];
     let profiles: Vec<Profile> =
         (0..problem.dim()).into_par_iter().map(|k| profile(problem, best, &result.std_errors, k, settings.points)).collect::<Result<_, _>>()?;
@@ -77,5 +69,5 @@ pub fn write_profiles(dir: &Path, title: &str, problem: &FittingProblem, result:
     let json = dir.join("profiles.json");
     crate::error::write_file(&json, serde_json::to_string_pretty(&profiles).expect("serialisable"))?;
     files.push(json);
-    Ok(ProfileOutputs { files, section, warnings })
+    Ok(super::ReportSection { files, section, warnings })
 }

@@ -3,23 +3,15 @@
 //! `sobol.json`.
 
 use std::fmt::Write as _;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use crate::error::Error;
 use crate::problem::fitting::FittingProblem;
 use crate::problem::global_sensitivity::{NEGLIGIBLE_TOTAL, global_sensitivity};
 use crate::stats::sobol::SobolSettings;
 
-/// What the indices add to a fit's outputs.
-pub struct SobolOutputs {
-    pub files: Vec<PathBuf>,
-    /// The report's section (Markdown).
-    pub section: String,
-    pub warnings: Vec<String>,
-}
-
 /// Computes the indices (in parallel, with a progress line on stderr) and writes `sobol.json`.
-pub fn write_sobol(dir: &Path, problem: &FittingProblem, settings: &SobolSettings) -> Result<SobolOutputs, Error> {
+pub fn write_sobol(dir: &Path, problem: &FittingProblem, settings: &SobolSettings) -> Result<super::ReportSection, Error> {
     let runs = settings.samples * (problem.dim() + 2);
     eprintln!("sobol: {runs} simulations over the parameters' search boxes");
     let g = global_sensitivity(problem, settings)?;
@@ -41,5 +33,5 @@ pub fn write_sobol(dir: &Path, problem: &FittingProblem, settings: &SobolSetting
     }
     let json = dir.join("sobol.json");
     crate::error::write_file(&json, serde_json::to_string_pretty(&g).expect("serialisable"))?;
-    Ok(SobolOutputs { files: vec![json], section, warnings })
+    Ok(super::ReportSection { files: vec![json], section, warnings })
 }
