@@ -1,5 +1,5 @@
 //! Battery models sharing one state/output interface: SPM, SPMe, DFN and a Thevenin ECM,
-//! with switchable submodels (contact resistance, lumped thermal).
+//! with switchable submodels (contact resistance, lumped thermal, SEI growth).
 
 pub mod builder;
 pub mod dfn;
@@ -73,6 +73,9 @@ pub struct Submodels {
     /// One-state OCV hysteresis (`cell.hysteresis_voltage`, `cell.hysteresis_rate`,
     /// `cell.hysteresis_initial`): one extra state.
     pub hysteresis: bool,
+    /// SEI growth on the negative electrode (`sei` parameters), x-averaged: one extra state
+    /// in the SPM and SPMe; the DFN has none yet.
+    pub sei: submodels::SeiModel,
 }
 
 impl Submodels {
@@ -107,6 +110,14 @@ pub trait Model: Send + Sync {
     fn temperature(&self, y: &[f64]) -> f64;
     /// Lithium held in the solid phases (mol).
     fn solid_lithium(&self, y: &[f64]) -> f64;
+    /// Lithium bound in the SEI (mol); zero without an SEI submodel.
+    fn sei_lithium(&self, _y: &[f64]) -> f64 {
+        0.0
+    }
+    /// SEI thickness (m), x-averaged; `None` without an SEI submodel.
+    fn sei_thickness(&self, _y: &[f64]) -> Option<f64> {
+        None
+    }
     /// Open-circuit voltage at the particles' average stoichiometries (V).
     fn open_circuit_voltage(&self, y: &[f64]) -> f64;
     /// The lithium-plating margin (V): the smallest `phi_s - phi_e` in the negative electrode,

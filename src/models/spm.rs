@@ -1,11 +1,12 @@
 //! Single particle model: one representative particle per electrode, uniform interfacial
 //! current, electrolyte at its initial concentration.
 //!
-//! States: negative shells `c_n` (mol/m^3), positive shells `c_p`, then `T` (K) when the
-//! thermal submodel is on.
+//! States: negative shells `c_n` (mol/m^3), positive shells `c_p`, the SEI concentration
+//! (mol/m^3) when an SEI submodel is on, then `T` (K) when the thermal submodel is on.
 
 use super::electrochem::{Electrochem, Side};
 use super::kinetics::{overpotential, particle_factor};
+use super::submodels::SeiLayer;
 use super::submodels::thermal::bernardi_heat;
 use super::{Model, PhysicsModel, push_tridiagonal};
 use crate::params::ParameterSet;
@@ -13,6 +14,7 @@ use crate::params::ParameterSet;
 #[derive(Clone, Debug)]
 pub struct Spm {
     pub ec: Electrochem,
+    sei: SeiLayer,
     mass: Vec<f64>,
     scale: Vec<f64>,
 }
@@ -20,13 +22,15 @@ pub struct Spm {
 impl Spm {
     pub fn new(ec: Electrochem) -> Self {
         let (nn, np) = (ec.disc.sphere_n.len(), ec.disc.sphere_p.len());
-        let n = nn + np + usize::from(ec.submodels.thermal);
+        let sei = SeiLayer::new(ec.submodels.sei, nn + np, 1);
+        let n = nn + np + sei.len() + usize::from(ec.submodels.thermal);
         let mut scale = vec![ec.params.negative.max_concentration; nn];
         scale.extend(std::iter::repeat_n(ec.params.positive.max_concentration, np));
+        scale.extend(sei.indices().map(|_| SeiLayer::initial_concentration(&ec)));
         if ec.submodels.thermal {
             scale.push(ec.params.thermal.ambient_temperature);
         }
-        Self { ec, mass: vec![1.0; n], scale }
+        Self { ec, sei, mass: vec![1.0; n], scale }
     }
 
     fn split<'a>(&self, y: &'a [f64]) -> (&'a [f64], &'a [f64]) {
@@ -44,7 +48,8 @@ impl Spm {
 
 impl Spm {
     /// `phi_s - phi_e` (V) at an electrode's particle surface `c_s` (mol/m^3): its OCP plus
-    /// the reaction overpotential of the applied current.
+    /// the reaction overpotential of the applied current (PyBaMM's inverse kinetics: of the
+    /// total interfacial current), plus the SEI film's drop in the negative electrode.
     fn surface_potential_difference(&self, side: Side, c_s: f64, y: &[f64], current: f64) -> f64 {
         let ec = &self.ec;
         let temp = self.temperature(y);
@@ -54,7 +59,19 @@ impl Spm {
         // sqrt(c_e) (2.5e-7 of j0, 1e-5 mV): see docs/pybamm_equations.md, section 1.
         let c_in = c_s.clamp(0.0, e.max_concentration);
         let j0 = ec.rate_constant(side, temp) * ec.params.electrolyte.initial_concentration.sqrt() * particle_factor(c_in, e.max_concentration);
-        ec.ocp(side, c_s) + overpotential(j, j0, e.charge_transfer_coefficient, temp)
+        let film = if side == Side::Negative { self.sei.film(ec, y, current) } else { 0.0 };
+        ec.ocp(side, c_s) + overpotential(j, j0, e.charge_transfer_coefficient, temp) + film
+    }
+
+    /// Writes the SEI state's rate into `out` and returns the side-reaction current density
+    /// (A/m^2); zero without SEI.
+    fn sei_rhs(&self, y: &[f64], current: f64, out: &mut [f64]) -> f64 {
+        if self.sei.len() == 0 {
+            return 0.0;
+        }
+        let (sn, _) = self.surface_concentrations(y);
+        let delta_phi = self.surface_potential_difference(Side::Negative, sn, y, current);
+        self.sei.rhs(&self.ec, y, std::iter::once(delta_phi), current, self.temperature(y), out)
     }
 }
 
@@ -82,12 +99,14 @@ impl Model for Spm {
         for (start, len) in [(0, nn), (nn, np)] {
             push_tridiagonal(&mut p, start, len);
         }
+        let t = nn + np + self.sei.len();
+        let thermal: &[usize] = if self.ec.submodels.thermal { &[t] } else { &[] };
+        self.sei.push_pattern(&mut p, [nn - 2, nn - 1], thermal);
         if self.ec.submodels.thermal {
-            let t = nn + np;
             for i in 0..t {
                 p.push((i, t));
             }
-            for i in [nn - 2, nn - 1, t - 2, t - 1, t] {
+            for i in [nn - 2, nn - 1, nn + np - 2, nn + np - 1, t].into_iter().chain(self.sei.indices()) {
                 p.push((t, i));
             }
         }
@@ -98,6 +117,7 @@ impl Model for Spm {
         let p = &self.ec.params;
         let mut y = vec![p.negative.initial_concentration; self.ec.disc.sphere_n.len()];
         y.extend(std::iter::repeat_n(p.positive.initial_concentration, self.ec.disc.sphere_p.len()));
+        self.sei.push_initial(&self.ec, &mut y);
         if self.ec.submodels.thermal {
             y.push(p.thermal.initial_temperature);
         }
@@ -110,8 +130,9 @@ impl Model for Spm {
         let np = ec.disc.sphere_p.len();
         let temp = self.temperature(y);
         let (cn, cp) = self.split(y);
-        for (side, c, range) in [(Side::Negative, cn, 0..nn), (Side::Positive, cp, nn..nn + np)] {
-            let flux = Electrochem::molar_flux(ec.mean_interfacial_current(side, current));
+        let j_sei = self.sei_rhs(y, current, out);
+        for (side, c, range, side_reaction) in [(Side::Negative, cn, 0..nn, j_sei), (Side::Positive, cp, nn..nn + np, 0.0)] {
+            let flux = Electrochem::molar_flux(ec.mean_interfacial_current(side, current) - side_reaction);
             ec.sphere(side).diffusion(c, ec.diffusivity(side, temp), flux, &mut out[range]);
         }
         if ec.submodels.thermal {
@@ -119,7 +140,7 @@ impl Model for Spm {
             let ocv = ec.ocp(Side::Positive, sp) - ec.ocp(Side::Negative, sn);
             let v = self.voltage(y, current);
             let heat = bernardi_heat(current, ocv, v, temp, ec.docv_dt());
-            out[nn + np] = ec.thermal.rate(heat, temp);
+            out[self.len() - 1] = ec.thermal.rate(heat, temp);
         }
     }
 
@@ -148,6 +169,14 @@ impl Model for Spm {
         self.ec.single_particle_lithium(cn, cp)
     }
 
+    fn sei_lithium(&self, y: &[f64]) -> f64 {
+        self.sei.lithium(&self.ec, y)
+    }
+
+    fn sei_thickness(&self, y: &[f64]) -> Option<f64> {
+        self.sei.thickness(&self.ec, y)
+    }
+
     fn fields(&self, y: &[f64]) -> Vec<super::Field> {
         let (cn, cp) = self.split(y);
         self.ec.single_particle_fields(cn, cp)
@@ -155,6 +184,7 @@ impl Model for Spm {
 
     fn output_states(&self) -> Vec<usize> {
         let mut out = self.ec.single_particle_surface_states();
+        out.extend(self.sei.indices());
         out.extend(self.ec.submodels.thermal.then(|| self.len() - 1));
         out
     }

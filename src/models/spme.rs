@@ -4,11 +4,13 @@
 //! phase's ohmic drop.
 //!
 //! States: negative shells, positive shells (mol/m^3), electrolyte concentration over all x
-//! volumes (mol/m^3), then `T` (K) when the thermal submodel is on.
+//! volumes (mol/m^3), the SEI concentration (mol/m^3) when an SEI submodel is on, then `T`
+//! (K) when the thermal submodel is on.
 
 use super::electrochem::{Electrochem, Side};
 use super::electrolyte::ElectrolyteOp;
 use super::kinetics::{electrolyte_factor, log_mean, mean_overpotential};
+use super::submodels::SeiLayer;
 use super::submodels::thermal::bernardi_heat;
 use super::{Model, PhysicsModel, push_tridiagonal};
 use crate::params::{FARADAY, GAS_CONSTANT, ParameterSet};
@@ -21,6 +23,7 @@ pub struct Spme {
     /// the piecewise-linear profile at the volume centres, interpolated to the faces.
     ionic_current_shape: Vec<f64>,
     consts: VoltageConsts,
+    sei: SeiLayer,
     mass: Vec<f64>,
     scale: Vec<f64>,
 }
@@ -39,6 +42,9 @@ struct VoltageConsts {
     /// Solid-phase ohmic resistance times plate area (ohm m^2), `S_n / sigma_n + S_p /
     /// sigma_p` with the mesh values of `L / 3` (see [`composite_lengths`]).
     solid_resistance: f64,
+    /// The x-average of `x (2 L_n - x) / (2 L_n)` over the negative volumes (m), `L_n / 3`
+    /// on the mesh (see [`composite_lengths`]).
+    solid_n: f64,
     /// x volumes of the negative and positive electrodes (each of uniform width).
     negative: std::ops::Range<usize>,
     positive: std::ops::Range<usize>,
@@ -63,7 +69,7 @@ impl VoltageConsts {
             debug_assert!(vols[first..first + count].iter().all(|v| v.side == Some(side) && v.dx == vols[first].dx));
             first..first + count
         };
-        Self { avg_inv_eps, length, ohmic_length, solid_resistance, negative: range(Side::Negative), positive: range(Side::Positive) }
+        Self { avg_inv_eps, length, ohmic_length, solid_resistance, solid_n: lengths.solid_n, negative: range(Side::Negative), positive: range(Side::Positive) }
     }
 
     fn electrode(&self, side: Side) -> std::ops::Range<usize> {
@@ -117,13 +123,15 @@ impl Spme {
         let mut scale = vec![p.negative.max_concentration; nn];
         scale.extend(std::iter::repeat_n(p.positive.max_concentration, np));
         scale.extend(std::iter::repeat_n(p.electrolyte.initial_concentration, nx));
+        let sei = SeiLayer::new(ec.submodels.sei, nn + np + nx, ec.disc.x_n.centres.len());
+        scale.extend(sei.indices().map(|_| SeiLayer::initial_concentration(&ec)));
         if ec.submodels.thermal {
             scale.push(p.thermal.ambient_temperature);
         }
         let mass = vec![1.0; scale.len()];
         let ionic_current_shape = Self::ionic_current_shape(&ec, &electrolyte);
         let consts = VoltageConsts::new(&ec, &electrolyte);
-        Self { ec, electrolyte, ionic_current_shape, consts, mass, scale }
+        Self { ec, electrolyte, ionic_current_shape, consts, sei, mass, scale }
     }
 
     /// The leading-order ionic current `x/L_n`, 1, `(L - x)/L_p` at the volume centres,
@@ -179,6 +187,14 @@ impl Spme {
     /// effective conductivities at the cell-averaged concentration `c_av` (`L_p / 3` as
     /// evaluated on the mesh, see [`CompositeLengths`]).
     fn electrolyte_overpotential(&self, ce: &[f64], current: f64, temp: f64) -> f64 {
+        let k = &self.consts;
+        let kappa = self.bulk_conductivity(ce, temp);
+        let concentration = self.macinnes_factor(temp) * (self.mean_ln(ce, Side::Positive) - self.mean_ln(ce, Side::Negative));
+        concentration - current / self.ec.area() * k.ohmic_length / kappa
+    }
+
+    /// Electrolyte conductivity (S/m, before tortuosity) at the cell-averaged concentration.
+    fn bulk_conductivity(&self, ce: &[f64], temp: f64) -> f64 {
         let e = &self.ec.params.electrolyte;
         let k = &self.consts;
         // PyBaMM's x-average of c_e in the SPMe is avg(eps c_e) avg(1/eps) (its XAverage pulls
@@ -186,19 +202,49 @@ impl Spme {
         let avg_eps_c = self.electrolyte.vols.iter().zip(ce).map(|(v, c)| v.dx * v.eps * c).sum::<f64>() / k.length;
         let c_av = avg_eps_c * k.avg_inv_eps;
         let arr = super::kinetics::arrhenius(e.activation_energy, self.ec.t_ref(), temp);
-        let kappa = e.conductivity.eval(c_av.max(super::electrolyte::TRANSPORT_FLOOR)) * e.conductivity_factor * arr;
-        let chi = 2.0 * (1.0 - e.transference_number) * e.thermodynamic_factor;
-        let rt_f = GAS_CONSTANT * temp / FARADAY;
-        // mean over an electrode's (equal-width) volumes of ln c_e; the ln c_av cancels
-        let mean_ln = |side: Side| log_mean(ce[k.electrode(side)].iter().map(|&c| c.max(super::electrolyte::LOG_FLOOR)));
-        let concentration = chi * rt_f * (mean_ln(Side::Positive) - mean_ln(Side::Negative));
-        concentration - current / self.ec.area() * k.ohmic_length / kappa
+        e.conductivity.eval(c_av.max(super::electrolyte::TRANSPORT_FLOOR)) * e.conductivity_factor * arr
+    }
+
+    /// `chi R T / F` (V) of the MacInnes (concentration) term.
+    fn macinnes_factor(&self, temp: f64) -> f64 {
+        let e = &self.ec.params.electrolyte;
+        2.0 * (1.0 - e.transference_number) * e.thermodynamic_factor * GAS_CONSTANT * temp / FARADAY
+    }
+
+    /// Mean over an electrode's (equal-width) volumes of `ln c_e` (the `ln c_av` of the
+    /// MacInnes terms cancels in their differences).
+    fn mean_ln(&self, ce: &[f64], side: Side) -> f64 {
+        log_mean(ce[self.consts.electrode(side)].iter().map(|&c| c.max(super::electrolyte::LOG_FLOOR)))
+    }
+
+    /// `phi_s - phi_e` (V) at each negative volume's centre: PyBaMM's composite potentials
+    /// about the x-average `delta_phi_av` (V), i.e. its solid-phase and electrolyte ohmic
+    /// profiles and the MacInnes term, each less its x-average (the electrolyte's ohmic one
+    /// less its analytic average `-L_n / 3`). PyBaMM's SPMe evaluates the SEI reaction with it
+    /// at each x, then x-averages the reaction current.
+    fn negative_potential_profile<'a>(&'a self, delta_phi_av: f64, ce: &'a [f64], current: f64, temp: f64) -> impl Iterator<Item = f64> + 'a {
+        let ec = &self.ec;
+        let n = &ec.params.negative;
+        let i = current / ec.area();
+        let ln = n.thickness;
+        let solid = i / ec.effective_conductivity(Side::Negative);
+        let electrolyte = i / (self.bulk_conductivity(ce, temp) * n.porosity.powf(n.bruggeman_electrolyte));
+        let chi_rt_f = self.macinnes_factor(temp);
+        let mean_ln = self.mean_ln(ce, Side::Negative);
+        let solid_n = self.consts.solid_n;
+        ec.disc.x_n.centres.iter().zip(&ce[self.consts.negative.clone()]).map(move |(&x, &c)| {
+            delta_phi_av + solid * (solid_n - x * (2.0 * ln - x) / (2.0 * ln)) + chi_rt_f * (mean_ln - c.max(super::electrolyte::LOG_FLOOR).ln())
+                + electrolyte * ((x * x - ln * ln) / (2.0 * ln) + ln / 3.0)
+        })
     }
 
     /// `phi_s - phi_e` (V) x-averaged over an electrode with particle surface `c_s`
     /// (mol/m^3): its OCP plus the reaction overpotential x-averaged with the local
-    /// electrolyte concentrations `ce` (mol/m^3) in the exchange current.
-    fn surface_potential_difference(&self, side: Side, c_s: f64, ce: &[f64], current: f64, temp: f64) -> f64 {
+    /// electrolyte concentrations `ce` (mol/m^3) in the exchange current (of the total
+    /// interfacial current, PyBaMM's inverse kinetics), plus the SEI film's drop in the
+    /// negative electrode (read from the state `y`).
+    fn surface_potential_difference(&self, side: Side, c_s: f64, y: &[f64], current: f64, temp: f64) -> f64 {
+        let (_, _, ce) = self.blocks(y);
         let ec = &self.ec;
         let alpha = ec.electrode(side).charge_transfer_coefficient;
         let j = ec.mean_interfacial_current(side, current);
@@ -212,7 +258,21 @@ impl Spme {
         let c_in = c_s.clamp(0.0, c_max);
         let j0_particle = k * (c_in * (c_max - c_in)).sqrt();
         let j0 = ce[self.consts.electrode(side)].iter().map(|&c| j0_particle * electrolyte_factor(c, c_e_ref));
-        ec.ocp(side, c_s) + mean_overpotential(j, j0, alpha, temp)
+        let film = if side == Side::Negative { self.sei.film(ec, y, current) } else { 0.0 };
+        ec.ocp(side, c_s) + mean_overpotential(j, j0, alpha, temp) + film
+    }
+
+    /// Writes the SEI states' rates into `out` and returns the x-averaged side-reaction
+    /// current density (A/m^2); zero without SEI. PyBaMM's SPMe does not x-average side
+    /// reactions: each negative volume grows its own SEI with its own `phi_s - phi_e`.
+    fn sei_rhs(&self, y: &[f64], current: f64, temp: f64, out: &mut [f64]) -> f64 {
+        if self.sei.len() == 0 {
+            return 0.0;
+        }
+        let (sn, _) = self.surfaces(y);
+        let (_, _, ce) = self.blocks(y);
+        let delta_phi = self.surface_potential_difference(Side::Negative, sn, y, current, temp);
+        self.sei.rhs(&self.ec, y, self.negative_potential_profile(delta_phi, ce, current, temp), current, temp, out)
     }
 
     /// Solid-phase ohmic drop between the x-averaged and current-collector potentials (V).
@@ -251,8 +311,11 @@ impl Model for Spme {
         for (start, len) in [(0, nn), (nn, np), (nn + np, nx)] {
             push_tridiagonal(&mut p, start, len);
         }
+        let t = nn + np + nx + self.sei.len();
+        // The SEI reads the electrolyte everywhere (through the conductivity at its mean).
+        let electrolyte: Vec<usize> = (nn + np..nn + np + nx).chain(self.ec.submodels.thermal.then_some(t)).collect();
+        self.sei.push_pattern(&mut p, [nn - 2, nn - 1], &electrolyte);
         if self.ec.submodels.thermal {
-            let t = nn + np + nx;
             for i in 0..=t {
                 p.push((i, t));
             }
@@ -265,6 +328,7 @@ impl Model for Spme {
         let mut y = vec![p.negative.initial_concentration; self.ec.disc.sphere_n.len()];
         y.extend(std::iter::repeat_n(p.positive.initial_concentration, self.ec.disc.sphere_p.len()));
         y.extend(std::iter::repeat_n(p.electrolyte.initial_concentration, self.electrolyte.len()));
+        self.sei.push_initial(&self.ec, &mut y);
         if self.ec.submodels.thermal {
             y.push(p.thermal.initial_temperature);
         }
@@ -278,8 +342,9 @@ impl Model for Spme {
         let nx = self.electrolyte.len();
         let temp = self.temp(y);
         let (cn, cp, ce) = self.blocks(y);
-        for (side, c, range) in [(Side::Negative, cn, 0..nn), (Side::Positive, cp, nn..nn + np)] {
-            let flux = Electrochem::molar_flux(ec.mean_interfacial_current(side, current));
+        let j_sei = self.sei_rhs(y, current, temp, out);
+        for (side, c, range, side_reaction) in [(Side::Negative, cn, 0..nn, j_sei), (Side::Positive, cp, nn..nn + np, 0.0)] {
+            let flux = Electrochem::molar_flux(ec.mean_interfacial_current(side, current) - side_reaction);
             ec.sphere(side).diffusion(c, ec.diffusivity(side, temp), flux, &mut out[range]);
         }
         let ionic = (self.ionic_current_shape.as_slice(), current / ec.area());
@@ -288,7 +353,7 @@ impl Model for Spme {
             let (sn, sp) = self.surfaces(y);
             let ocv = ec.ocp(Side::Positive, sp) - ec.ocp(Side::Negative, sn);
             let heat = bernardi_heat(current, ocv, self.voltage(y, current), temp, ec.docv_dt());
-            out[nn + np + nx] = ec.thermal.rate(heat, temp);
+            out[self.len() - 1] = ec.thermal.rate(heat, temp);
         }
     }
 
@@ -297,16 +362,23 @@ impl Model for Spme {
         let temp = self.temp(y);
         let (_, _, ce) = self.blocks(y);
         let (sn, sp) = self.surfaces(y);
-        self.surface_potential_difference(Side::Positive, sp, ce, current, temp) - self.surface_potential_difference(Side::Negative, sn, ce, current, temp)
+        self.surface_potential_difference(Side::Positive, sp, y, current, temp) - self.surface_potential_difference(Side::Negative, sn, y, current, temp)
             + self.electrolyte_overpotential(ce, current, temp)
             - self.solid_ohmic(current)
             - current * ec.contact_resistance()
     }
 
     fn plating_margin(&self, y: &[f64], current: f64) -> Option<f64> {
-        let (_, _, ce) = self.blocks(y);
         let (sn, _) = self.surfaces(y);
-        Some(self.surface_potential_difference(Side::Negative, sn, ce, current, self.temp(y)))
+        Some(self.surface_potential_difference(Side::Negative, sn, y, current, self.temp(y)))
+    }
+
+    fn sei_lithium(&self, y: &[f64]) -> f64 {
+        self.sei.lithium(&self.ec, y)
+    }
+
+    fn sei_thickness(&self, y: &[f64]) -> Option<f64> {
+        self.sei.thickness(&self.ec, y)
     }
 
     fn temperature(&self, y: &[f64]) -> f64 {
@@ -329,6 +401,7 @@ impl Model for Spme {
         let (nn, np) = (self.ec.disc.sphere_n.len(), self.ec.disc.sphere_p.len());
         let mut out = self.ec.single_particle_surface_states();
         out.extend(nn + np..nn + np + self.electrolyte.len());
+        out.extend(self.sei.indices());
         out.extend(self.ec.submodels.thermal.then(|| self.len() - 1));
         out
     }

@@ -105,5 +105,6 @@ pub fn chen2020() -> ParameterSet {
             negative_collector_heat_capacity: 8960.0 * 385.0,
             positive_collector_heat_capacity: 2700.0 * 897.0,
         },
+        sei: super::sei::Sei::default(),
     }
 }

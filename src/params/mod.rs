@@ -12,6 +12,7 @@ pub mod pybop_mass;
 mod initial_state;
 mod load;
 mod overrides;
+pub mod sei;
 mod set;
 pub mod soc;
 
@@ -22,4 +23,5 @@ pub use pybop_mass::{MassConvention, PybopDensities};
 pub use mass::{CellBudget, MassBasis, MassComponent, Part, StackAreas};
 pub use overrides::{Override, apply_overrides, from_base_table};
 pub use soc::{StoichiometryWindow, set_initial_soc, stoichiometry_window};
+pub use sei::Sei;
 pub use set::{Cell, Electrode, Electrolyte, FARADAY, GAS_CONSTANT, ParameterSet, Separator, Thermal};

@@ -261,6 +261,9 @@ pub struct ParameterSet {
     pub positive: Electrode,
     pub electrolyte: Electrolyte,
     pub thermal: Thermal,
+    /// SEI growth (read only when an SEI submodel is on); PyBaMM's Chen2020 values when absent.
+    #[serde(default)]
+    pub sei: super::sei::Sei,
 }
 
 impl ParameterSet {
@@ -317,7 +320,7 @@ impl ParameterSet {
         positive("thermal.cell_volume", t.cell_volume)?;
         positive("thermal.negative_collector_heat_capacity", t.negative_collector_heat_capacity)?;
         positive("thermal.positive_collector_heat_capacity", t.positive_collector_heat_capacity)?;
-        Ok(())
+        self.sei.validate()
     }
 
     /// Reads a parameter set from a TOML file and validates it: a whole set, or a base set
@@ -432,6 +435,7 @@ impl ParameterSet {
                 }
                 _ => return Err(unknown()),
             },
+            "sei" => self.sei.field_mut(name).ok_or_else(unknown)?,
             _ => return Err(unknown()),
         };
         Ok(slot)

@@ -144,6 +144,14 @@ impl Model for Augmented {
         self.base.open_circuit_voltage(&y[..self.n_base])
     }
 
+    fn sei_lithium(&self, y: &[f64]) -> f64 {
+        self.base.sei_lithium(&y[..self.n_base])
+    }
+
+    fn sei_thickness(&self, y: &[f64]) -> Option<f64> {
+        self.base.sei_thickness(&y[..self.n_base])
+    }
+
     fn plating_margin(&self, y: &[f64], current: f64) -> Option<f64> {
         self.base.plating_margin(&y[..self.n_base], current)
     }

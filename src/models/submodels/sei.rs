@@ -1,0 +1,151 @@
+//! SEI growth on the negative electrode of the single-particle models, as PyBaMM's SPM and
+//! SPMe do it: the SEI concentration `c_sei` (mol per m^3 of electrode), one state for the
+//! whole electrode in the SPM ("x-average side reactions" true) and one per negative x volume
+//! in the SPMe (PyBaMM's default "false" there), with the parameters of
+//! [`crate::params::Sei`]. See docs/ageing.md.
+//!
+//! - thickness `L = c_sei V_bar / a` (m), `a = 3 eps_s / R` the negative surface area density;
+//! - film overpotential: the x-averaged `phi_s - phi_e` of the negative electrode gains
+//!   `j_tot L_av R_sei` (V, `L_av` the x-averaged thickness), `j_tot` the total interfacial
+//!   current density (A/m^2, the applied current over `a L_n A`);
+//! - side-reaction current density `j_sei` (A/m^2, negative while SEI grows), times
+//!   `exp(E_sei / R (1/T_ref - 1/T))`:
+//!   reaction limited `-j0_sei exp(-0.5 F eta_sei / (R T))` with
+//!   `eta_sei = phi_s - phi_e - U_sei - j_tot L R_sei` with the local `phi_s - phi_e` and `L`;
+//!   solvent-diffusion limited `-D_sol c_sol F / L`;
+//! - `d c_sei / dt = -a j_sei / (F z_sei)`; the particles carry the intercalation current
+//!   `j_tot - j_sei` (`j_sei` x-averaged), so the lithium the SEI takes comes out of the negative particles and
+//!   the applied current is unchanged.
+
+use serde::{Deserialize, Serialize};
+
+use crate::models::Electrochem;
+use crate::models::electrochem::Side;
+use crate::models::kinetics::arrhenius;
+use crate::params::{FARADAY, GAS_CONSTANT};
+
+/// Which SEI growth law, by PyBaMM's option names.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub enum SeiModel {
+    /// No SEI growth (no state, no film).
+    #[default]
+    #[serde(rename = "none")]
+    None,
+    /// Growth limited by the side reaction's (symmetric) Butler-Volmer kinetics.
+    #[serde(rename = "reaction limited")]
+    ReactionLimited,
+    /// Growth limited by the solvent's diffusion through the layer.
+    #[serde(rename = "solvent-diffusion limited")]
+    SolventDiffusionLimited,
+}
+
+/// The SEI layer of a single-particle model: off, or `count` states from `start`, one per
+/// negative x volume (one for the whole electrode when x-averaged).
+#[derive(Clone, Copy, Debug)]
+pub struct SeiLayer {
+    model: SeiModel,
+    start: Option<usize>,
+    count: usize,
+}
+
+impl SeiLayer {
+    /// The layer for `model`, its `count` states (if on) from `start`.
+    pub fn new(model: SeiModel, start: usize, count: usize) -> Self {
+        let on = model != SeiModel::None;
+        Self { model, start: on.then_some(start), count: if on { count } else { 0 } }
+    }
+
+    /// Number of states it adds.
+    pub fn len(&self) -> usize {
+        self.count
+    }
+
+    /// Indices of its states (empty when off).
+    pub fn indices(&self) -> std::ops::Range<usize> {
+        self.start.map_or(0..0, |s| s..s + self.count)
+    }
+
+    /// Initial SEI concentration `L_sei_0 a / V_bar` (mol/m^3), also its typical size.
+    pub fn initial_concentration(ec: &Electrochem) -> f64 {
+        let s = &ec.params.sei;
+        s.initial_thickness * ec.params.negative.surface_area_density() / s.partial_molar_volume
+    }
+
+    /// Thickness (m) for SEI concentration `c` (mol/m^3).
+    fn thickness_of(ec: &Electrochem, c: f64) -> f64 {
+        c * ec.params.sei.partial_molar_volume / ec.params.negative.surface_area_density()
+    }
+
+    /// Mean SEI concentration over its states (mol/m^3).
+    fn mean_concentration(&self, y: &[f64]) -> f64 {
+        y[self.indices()].iter().sum::<f64>() / self.count as f64
+    }
+
+    /// x-averaged SEI thickness (m), `None` when off.
+    pub fn thickness(&self, ec: &Electrochem, y: &[f64]) -> Option<f64> {
+        self.start.map(|_| Self::thickness_of(ec, self.mean_concentration(y)))
+    }
+
+    /// Film overpotential `j_tot L R_sei` (V) with the x-averaged thickness `L`, that the
+    /// x-averaged `phi_s - phi_e` of the negative electrode gains at applied current
+    /// `current` (A); zero when off.
+    pub fn film(&self, ec: &Electrochem, y: &[f64], current: f64) -> f64 {
+        self.thickness(ec, y).map_or(0.0, |l| ec.mean_interfacial_current(Side::Negative, current) * l * ec.params.sei.resistivity)
+    }
+
+    /// Side-reaction current density `j_sei` (A/m^2, negative while the SEI grows) of a
+    /// layer of thickness `l` (m) at its `phi_s - phi_e` = `delta_phi` (V).
+    fn current_at(&self, ec: &Electrochem, l: f64, delta_phi: f64, current: f64, temp: f64) -> f64 {
+        let s = &ec.params.sei;
+        let j = match self.model {
+            SeiModel::None => 0.0,
+            SeiModel::ReactionLimited => {
+                let film = ec.mean_interfacial_current(Side::Negative, current) * l * s.resistivity;
+                let eta = delta_phi - s.open_circuit_potential - film;
+                -s.exchange_current * (-0.5 * FARADAY / (GAS_CONSTANT * temp) * eta).exp()
+            }
+            SeiModel::SolventDiffusionLimited => -s.solvent_diffusivity * s.solvent_concentration * FARADAY / l,
+        };
+        j * arrhenius(s.activation_energy, ec.t_ref(), temp)
+    }
+
+    /// Writes `d c_sei / dt` (mol/(m^3 s)) of each state into `out`, given `phi_s - phi_e`
+    /// (V) at each (one per state, film included), and returns the x-averaged side-reaction
+    /// current density (A/m^2) that the negative particle's intercalation current loses;
+    /// zero when off.
+    pub fn rhs(&self, ec: &Electrochem, y: &[f64], delta_phi: impl Iterator<Item = f64>, current: f64, temp: f64, out: &mut [f64]) -> f64 {
+        if self.start.is_none() {
+            return 0.0;
+        }
+        let rate = -ec.params.negative.surface_area_density() / (FARADAY * ec.params.sei.lithium_per_sei);
+        let mut sum = 0.0;
+        for (k, d) in self.indices().zip(delta_phi) {
+            let j = self.current_at(ec, Self::thickness_of(ec, y[k]), d, current, temp);
+            out[k] = rate * j;
+            sum += j;
+        }
+        sum / self.count as f64
+    }
+
+    /// Lithium bound in the SEI (mol): `z_sei c_sei L_n A` with `c_sei` x-averaged; zero
+    /// when off.
+    pub fn lithium(&self, ec: &Electrochem, y: &[f64]) -> f64 {
+        self.start.map_or(0.0, |_| ec.params.sei.lithium_per_sei * self.mean_concentration(y) * ec.params.negative.thickness * ec.area())
+    }
+
+    /// Appends its initial states (when on) to `y`.
+    pub fn push_initial(&self, ec: &Electrochem, y: &mut Vec<f64>) {
+        y.extend(self.indices().map(|_| Self::initial_concentration(ec)));
+    }
+
+    /// Appends its Jacobian pattern: each of its rows reads the negative particle's last two
+    /// shells `surface` (through `phi_s - phi_e`), all its states (the film), and `extra`
+    /// states (the electrolyte or the temperature); the last shell's row reads them all (the
+    /// side reaction's flux).
+    pub fn push_pattern(&self, pattern: &mut Vec<(usize, usize)>, surface: [usize; 2], extra: &[usize]) {
+        for k in self.indices() {
+            pattern.extend(surface.iter().chain(extra).copied().chain(self.indices()).map(|c| (k, c)));
+            pattern.push((surface[1], k));
+        }
+    }
+}
