@@ -1,7 +1,8 @@
 //! Runs a model through a protocol: consistent initialisation of algebraic states at every
 //! step start, stiff integration, cut-off events, and the recorded outputs. Voltage holds
-//! append the current to the states ([`hold`]).
+//! append the current to the states ([`hold`]); [`cycling`] repeats a cycle with summaries.
 
+pub mod cycling;
 mod demand;
 mod drive;
 mod hold;
@@ -72,6 +73,9 @@ pub struct Solution {
     pub stats: SolverStats,
     /// Times (s) at which a voltage cut-off ended a step.
     pub cutoff_times: Vec<f64>,
+    /// The full state at the end (where a following run starts).
+    #[serde(skip)]
+    pub final_state: Vec<f64>,
 }
 
 impl Solution {
@@ -333,6 +337,7 @@ pub fn simulate_observed(
             crate::solver::StopReason::EndTime => t0 = t_end,
         }
     }
+    rec.sol.final_state = y;
     Ok(rec.sol)
 }
 

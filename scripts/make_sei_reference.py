@@ -1,0 +1,78 @@
+"""PyBaMM reference for SEI growth (tests/sei.rs): SPM and SPMe on Chen 2020 (its SEI
+parameters), each with PyBaMM's SEI options "reaction limited" and "solvent-diffusion
+limited" (SEI film resistance "distributed", PyBaMM's default with SEI; side reactions
+x-averaged, as PyBaMM's SPM and SPMe do), PyBaMM's default mesh (20 volumes per x-domain and
+per particle, as ours), IDAKLU at rtol = atol = 1e-8.
+
+Protocol: CYCLES CC-CV cycles of "Discharge at 1C until 3.0 V", "Rest for 10 minutes",
+"Charge at 1C until 4.1 V", "Hold at 4.1 V until C/20", "Rest for 10 minutes" from Chen
+2020's initial state, outputs every 60 s.
+
+Writes into the folder given (default tests/data/sei):
+- `{model}_{option}.csv`: time_s, current_A, voltage_V, sei_thickness_m (x-averaged),
+  lithium_lost_mol ("Loss of lithium to negative SEI [mol]"), step (0-based over all cycles);
+- `{model}_{option}_cycles.csv`: per cycle, the discharge capacity of its discharge step
+  (A h, from "Discharge capacity [A.h]"), and at the cycle's end the lithium lost to the SEI
+  (mol) and the SEI thickness (m);
+- `meta.json`: versions, options, protocol, timings.
+
+    python -m venv .venv && .venv/bin/pip install pybamm==26.10.1.1
+    .venv/bin/python scripts/make_sei_reference.py tests/data/sei
+"""
+
+import json
+import os
+import sys
+import time
+
+import numpy as np
+import pybamm
+
+# One cycle: the CC-CV experiment of tests/cccv.rs.
+from make_cccv_reference import EXPERIMENT as CYCLE
+CYCLES = 10
+OPTIONS = {"reaction_limited": "reaction limited", "solvent_diffusion_limited": "solvent-diffusion limited"}
+MODELS = {"spm": pybamm.lithium_ion.SPM, "spme": pybamm.lithium_ion.SPMe}
+
+
+def solve(model_cls, option, cycles=CYCLES, period=60):
+    model = model_cls({"SEI": option})
+    sim = pybamm.Simulation(model, parameter_values=pybamm.ParameterValues("Chen2020"),
+                            experiment=pybamm.Experiment([tuple(CYCLE)] * cycles, period=f"{period} seconds"),
+                            solver=pybamm.IDAKLUSolver(rtol=1e-8, atol=1e-8))
+    start = time.perf_counter()
+    sol = sim.solve()
+    return sol, time.perf_counter() - start
+
+
+def main(root):
+    os.makedirs(root, exist_ok=True)
+    meta = {"made_by": f"PyBaMM {pybamm.__version__}, Chen2020, IDAKLU rtol=atol=1e-8, default mesh",
+            "cycle": CYCLE, "cycles": CYCLES, "period_s": 60, "cases": {}}
+    for mname, cls in MODELS.items():
+        for oname, option in OPTIONS.items():
+            sol, seconds = solve(cls, option)
+            name = f"{mname}_{oname}"
+            cols = [sol["Time [s]"].entries, sol["Current [A]"].entries, sol["Voltage [V]"].entries,
+                    sol["X-averaged negative SEI thickness [m]"].entries, sol["Loss of lithium to negative SEI [mol]"].entries]
+            step = np.concatenate([np.full(len(s["Time [s]"].entries), c * len(CYCLE) + k)
+                                   for c, cyc in enumerate(sol.cycles) for k, s in enumerate(cyc.steps)])
+            np.savetxt(os.path.join(root, f"{name}.csv"), np.column_stack(cols + [step]), delimiter=",",
+                       header="time_s,current_A,voltage_V,sei_thickness_m,lithium_lost_mol,step", comments="", fmt="%.10g")
+            rows = []
+            for c, cyc in enumerate(sol.cycles):
+                q = cyc.steps[0]["Discharge capacity [A.h]"].entries
+                rows.append([c + 1, q[-1] - q[0], cyc["Loss of lithium to negative SEI [mol]"].entries[-1],
+                             cyc["X-averaged negative SEI thickness [m]"].entries[-1]])
+            np.savetxt(os.path.join(root, f"{name}_cycles.csv"), np.array(rows), delimiter=",",
+                       header="cycle,discharge_capacity_Ah,lithium_lost_mol,sei_thickness_m", comments="", fmt="%.12g")
+            meta["cases"][name] = {"model": cls.__name__, "options": {"SEI": option}, "points": len(step),
+                                   "solve_seconds": seconds, "end_time_s": float(cols[0][-1])}
+            print(f"{name}: {len(step)} points, {cols[0][-1]:.0f} s, solved in {seconds:.2f} s; "
+                  f"capacity {rows[0][1]:.6f} -> {rows[-1][1]:.6f} A h, lost {rows[-1][2]:.4e} mol, L {rows[-1][3]:.4e} m")
+    with open(os.path.join(root, "meta.json"), "w") as f:
+        json.dump(meta, f, indent=1)
+
+
+if __name__ == "__main__":
+    main(sys.argv[1] if len(sys.argv) > 1 else "tests/data/sei")
