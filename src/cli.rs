@@ -86,6 +86,14 @@ pub(crate) enum Command {
         /// Study file with two or more objectives, e.g. designs/energy_vs_power_chen2020.toml.
         study: PathBuf,
     },
+    /// Cycle a cell N times (e.g. CC-CV with SEI growth) and write per-cycle summaries:
+    /// capacity, retention, lithium lost, SEI thickness.
+    Cycle {
+        #[command(flatten)]
+        overrides: Overrides,
+        /// Cycling study file, e.g. examples/cycle_sei_chen2020.toml.
+        study: PathBuf,
+    },
     /// Fit model parameters to a recording: optimise, report standard errors and plots.
     Fit {
         #[command(flatten)]

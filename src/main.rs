@@ -12,6 +12,7 @@ use cellstudio::output::OutputDir;
 use cellstudio::params::{ParameterSet, apply_overrides};
 use cellstudio::Error;
 use cellstudio::study::Study;
+use cellstudio::study::cycle::CycleStudy;
 use cellstudio::study::design::run_design;
 use cellstudio::study::fit::{FitStudy, parameter_table};
 use cellstudio::study::fit_run::run_fit;
@@ -116,6 +117,22 @@ fn run(cli: Cli) -> Result<(), Error> {
             }
             println!("search           {:?} after {} iterations, {} evaluations, {} model builds, {:.2} s ({:.0} evaluations/s)",
                 out.result.stop, out.result.iterations, out.result.evaluations, out.rebuilds, out.seconds, out.result.evaluations as f64 / out.seconds);
+            for f in &out.files {
+                println!("wrote            {}", f.display());
+            }
+            Ok(())
+        }
+        Command::Cycle { overrides, study } => {
+            let study = CycleStudy::from_file(&study)?.with_overrides(overrides.set)?;
+            let out = study.run(&mut |_| {})?;
+            let (first, last) = (&out.summaries[0], &out.summaries[out.summaries.len() - 1]);
+            println!("study            {}", study.name);
+            println!("cycles           {} in {:.2} s ({:.3} s per cycle)", out.summaries.len(), out.seconds, out.seconds / out.summaries.len() as f64);
+            println!("discharge        {:.6} A h (cycle 1) -> {:.6} A h (cycle {}), retention {:.4} %", first.discharge_capacity_ah, last.discharge_capacity_ah, last.cycle, 100.0 * last.capacity_retention);
+            println!("lithium lost     {:.4e} mol to the SEI, {:.4} % of the inventory", last.lithium_lost_to_sei_mol, 100.0 * last.lithium_inventory_lost);
+            if let Some(l) = last.sei_thickness_m {
+                println!("SEI thickness    {:.4} nm", l * 1e9);
+            }
             for f in &out.files {
                 println!("wrote            {}", f.display());
             }

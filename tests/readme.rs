@@ -41,7 +41,7 @@ fn readme_commands_run_as_written() {
 
     let dir: PathBuf = std::env::temp_dir().join(format!("cellstudio-readme-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
-    for sub in ["designs", "fits", "protocols", "tests/data/cycler"] {
+    for sub in ["designs", "fits", "protocols", "examples", "tests/data/cycler"] {
         copy_dir(&Path::new(REPO).join(sub), &dir.join(sub));
     }
     let seed = Path::new(REPO).join("tests/data/spm_contact_resistance_seed.csv");

@@ -1,9 +1,11 @@
 //! Design study files (TOML): cell, model, operating point, decision variables, ties,
-//! objectives, optimiser and outputs. Unknown keys are errors naming the key and line.
+//! objectives, optimiser and outputs; the other studies (fit, sample, eis, cycle, ...) in
+//! their modules. Unknown keys are errors naming the key and line.
 
 pub mod basis;
 pub mod cell;
 pub mod constraints;
+pub mod cycle;
 pub mod design;
 pub mod eis;
 pub mod experiment_design;

@@ -1,0 +1,58 @@
+//! `cellstudio cycle`: the example study (`examples/cycle_sei_chen2020.toml`) writes one
+//! summary row per cycle, all or nothing; bad settings fail with an error naming the key.
+
+mod cli_support;
+
+use cli_support::*;
+
+const EXAMPLE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/cycle_sei_chen2020.toml");
+
+/// The example with `edit` applied to its text, written into `s`.
+fn study(s: &Scratch, edit: impl Fn(String) -> String) -> String {
+    let text = edit(std::fs::read_to_string(EXAMPLE).unwrap());
+    s.write("study.toml", &text).display().to_string()
+}
+
+#[test]
+fn cycle_study_writes_a_summary_per_cycle() {
+    let s = Scratch::new("cycle");
+    let path = study(&s, |t| t.replace("cycles = 20", "cycles = 6"));
+    let o = run(&s.0, &["cycle", &path]);
+    succeeds(&o);
+    let csv = std::fs::read_to_string(s.path("out/cycle_sei/cycles.csv")).unwrap();
+    let rows: Vec<Vec<f64>> = csv.lines().skip(1).map(|l| l.split(',').map(|x| x.parse().unwrap()).collect()).collect();
+    assert_eq!(rows.len(), 6);
+    assert_eq!(rows[0][4], 1.0, "retention is relative to the first cycle");
+    for w in rows.windows(2) {
+        // Each cycle loses capacity and lithium to a thicker SEI.
+        assert!(w[1][2] < w[0][2] && w[1][5] > w[0][5] && w[1][7] > w[0][7], "{w:?}");
+    }
+    // Starting empty, the first charge is the largest; later charges restore what was taken.
+    assert!(rows[0][3] > rows[1][3] && (rows[1][3] - rows[1][2]).abs() < 1e-3 * rows[1][2], "{rows:?}");
+    let json: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(s.path("out/cycle_sei/cycles.json")).unwrap()).unwrap();
+    assert_eq!(json["cycles"].as_array().unwrap().len(), 6);
+    assert!(s.path("out/cycle_sei/capacity_retention.svg").is_file());
+}
+
+#[test]
+fn bad_cycle_settings_name_the_key() {
+    let s = Scratch::new("cycle-bad");
+    for (from, to, needles) in [
+        ("cycles = 20", "cycles = 0", vec!["cycling.cycles", "0"]),
+        ("tolerance = 1e-6", "tolerance = 0.5", vec!["cycling.tolerance", "0.5"]),
+        ("initial_soc = 0.0", "initial_soc = 1.5", vec!["cycling.initial_soc", "1.5"]),
+        ("\"Rest for 10 minutes\",\n    \"Discharge", "\"Rest for ten minutes\",\n    \"Discharge", vec!["cycling.cycle"]),
+        ("kind = \"spm\"", "kind = \"dfn\"", vec!["model.submodels.sei"]),
+        ("sei = \"reaction limited\"", "sei = \"fast\"", vec!["study.toml", "line 12"]),
+    ] {
+        let path = study(&s, |t| {
+            assert!(t.contains(from), "{from}");
+            t.replace(from, to)
+        });
+        let o = run(&s.0, &["cycle", &path]);
+        fails_with(&o, &needles);
+        assert!(!s.path("out/cycle_sei").exists(), "{to}: a failed run left outputs");
+    }
+    let o = run(&s.0, &["cycle", EXAMPLE, "--set", "sei.initial_thickness=-1"]);
+    fails_with(&o, &["sei.initial_thickness", "-1"]);
+}
