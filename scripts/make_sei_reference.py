@@ -35,14 +35,31 @@ OPTIONS = {"reaction_limited": "reaction limited", "solvent_diffusion_limited": 
 MODELS = {"spm": pybamm.lithium_ion.SPM, "spme": pybamm.lithium_ion.SPMe}
 
 
-def solve(model_cls, option, cycles=CYCLES, period=60):
-    model = model_cls({"SEI": option})
-    sim = pybamm.Simulation(model, parameter_values=pybamm.ParameterValues("Chen2020"),
-                            experiment=pybamm.Experiment([tuple(CYCLE)] * cycles, period=f"{period} seconds"),
-                            solver=pybamm.IDAKLUSolver(rtol=1e-8, atol=1e-8))
+def simulation(model_cls, option, cycles=CYCLES, period=60, tol=1e-8):
+    """A PyBaMM simulation of `cycles` cycles with SEI `option` (Chen2020, IDAKLU at `tol`)."""
+    return pybamm.Simulation(model_cls({"SEI": option}), parameter_values=pybamm.ParameterValues("Chen2020"),
+                             experiment=pybamm.Experiment([tuple(CYCLE)] * cycles, period=f"{period} seconds"),
+                             solver=pybamm.IDAKLUSolver(rtol=tol, atol=tol))
+
+
+def solve(model_cls, option, **kwargs):
+    """PyBaMM's solution and the wall time (s) of `Simulation.solve` (which builds and
+    discretises the model on its first call, as a user's run does)."""
+    sim = simulation(model_cls, option, **kwargs)
     start = time.perf_counter()
     sol = sim.solve()
     return sol, time.perf_counter() - start
+
+
+def cycle_rows(sol):
+    """Per cycle: [cycle, discharge capacity of its discharge step (A h), lithium lost to the
+    SEI at its end (mol), SEI thickness at its end (m)]."""
+    rows = []
+    for c, cyc in enumerate(sol.cycles):
+        q = cyc.steps[0]["Discharge capacity [A.h]"].entries
+        rows.append([c + 1, q[-1] - q[0], cyc["Loss of lithium to negative SEI [mol]"].entries[-1],
+                     cyc["X-averaged negative SEI thickness [m]"].entries[-1]])
+    return rows
 
 
 def main(root):
@@ -59,11 +76,7 @@ def main(root):
                                    for c, cyc in enumerate(sol.cycles) for k, s in enumerate(cyc.steps)])
             np.savetxt(os.path.join(root, f"{name}.csv"), np.column_stack(cols + [step]), delimiter=",",
                        header="time_s,current_A,voltage_V,sei_thickness_m,lithium_lost_mol,step", comments="", fmt="%.10g")
-            rows = []
-            for c, cyc in enumerate(sol.cycles):
-                q = cyc.steps[0]["Discharge capacity [A.h]"].entries
-                rows.append([c + 1, q[-1] - q[0], cyc["Loss of lithium to negative SEI [mol]"].entries[-1],
-                             cyc["X-averaged negative SEI thickness [m]"].entries[-1]])
+            rows = cycle_rows(sol)
             np.savetxt(os.path.join(root, f"{name}_cycles.csv"), np.array(rows), delimiter=",",
                        header="cycle,discharge_capacity_Ah,lithium_lost_mol,sei_thickness_m", comments="", fmt="%.12g")
             meta["cases"][name] = {"model": cls.__name__, "options": {"SEI": option}, "points": len(step),
