@@ -3,10 +3,12 @@
 
 pub mod cycler;
 mod format;
+mod pseudo_ocv;
 mod recording;
 mod sanity;
 mod segments;
 
 pub use format::CsvFormat;
+pub use pseudo_ocv::{OcvBranch, PseudoOcv};
 pub use recording::{Recording, VoltageError};
 pub use sanity::{Finding, RecordingStats};

@@ -13,6 +13,8 @@ pub mod fit_run;
 pub mod joint_fit;
 pub mod landscape;
 pub mod limits;
+pub mod ocv;
+pub mod parameterise;
 pub mod profiles;
 pub mod sample;
 pub mod shard;

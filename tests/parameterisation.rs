@@ -1,0 +1,87 @@
+//! Parameterisation studies (`cellstudio parameterise`) held to PyBaMM's truth
+//! (`tests/data/parameterisation/`, made by `scripts/make_parameterisation_reference.py`: the
+//! DFN of Chen 2020 through a C/20 discharge and charge, and a GITT).
+
+use std::path::PathBuf;
+
+use cellstudio::study::parameterise::{ParameterisationStudy, run_parameterisation};
+
+const REPO: &str = env!("CARGO_MANIFEST_DIR");
+
+fn meta() -> serde_json::Value {
+    serde_json::from_str(&std::fs::read_to_string(format!("{REPO}/tests/data/parameterisation/meta.json")).unwrap()).unwrap()
+}
+
+fn out(name: &str) -> PathBuf {
+    std::env::temp_dir().join(format!("cellstudio-param-{name}-{}", std::process::id()))
+}
+
+/// Runs study text (paths relative to the repository) into a fresh folder; returns the JSON.
+fn run(name: &str, body: &str) -> serde_json::Value {
+    let dir = out(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    let text = format!("name = \"{name}\"\n{}\n[output]\ndir = \"{}\"\n", body.replace("tests/data", &format!("{REPO}/tests/data")), dir.display());
+    let study = ParameterisationStudy::from_toml(&text, name).unwrap();
+    let outcome = run_parameterisation(&study).unwrap();
+    assert!(outcome.files.iter().any(|f| f.ends_with("report.md")), "{:?}", outcome.files);
+    serde_json::from_str(&std::fs::read_to_string(dir.join("parameterisation.json")).unwrap()).unwrap()
+}
+
+/// Chen 2020's open-circuit voltage at state of charge `soc` on PyBaMM's window.
+fn true_ocv(soc: f64) -> f64 {
+    let m = meta();
+    let w = |k: &str| m["soh"][k].as_f64().unwrap();
+    let p = cellstudio::params::chen2020();
+    let (x, y) = (w("x0") + soc * (w("x100") - w("x0")), w("y0") - soc * (w("y0") - w("y100")));
+    p.positive.ocp.eval(y) - p.negative.ocp.eval(x)
+}
+
+/// The pseudo-OCV of the C/20 pair: each branch's capacity is PyBaMM's (coulomb counting on
+/// the thinned file: to 1e-5), the charge branch lies above the discharge branch, and the
+/// mean of the branches is the true OCV to a few millivolts away from the ends.
+#[test]
+fn pseudo_ocv_of_the_c20_pair() {
+    let json = run("ocv", "[ocv]\nfile = \"tests/data/parameterisation/c20_discharge_charge.csv\"\npoints = 101");
+    let m = meta();
+    for (branch, key) in [("discharge", "discharge_capacity_Ah"), ("charge", "charge_capacity_Ah")] {
+        let (got, want) = (json["ocv"][branch]["capacity"].as_f64().unwrap(), m["c20"][key].as_f64().unwrap());
+        assert!((got / want - 1.0).abs() < 1e-5, "{branch}: {got} vs {want}");
+    }
+    let table = std::fs::read_to_string(out("ocv").join("ocv.csv")).unwrap();
+    let rows: Vec<Vec<f64>> = table.lines().skip(1).map(|l| l.split(',').map(|v| v.parse().unwrap()).collect()).collect();
+    assert_eq!(rows.len(), 101);
+    let (mut worst, mut sum, mut n) = (0.0f64, 0.0, 0);
+    for r in rows.iter().filter(|r| (0.05..=0.95).contains(&r[0])) {
+        assert!(r[3] > 0.0, "half gap at SOC {}: {}", r[0], r[3]);
+        let e = r[2] - true_ocv(r[0]);
+        worst = worst.max(e.abs());
+        sum += e * e;
+        n += 1;
+    }
+    let rms = (sum / n as f64).sqrt();
+    eprintln!("pseudo-OCV - true OCV over SOC 0.05-0.95: RMS {:.3} mV, max {:.3} mV", 1e3 * rms, 1e3 * worst);
+    assert!(rms < TRUE_OCV_RMS && worst < TRUE_OCV_MAX, "{rms} {worst}");
+}
+
+/// Bounds on the pseudo-OCV's departure from the true OCV (V), a few times what is achieved.
+const TRUE_OCV_RMS: f64 = 0.006;
+const TRUE_OCV_MAX: f64 = 0.015;
+
+/// A study without a stage, a stage with a stray key, or a recording without the needed
+/// step is an error naming the field.
+#[test]
+fn bad_studies_name_the_field() {
+    let err = |body: &str| ParameterisationStudy::from_toml(&format!("name = \"x\"\n{body}"), "study").map(|_| ()).unwrap_err().to_string();
+    assert!(err("").contains("ocv"), "{}", err(""));
+    let e = err("[ocv]\nfile = \"a.csv\"\npoint = 3");
+    assert!(e.contains("unknown field `point`"), "{e}");
+    let e = err("[ocv]\nfile = \"a.csv\"\ndischarge = \"b.csv\"");
+    assert!(e.contains("ocv.file"), "{e}");
+    let e = err("[ocv]\nfile = \"a.csv\"\npoints = 2");
+    assert!(e.contains("ocv.points"), "{e}");
+    // The GITT recording has no constant-current charge.
+    let text = format!("name = \"x\"\n[ocv]\ncharge = \"{REPO}/tests/data/parameterisation/gitt.csv\"\n[output]\ndir = \"{}\"\n", out("nocharge").display());
+    let study = ParameterisationStudy::from_toml(&text, "study").unwrap();
+    let e = run_parameterisation(&study).map(|_| ()).unwrap_err().to_string();
+    assert!(e.contains("ocv.charge") && e.contains("no constant-current charge step"), "{e}");
+}
