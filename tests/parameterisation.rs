@@ -18,10 +18,15 @@ fn out(name: &str) -> PathBuf {
 
 /// Runs study text (paths relative to the repository) into a fresh folder; returns the JSON.
 fn run(name: &str, body: &str) -> serde_json::Value {
+    run_with(name, body, &[])
+}
+
+/// [`run`] with `--set` overrides of the cell.
+fn run_with(name: &str, body: &str, overrides: &[&str]) -> serde_json::Value {
     let dir = out(name);
     let _ = std::fs::remove_dir_all(&dir);
     let text = format!("name = \"{name}\"\n{}\n[output]\ndir = \"{}\"\n", body.replace("tests/data", &format!("{REPO}/tests/data")), dir.display());
-    let study = ParameterisationStudy::from_toml(&text, name).unwrap();
+    let study = ParameterisationStudy::from_toml(&text, name).unwrap().with_overrides(overrides.iter().map(|o| o.parse().unwrap()).collect()).unwrap();
     let outcome = run_parameterisation(&study).unwrap();
     assert!(outcome.files.iter().any(|f| f.ends_with("report.md")), "{:?}", outcome.files);
     serde_json::from_str(&std::fs::read_to_string(dir.join("parameterisation.json")).unwrap()).unwrap()
@@ -66,6 +71,42 @@ fn pseudo_ocv_of_the_c20_pair() {
 /// Bounds on the pseudo-OCV's departure from the true OCV (V), a few times what is achieved.
 const TRUE_OCV_RMS: f64 = 0.006;
 const TRUE_OCV_MAX: f64 = 0.015;
+
+/// The electrode balance fitted to the C/20 pseudo-OCV, from a set whose electrodes are 15 %
+/// too thick (negative) and too thin (positive), recovers PyBaMM's electrode capacities,
+/// cyclable lithium and stoichiometry windows to what the C/20 overpotential left in the
+/// pseudo-OCV allows.
+#[test]
+fn balance_of_the_c20_pseudo_ocv() {
+    let body = "[ocv]\nfile = \"tests/data/parameterisation/c20_discharge_charge.csv\"\n[balancing]\n";
+    let json = run_with("balancing", body, &["negative.thickness=9.8e-5", "positive.thickness=6.43e-5"]);
+    let (m, b) = (meta(), &json["balancing"]);
+    let truth = |k: &str| m["soh"][k].as_f64().unwrap();
+    let fit = &b["fit"]["balance"];
+    let got = [
+        ("negative_capacity_Ah", fit["q_n"].as_f64().unwrap()),
+        ("positive_capacity_Ah", fit["q_p"].as_f64().unwrap()),
+        ("cyclable_lithium_Ah", b["cyclable_lithium_Ah"].as_f64().unwrap()),
+        ("np_ratio", b["np_ratio"].as_f64().unwrap()),
+        ("window_capacity_Ah", b["window_capacity_Ah"].as_f64().unwrap()),
+    ];
+    for (k, v) in got {
+        let rel = v / truth(k) - 1.0;
+        eprintln!("{k}: {v:.5} vs PyBaMM {:.5} ({:+.3} %)", truth(k), 100.0 * rel);
+        assert!(rel.abs() < CAPACITY_REL, "{k}: {v} vs {}", truth(k));
+    }
+    for k in ["x0", "x100", "y0", "y100"] {
+        let v = b["window"][k].as_f64().unwrap();
+        eprintln!("{k}: {v:.5} vs PyBaMM {:.5} ({:+.5})", truth(k), v - truth(k));
+        assert!((v - truth(k)).abs() < WINDOW_ABS, "{k}: {v} vs {}", truth(k));
+    }
+    eprintln!("RMSE {:.3} mV", 1e3 * b["fit"]["rmse"].as_f64().unwrap());
+}
+
+/// Bounds on the balance's errors against PyBaMM, a few times what is achieved: relative
+/// for capacities and lithium (-), absolute for stoichiometries (-).
+const CAPACITY_REL: f64 = 0.006;
+const WINDOW_ABS: f64 = 0.005;
 
 /// A study without a stage, a stage with a stray key, or a recording without the needed
 /// step is an error naming the field.

@@ -1,5 +1,6 @@
 //! Problems: what to simulate for a candidate parameter vector and what to measure.
 
+pub mod balancing;
 pub mod bracket;
 pub mod design;
 pub mod experiment_design;

@@ -1,6 +1,7 @@
 //! Design study files (TOML): cell, model, operating point, decision variables, ties,
 //! objectives, optimiser and outputs. Unknown keys are errors naming the key and line.
 
+pub mod balancing;
 pub mod basis;
 pub mod cell;
 pub mod constraints;

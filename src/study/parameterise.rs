@@ -27,6 +27,7 @@ pub struct ParameterisationStudy {
     #[serde(default)]
     pub cell: CellChoice,
     pub ocv: Option<super::ocv::OcvSection>,
+    pub balancing: Option<super::balancing::BalancingSection>,
     #[serde(default)]
     pub output: Output,
 }
@@ -86,11 +87,14 @@ impl ParameterisationStudy {
     /// Checks every section before any work.
     pub fn validate(&self) -> Result<(), Error> {
         self.cell.load()?;
-        if self.ocv.is_none() {
-            return Err(Error::InvalidSetting { field: "ocv".into(), reason: "the study has no stage: give at least one of [ocv]".into() });
+        if self.ocv.is_none() && self.balancing.is_none() {
+            return Err(Error::InvalidSetting { field: "ocv".into(), reason: "the study has no stage: give at least one of [ocv], [balancing]".into() });
         }
         if let Some(o) = &self.ocv {
             o.validate()?;
+        }
+        if let Some(b) = &self.balancing {
+            b.validate(self.ocv.is_some())?;
         }
         Ok(())
     }
@@ -120,6 +124,9 @@ pub fn run_parameterisation(study: &ParameterisationStudy) -> Result<Parameteris
     let mut outputs = Vec::new();
     if let Some(section) = &study.ocv {
         outputs.push(("ocv", super::ocv::run_ocv(section, &mut stages, &dir)?));
+    }
+    if let Some(section) = &study.balancing {
+        outputs.push(("balancing", super::balancing::run_balancing(section, &mut stages, &dir)?));
     }
     let mut md = format!("# {}\n\nParameter set: {}.\n", study.name, stages.parameters.name);
     let (mut files, mut summary, mut notes, mut warnings) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
