@@ -86,7 +86,8 @@ pub struct BalancingProblem {
 /// Step (-) of the central differences of the OCPs.
 const OCP_STEP: f64 = 1e-6;
 
-fn slope(f: &Function1D, x: f64) -> f64 {
+/// Slope `dU/dx` (V per unit stoichiometry) of the OCP `f` at `x`, by central differences.
+pub fn ocp_slope(f: &Function1D, x: f64) -> f64 {
     (f.eval(x + OCP_STEP) - f.eval(x - OCP_STEP)) / (2.0 * OCP_STEP)
 }
 
@@ -100,7 +101,7 @@ impl BalancingProblem {
             let (x, y) = b.at(q);
             out.push(self.positive_ocp.eval(y) - self.negative_ocp.eval(x) - v);
             if rows.is_some() {
-                let (dn, dp) = (slope(&self.negative_ocp, x), slope(&self.positive_ocp, y));
+                let (dn, dp) = (ocp_slope(&self.negative_ocp, x), ocp_slope(&self.positive_ocp, y));
                 jac.push([-dn, dp, -dn * q / (b.q_n * b.q_n), -dp * q / (b.q_p * b.q_p)]);
             }
         }

@@ -6,6 +6,7 @@ pub mod design;
 pub mod experiment_design;
 pub mod fast_charge;
 pub mod fitting;
+pub mod gitt;
 pub mod global_sensitivity;
 pub mod identification;
 pub mod joint;

@@ -28,6 +28,8 @@ pub struct ParameterisationStudy {
     pub cell: CellChoice,
     pub ocv: Option<super::ocv::OcvSection>,
     pub balancing: Option<super::balancing::BalancingSection>,
+    pub pulses: Option<super::pulses::PulseSection>,
+    pub gitt: Option<super::gitt::GittSection>,
     #[serde(default)]
     pub output: Output,
 }
@@ -87,8 +89,8 @@ impl ParameterisationStudy {
     /// Checks every section before any work.
     pub fn validate(&self) -> Result<(), Error> {
         self.cell.load()?;
-        if self.ocv.is_none() && self.balancing.is_none() {
-            return Err(Error::InvalidSetting { field: "ocv".into(), reason: "the study has no stage: give at least one of [ocv], [balancing]".into() });
+        if self.ocv.is_none() && self.balancing.is_none() && self.pulses.is_none() && self.gitt.is_none() {
+            return Err(Error::InvalidSetting { field: "ocv".into(), reason: "the study has no stage: give at least one of [ocv], [balancing], [pulses], [gitt]".into() });
         }
         if let Some(o) = &self.ocv {
             o.validate()?;
@@ -96,12 +98,19 @@ impl ParameterisationStudy {
         if let Some(b) = &self.balancing {
             b.validate(self.ocv.is_some())?;
         }
+        if let Some(p) = &self.pulses {
+            p.validate("pulses")?;
+        }
+        if let Some(g) = &self.gitt {
+            g.validate()?;
+        }
         Ok(())
     }
 
     /// Files the run reads: the study, the parameter set, the recordings.
     pub fn inputs(&self) -> Vec<&Path> {
-        let recordings = self.ocv.iter().flat_map(|o| o.files());
+        let pulses = self.pulses.iter().map(|p| p.file.as_path()).chain(self.gitt.iter().map(|g| g.file.as_path()));
+        let recordings = self.ocv.iter().flat_map(|o| o.files()).chain(pulses);
         self.source.as_deref().into_iter().chain(self.cell.file()).chain(recordings).collect()
     }
 }
@@ -128,6 +137,12 @@ pub fn run_parameterisation(study: &ParameterisationStudy) -> Result<Parameteris
     if let Some(section) = &study.balancing {
         outputs.push(("balancing", super::balancing::run_balancing(section, &mut stages, &dir)?));
     }
+    if let Some(section) = &study.pulses {
+        outputs.push(("pulses", super::pulses::run_pulses(section, &mut stages, &dir)?));
+    }
+    if let Some(section) = &study.gitt {
+        outputs.push(("gitt", super::gitt::run_gitt(section, &mut stages, &dir)?));
+    }
     let mut md = format!("# {}\n\nParameter set: {}.\n", study.name, stages.parameters.name);
     let (mut files, mut summary, mut notes, mut warnings) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
     let mut json = serde_json::Map::new();
@@ -139,6 +154,9 @@ pub fn run_parameterisation(study: &ParameterisationStudy) -> Result<Parameteris
         notes.extend(stage.notes);
         json.insert(key.into(), stage.json);
     }
+    // The set as the stages left it, readable as `[cell] parameter_set` by later studies.
+    write_output(&dir, "parameters.json", serde_json::to_string_pretty(&stages.parameters).expect("serialisable"), &mut files)?;
+    md.push_str("\nThe parameter set as the stages left it: `parameters.json` (use it as `[cell] parameter_set` of a later study).\n");
     write_output(&dir, "parameterisation.json", serde_json::to_string_pretty(&json).expect("serialisable"), &mut files)?;
     let md = super::fit::with_notes(md, &notes, &warnings);
     write_output(&dir, "report.md", md, &mut files)?;
