@@ -176,6 +176,19 @@ fn bad_studies_name_the_field() {
     assert!(e.contains("ocv.file"), "{e}");
     let e = err("[ocv]\nfile = \"a.csv\"\npoints = 2");
     assert!(e.contains("ocv.points"), "{e}");
+    let e = err("[balancing]");
+    assert!(e.contains("`balancing`") && e.contains("[ocv]"), "{e}");
+    let e = err("[pulses]\nfile = \"a.csv\"\ninitial_soc = nan");
+    assert!(e.contains("pulses.initial_soc") && e.contains("NaN"), "{e}");
+    let e = err("[pulses]\nfile = \"a.csv\"\ntimes = [1.0, 0.0]");
+    assert!(e.contains("pulses.times") && e.contains("= 0"), "{e}");
+    let e = err("[gitt]\nfile = \"a.csv\"\nmodel = { kind = \"spm\" }\nparameter = { path = \"negative.thickness\", initial = 1e-5, lower = 1e-6, upper = 1e-4 }");
+    assert!(e.contains("gitt.parameter.path"), "{e}");
+    // A constant-current discharge from t = 0 has no step after a rest.
+    let text = format!("name = \"x\"\n[pulses]\nfile = \"{REPO}/tests/data/spm_1C.csv\"\n[output]\ndir = \"{}\"\n", out("nopulse").display());
+    let e = run_parameterisation(&ParameterisationStudy::from_toml(&text, "study").unwrap()).map(|_| ()).unwrap_err().to_string();
+    assert!(e.contains("pulses.file") && e.contains("no constant-current step after a rest"), "{e}");
+    assert!(!out("nopulse").exists(), "a failed run leaves no output folder");
     // The GITT recording has no constant-current charge.
     let text = format!("name = \"x\"\n[ocv]\ncharge = \"{REPO}/tests/data/parameterisation/gitt.csv\"\n[output]\ndir = \"{}\"\n", out("nocharge").display());
     let study = ParameterisationStudy::from_toml(&text, "study").unwrap();
