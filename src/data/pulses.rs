@@ -65,6 +65,19 @@ pub fn pulses(rec: &Recording, steps: &[Step]) -> Vec<Pulse> {
 }
 
 impl Pulse {
+    /// The rows of the pulse and the rest after it as a recording of their own, from the
+    /// rested row before the pulse (time from 0).
+    pub fn window(&self, rec: &Recording) -> Recording {
+        let (a, b) = (self.first - 1, self.relaxed_row.unwrap_or(self.last));
+        let t0 = rec.time[a];
+        Recording {
+            time: rec.time[a..=b].iter().map(|t| t - t0).collect(),
+            current: rec.current[a..=b].to_vec(),
+            voltage: rec.voltage[a..=b].to_vec(),
+            temperature: rec.temperature.as_ref().map(|t| t[a..=b].to_vec()),
+        }
+    }
+
     /// Resistance (ohm) `dt` seconds into the pulse: `(V_rest - V(t0 + dt)) / I`, the voltage
     /// interpolated between the pulse's rows; `None` when the pulse is shorter than `dt`.
     pub fn resistance(&self, rec: &Recording, dt: f64) -> Option<f64> {

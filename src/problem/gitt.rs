@@ -62,19 +62,6 @@ pub struct PulseDiffusivity {
     pub failure: Option<String>,
 }
 
-/// The rows of a pulse and the rest after it as a recording of their own, from the rested
-/// point before the pulse (time from 0).
-fn window(rec: &Recording, pulse: &Pulse) -> Recording {
-    let (a, b) = (pulse.first - 1, pulse.relaxed_row.unwrap_or(pulse.last));
-    let t0 = rec.time[a];
-    Recording {
-        time: rec.time[a..=b].iter().map(|t| t - t0).collect(),
-        current: rec.current[a..=b].to_vec(),
-        voltage: rec.voltage[a..=b].to_vec(),
-        temperature: rec.temperature.as_ref().map(|t| t[a..=b].to_vec()),
-    }
-}
-
 /// Fits `parameter` (a `negative.` or `positive.diffusivity`) to every pulse of `rec` in
 /// parallel, the model `spec` on `base`. A pulse whose fit fails is reported with its
 /// failure; a pulse the model cannot start from is an error.
@@ -89,7 +76,7 @@ pub fn fit_pulses(spec: ModelSpec, base: &ParameterSet, rec: &Recording, pulses:
     pulses
         .par_iter()
         .map(|pulse| {
-            let problem = FittingProblem::new(spec, base.clone(), vec![parameter.clone()], window(rec, pulse))?.starting_at_rest()?;
+            let problem = FittingProblem::new(spec, base.clone(), vec![parameter.clone()], pulse.window(rec))?.starting_at_rest()?;
             let start = problem.parameters_at(&problem.initial())?;
             let half = 0.5 * pulse.current * pulse.duration / 3600.0;
             let x = start.negative.initial_concentration / start.negative.max_concentration - half / q_n;

@@ -13,6 +13,7 @@ mod fit_data;
 pub mod fit_run;
 pub mod gitt;
 pub mod joint_fit;
+pub mod kinetics;
 pub mod landscape;
 pub mod limits;
 pub mod ocv;

@@ -9,7 +9,8 @@ use serde::{Deserialize, Serialize};
 
 use super::ReportSection;
 use super::parameterise::{StageOutput, Stages, recording_and_steps};
-use crate::data::{CsvFormat, OcvBranch, PseudoOcv};
+use crate::data::cycler::Step;
+use crate::data::{CsvFormat, OcvBranch, PseudoOcv, Recording};
 use crate::error::Error;
 use crate::report::plot::{Series, line_plot};
 
@@ -60,11 +61,10 @@ impl OcvSection {
     }
 }
 
-/// The branch of `path` (`discharge` or charge); an error naming `field` and the file when it
-/// has none.
-fn branch(field: &str, path: &Path, section: &OcvSection, stages: &Stages, notes: &mut Vec<String>, discharge: bool) -> Result<Option<OcvBranch>, Error> {
-    let (rec, s) = recording_and_steps(path, &section.format, &stages.parameters, notes)?;
-    let found = OcvBranch::find(&rec, &s, discharge);
+/// The branch of a recording (`discharge` or charge); an error naming `field` and the file
+/// when it has none and it was given for that branch.
+fn branch(field: &str, path: &Path, (rec, s): &(Recording, Vec<Step>), discharge: bool) -> Result<Option<OcvBranch>, Error> {
+    let found = OcvBranch::find(rec, s, discharge);
     if found.is_none() && field != "ocv.file" {
         return Err(Error::InvalidSetting {
             field: field.into(),
@@ -72,7 +72,7 @@ fn branch(field: &str, path: &Path, section: &OcvSection, stages: &Stages, notes
                 "`{}` has no constant-current {} step (its steps:\n{})",
                 path.display(),
                 if discharge { "discharge" } else { "charge" },
-                crate::data::cycler::step_table(&s)
+                crate::data::cycler::step_table(s)
             ),
         });
     }
@@ -82,12 +82,18 @@ fn branch(field: &str, path: &Path, section: &OcvSection, stages: &Stages, notes
 /// Runs `[ocv]`: the pseudo-OCV goes to `stages.ocv` for the stages after it.
 pub fn run_ocv(section: &OcvSection, stages: &mut Stages, dir: &Path) -> Result<StageOutput, Error> {
     let mut notes = Vec::new();
+    let mut read = |f: &Path| recording_and_steps(f, &section.format, &stages.parameters, &mut notes);
     let (discharge, charge) = match &section.file {
-        Some(f) => (branch("ocv.file", f, section, stages, &mut notes, true)?, branch("ocv.file", f, section, stages, &mut notes, false)?),
-        None => (
-            section.discharge.as_deref().map(|f| branch("ocv.discharge", f, section, stages, &mut notes, true)).transpose()?.flatten(),
-            section.charge.as_deref().map(|f| branch("ocv.charge", f, section, stages, &mut notes, false)).transpose()?.flatten(),
-        ),
+        Some(f) => {
+            let data = read(f)?;
+            (branch("ocv.file", f, &data, true)?, branch("ocv.file", f, &data, false)?)
+        }
+        None => {
+            let mut one = |field: &str, f: &Option<PathBuf>, discharge: bool| -> Result<Option<OcvBranch>, Error> {
+                f.as_deref().map(|f| branch(field, f, &read(f)?, discharge)).transpose().map(Option::flatten)
+            };
+            (one("ocv.discharge", &section.discharge, true)?, one("ocv.charge", &section.charge, false)?)
+        }
     };
     if let (Some(f), true) = (&section.file, discharge.is_none() || charge.is_none()) {
         if discharge.is_none() && charge.is_none() {

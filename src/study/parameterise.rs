@@ -2,8 +2,8 @@
 //! of a cell's parameterisation as stages, run in order, each feeding the next: `[ocv]` (the
 //! pseudo-OCV of slow charge and discharge branches), `[balancing]` (stoichiometry windows and
 //! electrode capacities from that pseudo-OCV and the set's half-cell OCPs), `[pulses]`
-//! (resistance against state of charge) and `[gitt]` (particle diffusivity against
-//! stoichiometry). One report, one JSON and each stage's tables and plots.
+//! (resistance against state of charge), `[kinetics]` (rate constants or resistances fitted to
+//! a pulse) and `[gitt]` (particle diffusivity against stoichiometry). One report, one JSON and each stage's tables and plots.
 
 use std::path::{Path, PathBuf};
 
@@ -29,6 +29,7 @@ pub struct ParameterisationStudy {
     pub ocv: Option<super::ocv::OcvSection>,
     pub balancing: Option<super::balancing::BalancingSection>,
     pub pulses: Option<super::pulses::PulseSection>,
+    pub kinetics: Option<super::kinetics::KineticsSection>,
     pub gitt: Option<super::gitt::GittSection>,
     #[serde(default)]
     pub output: Output,
@@ -64,7 +65,7 @@ pub struct StageOutput {
 impl ParameterisationStudy {
     /// Reads and checks a study file.
     pub fn from_file(path: &Path) -> Result<Self, Error> {
-        let text = std::fs::read_to_string(path).map_err(Error::io(&path))?;
+        let text = std::fs::read_to_string(path).map_err(Error::io(path))?;
         let mut study = Self::from_toml(&text, &path.display().to_string())?;
         study.source = Some(path.to_path_buf());
         Ok(study)
@@ -89,8 +90,8 @@ impl ParameterisationStudy {
     /// Checks every section before any work.
     pub fn validate(&self) -> Result<(), Error> {
         self.cell.load()?;
-        if self.ocv.is_none() && self.balancing.is_none() && self.pulses.is_none() && self.gitt.is_none() {
-            return Err(Error::InvalidSetting { field: "ocv".into(), reason: "the study has no stage: give at least one of [ocv], [balancing], [pulses], [gitt]".into() });
+        if self.ocv.is_none() && self.balancing.is_none() && self.pulses.is_none() && self.kinetics.is_none() && self.gitt.is_none() {
+            return Err(Error::InvalidSetting { field: "ocv".into(), reason: "the study has no stage: give at least one of [ocv], [balancing], [pulses], [kinetics], [gitt]".into() });
         }
         if let Some(o) = &self.ocv {
             o.validate()?;
@@ -101,6 +102,9 @@ impl ParameterisationStudy {
         if let Some(p) = &self.pulses {
             p.validate("pulses")?;
         }
+        if let Some(k) = &self.kinetics {
+            k.validate()?;
+        }
         if let Some(g) = &self.gitt {
             g.validate()?;
         }
@@ -109,7 +113,7 @@ impl ParameterisationStudy {
 
     /// Files the run reads: the study, the parameter set, the recordings.
     pub fn inputs(&self) -> Vec<&Path> {
-        let pulses = self.pulses.iter().map(|p| p.file.as_path()).chain(self.gitt.iter().map(|g| g.file.as_path()));
+        let pulses = self.pulses.iter().map(|p| p.file.as_path()).chain(self.kinetics.iter().map(|k| k.file.as_path())).chain(self.gitt.iter().map(|g| g.file.as_path()));
         let recordings = self.ocv.iter().flat_map(|o| o.files()).chain(pulses);
         self.source.as_deref().into_iter().chain(self.cell.file()).chain(recordings).collect()
     }
@@ -139,6 +143,9 @@ pub fn run_parameterisation(study: &ParameterisationStudy) -> Result<Parameteris
     }
     if let Some(section) = &study.pulses {
         outputs.push(("pulses", super::pulses::run_pulses(section, &mut stages, &dir)?));
+    }
+    if let Some(section) = &study.kinetics {
+        outputs.push(("kinetics", super::kinetics::run_kinetics(section, &mut stages, &dir)?));
     }
     if let Some(section) = &study.gitt {
         outputs.push(("gitt", super::gitt::run_gitt(section, &mut stages, &dir)?));
