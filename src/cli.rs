@@ -86,6 +86,14 @@ pub(crate) enum Command {
         /// Study file with two or more objectives, e.g. designs/energy_vs_power_chen2020.toml.
         study: PathBuf,
     },
+    /// Run a parameterisation study: pseudo-OCV, electrode balancing, pulse resistance and
+    /// GITT diffusivity as stages, each feeding the next, with one report.
+    Parameterise {
+        #[command(flatten)]
+        overrides: Overrides,
+        /// Parameterisation study file, e.g. fits/param_ocv_c20.toml.
+        study: PathBuf,
+    },
     /// Fit model parameters to a recording: optimise, report standard errors and plots.
     Fit {
         #[command(flatten)]

@@ -1,6 +1,7 @@
 //! Design study files (TOML): cell, model, operating point, decision variables, ties,
 //! objectives, optimiser and outputs. Unknown keys are errors naming the key and line.
 
+pub mod balancing;
 pub mod basis;
 pub mod cell;
 pub mod constraints;
@@ -10,10 +11,15 @@ pub mod experiment_design;
 pub mod fit;
 mod fit_data;
 pub mod fit_run;
+pub mod gitt;
 pub mod joint_fit;
+pub mod kinetics;
 pub mod landscape;
 pub mod limits;
+pub mod ocv;
+pub mod parameterise;
 pub mod profiles;
+pub mod pulses;
 pub mod sample;
 pub mod shard;
 pub mod simulate;
