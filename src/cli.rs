@@ -94,6 +94,14 @@ pub(crate) enum Command {
         /// Cycling study file, e.g. examples/cycle_sei_chen2020.toml.
         study: PathBuf,
     },
+    /// Run a parameterisation study: pseudo-OCV, electrode balancing, pulse resistance and
+    /// GITT diffusivity as stages, each feeding the next, with one report.
+    Parameterise {
+        #[command(flatten)]
+        overrides: Overrides,
+        /// Parameterisation study file, e.g. fits/param_ocv_c20.toml.
+        study: PathBuf,
+    },
     /// Fit model parameters to a recording: optimise, report standard errors and plots.
     Fit {
         #[command(flatten)]

@@ -164,6 +164,21 @@ fn run(cli: Cli) -> Result<(), Error> {
             // Written for inspection to NAME.rejected, but not an estimate: exit non-zero.
             out.rejection.map_or(Ok(()), Err)
         }
+        Command::Parameterise { overrides, study } => {
+            use cellstudio::study::parameterise::{ParameterisationStudy, run_parameterisation};
+            let study = ParameterisationStudy::from_file(&study)?.with_overrides(overrides.set)?;
+            let out = run_parameterisation(&study)?;
+            note(&out.notes);
+            warn(&out.warnings);
+            println!("{}", study.name);
+            for line in &out.summary {
+                println!("  {line}");
+            }
+            for f in &out.files {
+                println!("wrote {}", f.display());
+            }
+            Ok(())
+        }
         Command::Sample { overrides, study, data } => {
             let study = FitStudy::from_file(&study)?.with_overrides(overrides.set)?;
             let out = run_sample(&study, data.as_deref())?;

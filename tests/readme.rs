@@ -8,7 +8,8 @@ use std::process::Command;
 const REPO: &str = env!("CARGO_MANIFEST_DIR");
 
 /// Commands not run here, by their first words, and why.
-const SKIPPED: [(&str, &str); 3] = [
+const SKIPPED: [(&str, &str); 4] = [
+    ("parameterise fits/param_lgm50", "reads ../shared/recordings, absent from the scratch copy"),
     ("fit fits/lgm50_joint", "reads ../shared/recordings, absent from the scratch copy; tests/joint_fit.rs runs the same study"),
     ("sample ", "about 60 s of MCMC; the samplers are checked in tests/samplers.rs"),
     ("diagnose ", "reads a bench recording from tests/data; tests/diagnosis_bench.rs runs every bench case"),
@@ -41,7 +42,7 @@ fn readme_commands_run_as_written() {
 
     let dir: PathBuf = std::env::temp_dir().join(format!("cellstudio-readme-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
-    for sub in ["designs", "fits", "protocols", "examples", "tests/data/cycler"] {
+    for sub in ["designs", "fits", "protocols", "examples", "tests/data/cycler", "tests/data/parameterisation"] {
         copy_dir(&Path::new(REPO).join(sub), &dir.join(sub));
     }
     let seed = Path::new(REPO).join("tests/data/spm_contact_resistance_seed.csv");

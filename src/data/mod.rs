@@ -3,10 +3,14 @@
 
 pub mod cycler;
 mod format;
+mod pseudo_ocv;
+mod pulses;
 mod recording;
 mod sanity;
 mod segments;
 
 pub use format::CsvFormat;
+pub use pseudo_ocv::{OcvBranch, PseudoOcv};
+pub use pulses::{Pulse, pulses};
 pub use recording::{Recording, VoltageError};
 pub use sanity::{Finding, RecordingStats};

@@ -2,13 +2,15 @@
 //! effects may be hiding each other (a lost electrode capacity and self-heating pull the
 //! voltage opposite ways). Every pair of candidates whose own fit lowered the training error
 //! at all (or was fitted to a recorded temperature) is refitted together, the second added
-//! to the first's model (from the first start; the three best whose fit is doubtful again
-//! from every start), and counted and judged as a single candidate is (both effects'
-//! parameters and structural changes count).
+//! to the first's model, and counted and judged as a single candidate is (both effects'
+//! parameters and structural changes count). Every pair is screened with a few iterations
+//! from its first start; the three best by training error continue to convergence from
+//! there, and the three best whose fit is doubtful are refitted from every start.
 
 use rayon::prelude::*;
 
 use super::{Candidate, CandidateOutcome, DiagnoseOptions, FitOutcome, Split, refit_candidate, select};
+use crate::problem::least_squares::LmSettings;
 use crate::data::Recording;
 use crate::params::ParameterSet;
 
@@ -39,14 +41,45 @@ pub(super) fn best_pair(singles: &[CandidateOutcome], round: &Round) -> Option<C
         .flat_map(|(i, a)| useful[i + 1..].iter().map(move |b| (*a, *b)))
         .filter(|(a, b)| !(electrolyte(a.candidate) && electrolyte(b.candidate)))
         .collect();
-    // Every pair from its first start; the few best whose fit is doubtful (it stopped on its
-    // cap or ended on a bound) again from every start, as the singles are.
-    let first: Vec<(usize, CandidateOutcome)> = pairs.par_iter().enumerate().filter_map(|(k, (a, b))| Some((k, fit_pair(a, b, round, None)?))).collect();
+    // Every pair screened from its first start with a few iterations; the few best by
+    // training error that had not converged by then continue from where they stopped; the
+    // few best whose fit is doubtful (it stopped on its cap or ended on a bound) are refitted
+    // from every start, as the singles are.
+    let full = round.options.fit.lm;
+    let screen = LmSettings { max_iterations: SCREEN_ITERATIONS.min(full.max_iterations), ..full };
+    let mut first: Vec<(usize, CandidateOutcome)> =
+        pairs.par_iter().enumerate().filter_map(|(k, (a, b))| Some((k, fit_pair(a, b, round, PairStart::Screen(screen))?))).collect();
+    let mut best_first: Vec<usize> = (0..first.len()).collect();
+    best_first.sort_by(|i, j| rmse_train(&first[*i].1).total_cmp(&rmse_train(&first[*j].1)));
+    let unconverged: Vec<usize> =
+        best_first.into_iter().take(CONTINUED_PAIRS).filter(|i| first[*i].1.fit.as_ref().is_some_and(|f| !f.converged)).collect();
+    let continued: Vec<(usize, Option<CandidateOutcome>)> = unconverged
+        .par_iter()
+        .map(|&i| {
+            let (k, screened) = &first[i];
+            (i, fit_pair(pairs[*k].0, pairs[*k].1, round, PairStart::Continue(screened.fit.as_ref().expect("screened fits are kept"))))
+        })
+        .collect();
+    for (i, pair) in continued {
+        if let Some(mut pair) = pair {
+            let screened = first[i].1.fit.as_ref().expect("screened fits are kept");
+            let (sims, secs) = (screened.simulations, screened.seconds);
+            let fit = pair.fit.as_mut().expect("a pair outcome holds its fit");
+            fit.simulations += sims;
+            fit.seconds += secs;
+            first[i].1 = pair;
+        }
+    }
     let mut doubtful: Vec<&(usize, CandidateOutcome)> =
         first.iter().filter(|(_, p)| p.fit.as_ref().is_some_and(|f| !f.converged || f.on_bound.iter().any(|b| *b))).collect();
     doubtful.sort_by(|(_, p), (_, q)| rmse_train(p).total_cmp(&rmse_train(q)));
-    let again: Vec<CandidateOutcome> =
-        doubtful.into_iter().take(REFIT_DOUBTFUL_PAIRS).collect::<Vec<_>>().into_par_iter().filter_map(|(k, _)| fit_pair(pairs[*k].0, pairs[*k].1, round, Some(&[]))).collect();
+    let again: Vec<CandidateOutcome> = doubtful
+        .into_iter()
+        .take(REFIT_DOUBTFUL_PAIRS)
+        .collect::<Vec<_>>()
+        .into_par_iter()
+        .filter_map(|(k, _)| fit_pair(pairs[*k].0, pairs[*k].1, round, PairStart::Every))
+        .collect();
     first
         .into_iter()
         .map(|(_, p)| p)
@@ -55,6 +88,12 @@ pub(super) fn best_pair(singles: &[CandidateOutcome], round: &Round) -> Option<C
         .max_by(|p, q| p.comparison.delta_bic.total_cmp(&q.comparison.delta_bic))
 }
 
+/// Levenberg-Marquardt iterations of every pair's screening fit.
+const SCREEN_ITERATIONS: usize = 4;
+
+/// Screened pairs, the best by training error first, that continue to convergence.
+const CONTINUED_PAIRS: usize = 3;
+
 /// Doubtful pairs refitted from every start, the best by training error first.
 const REFIT_DOUBTFUL_PAIRS: usize = 3;
 
@@ -62,19 +101,45 @@ fn rmse_train(p: &CandidateOutcome) -> f64 {
     p.fit.as_ref().map_or(f64::INFINITY, |f| f.rmse_train)
 }
 
-/// Candidate `b` added to `a`'s fitted model, refitted from the first start (`restarts`
-/// `None`) or from every start, and judged as a single candidate is; `None` when `b` cannot
-/// be added or the fit fails.
-fn fit_pair(a: &CandidateOutcome, b: &CandidateOutcome, round: &Round, restarts: Option<&[Vec<f64>]>) -> Option<CandidateOutcome> {
+/// Where a pair's fit starts and how far it goes.
+enum PairStart<'a> {
+    /// From the first start, with these settings.
+    Screen(LmSettings),
+    /// From the values of an earlier fit of the same pair, to convergence.
+    Continue(&'a FitOutcome),
+    /// From every start, to convergence.
+    Every,
+}
+
+/// Candidate `b` added to `a`'s fitted model, refitted from `start`, and judged as a single
+/// candidate is; `None` when `b` cannot be added or the fit fails.
+fn fit_pair(a: &CandidateOutcome, b: &CandidateOutcome, round: &Round, start: PairStart) -> Option<CandidateOutcome> {
     let n_train = round.split.train_points();
     let next_a = a.next.as_ref()?;
     let paths: Vec<String> = next_a.fitted.iter().map(|p| p.path.clone()).collect();
-    let aug = b.candidate.augment(&next_a.spec, &next_a.base, &paths)?;
+    let mut aug = b.candidate.augment(&next_a.spec, &next_a.base, &paths)?;
     let partner: Vec<String> = aug.extra.iter().map(|p| p.path.clone()).collect();
     // The first effect's fixed structural parameters count too.
     let structural_a = a.candidate.augment(&round.options.spec, round.base, round.fitted_paths).map_or(0, |x| x.structural_parameters);
     let change = format!("{}; {}", a.change, aug.change);
-    let (fit, _, next) = refit_candidate(b.candidate, aug, &next_a.fitted, restarts, round.options, round.data, round.split);
+    let mut warm = next_a.fitted.clone();
+    let mut options = round.options.clone();
+    let restarts: Option<&[Vec<f64>]> = match start {
+        PairStart::Screen(lm) => {
+            options.fit.lm = lm;
+            None
+        }
+        PairStart::Continue(earlier) => {
+            for p in warm.iter_mut().chain(aug.extra.iter_mut()) {
+                if let Some(k) = earlier.names.iter().position(|n| *n == p.path) {
+                    p.initial = earlier.values[k].clamp(p.lower, p.upper);
+                }
+            }
+            None
+        }
+        PairStart::Every => Some(&[]),
+    };
+    let (fit, _, next) = refit_candidate(b.candidate, aug, &warm, restarts, &options, round.data, round.split);
     let mut fit = fit?;
     fit.parameters += structural_a;
     let comparison = select::compare(round.baseline, &fit, n_train);

@@ -125,6 +125,12 @@ fn pulled_into_model(problem: &FittingProblem, start: &[f64], runs_at: &[f64]) -
     (1..=PULL_HALVINGS).find(|&k| problem.simulate(&toward(1.0 - 0.5f64.powi(k as i32))).is_ok()).map(|k| toward(1.0 - 0.5f64.powi(k as i32 + 1)))
 }
 
+/// Whether the converged fit `b` ended where `a` did: the same parameters on a bound and the
+/// same SSE within ten times the relative tolerance `sse_tolerance` the fits converged to.
+fn same_optimum(a: &LeastSquaresFit, b: &LeastSquaresFit, sse_tolerance: f64) -> bool {
+    b.converged && a.on_bound == b.on_bound && (a.sse - b.sse).abs() <= 10.0 * sse_tolerance * a.sse.max(b.sse)
+}
+
 /// One fitted model, scored.
 #[derive(Clone, Debug, Serialize)]
 pub struct FitOutcome {
@@ -208,15 +214,25 @@ pub fn fit_and_score(
             None => Err(e),
         })
     };
-    // The first start; the others only when it fails, stops on its cap, ends on a bound or
-    // holds a parameter (`converged` is false then).
+    // The first start; when it fails, stops on its cap, ends on a bound or holds a parameter
+    // (`converged` is false then), the second and the last as well; the rest only when those
+    // do not end where the first did (a bound can be where the optimum lies: a candidate with
+    // no effect in the recording ends on its no-effect bound from every start).
     let mut fits: Vec<Result<LeastSquaresFit, Error>> = vec![fit_from(&points[0])];
     let doubtful = match &fits[0] {
         Ok(f) => !f.converged || f.on_bound.iter().any(|b| *b),
         Err(_) => true,
     };
-    if doubtful {
-        fits.extend(points[1..].par_iter().map(fit_from).collect::<Vec<_>>());
+    if doubtful && points.len() > 1 {
+        let last = points.len() - 1;
+        let probe: Vec<usize> = if last > 1 { vec![1, last] } else { vec![1] };
+        let probed: Vec<Result<LeastSquaresFit, Error>> = probe.par_iter().map(|&i| fit_from(&points[i])).collect();
+        let agree = fits[0].as_ref().is_ok_and(|first| first.converged && probed.iter().all(|f| f.as_ref().is_ok_and(|f| same_optimum(first, f, settings.lm.sse_tolerance))));
+        fits.extend(probed);
+        if !agree {
+            let rest: Vec<usize> = (2..last).collect();
+            fits.extend(rest.par_iter().map(|&i| fit_from(&points[i])).collect::<Vec<_>>());
+        }
     }
     // Work of every start, not only the best one's.
     let simulations: usize = fits.iter().filter_map(|f| f.as_ref().ok()).map(|f| f.simulations).sum();

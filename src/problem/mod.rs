@@ -1,10 +1,12 @@
 //! Problems: what to simulate for a candidate parameter vector and what to measure.
 
+pub mod balancing;
 pub mod bracket;
 pub mod design;
 pub mod experiment_design;
 pub mod fast_charge;
 pub mod fitting;
+pub mod gitt;
 pub mod global_sensitivity;
 pub mod identification;
 pub mod joint;

@@ -2,6 +2,7 @@
 //! objectives, optimiser and outputs; the other studies (fit, sample, eis, cycle, ...) in
 //! their modules. Unknown keys are errors naming the key and line.
 
+pub mod balancing;
 pub mod basis;
 pub mod cell;
 pub mod constraints;
@@ -12,10 +13,15 @@ pub mod experiment_design;
 pub mod fit;
 mod fit_data;
 pub mod fit_run;
+pub mod gitt;
 pub mod joint_fit;
+pub mod kinetics;
 pub mod landscape;
 pub mod limits;
+pub mod ocv;
+pub mod parameterise;
 pub mod profiles;
+pub mod pulses;
 pub mod sample;
 pub mod shard;
 pub mod simulate;
