@@ -60,6 +60,7 @@ pub(super) fn best_pair(singles: &[CandidateOutcome], round: &Round) -> Option<C
             (i, fit_pair(pairs[*k].0, pairs[*k].1, round, PairStart::Continue(screened.fit.as_ref().expect("screened fits are kept"))))
         })
         .collect();
+    let mut fitted: Vec<bool> = first.iter().map(|(_, p)| p.fit.as_ref().is_some_and(|f| f.converged)).collect();
     for (i, pair) in continued {
         if let Some(mut pair) = pair {
             let screened = first[i].1.fit.as_ref().expect("screened fits are kept");
@@ -68,8 +69,13 @@ pub(super) fn best_pair(singles: &[CandidateOutcome], round: &Round) -> Option<C
             fit.simulations += sims;
             fit.seconds += secs;
             first[i].1 = pair;
+            fitted[i] = true;
         }
     }
+    // A screen that stopped on its few iterations and was not continued is not a fit: it
+    // cannot be named.
+    let mut keep = fitted.into_iter();
+    first.retain(|_| keep.next().unwrap_or(false));
     let mut doubtful: Vec<&(usize, CandidateOutcome)> =
         first.iter().filter(|(_, p)| p.fit.as_ref().is_some_and(|f| !f.converged || f.on_bound.iter().any(|b| *b))).collect();
     doubtful.sort_by(|(_, p), (_, q)| rmse_train(p).total_cmp(&rmse_train(q)));
