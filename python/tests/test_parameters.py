@@ -15,7 +15,8 @@ def test_set_get_round_trip_through_dict_and_pickle():
     assert ps["positive.thickness"] == 70e-6
     d = ps.to_dict()
     assert d["positive.thickness"] == 70e-6 and d["cell.nominal_capacity"] == 5.0
-    assert len(d) == 75
+    # Every scalar of the set, each readable back by its path.
+    assert len(d) > 70 and all(ps[k] == v for k, v in d.items())
     assert pickle.loads(pickle.dumps(ps)) == ps
     assert cs.ParameterSet.from_json(ps.to_json()) == ps
 
