@@ -11,6 +11,7 @@ use crate::models::{ModelKind, Submodels};
 use crate::params::{CellFormat, MassBasis, MassConvention, ParameterSet};
 use crate::protocol::{Protocol, Step};
 pub use super::fast_charge::{FastCharge, FastChargeSpec};
+pub use super::life::LifeSpec;
 pub use super::pulse::PulseSpec;
 pub use super::timed_energy::TimedEnergySpec;
 use crate::simulation::{SimOptions, simulate};
@@ -49,6 +50,9 @@ pub enum Metric {
     GravimetricTimedEnergyDensity,
     /// The same per cell volume (W h/L).
     VolumetricTimedEnergyDensity,
+    /// Discharge capacity after the life cycles over the first cycle's (-, [`LifeSpec`]);
+    /// needs an ageing submodel.
+    CapacityRetention,
 }
 
 /// How a dependent parameter follows the decision variables: `target = constant - sum(of)`.
@@ -120,6 +124,9 @@ pub struct DesignMetrics {
     pub timed_energy: Option<f64>,
     pub gravimetric_timed_energy_density: Option<f64>,
     pub volumetric_timed_energy_density: Option<f64>,
+    /// Capacity retention after the life cycles (-), when the problem asks for it
+    /// ([`LifeSpec`]).
+    pub capacity_retention: Option<f64>,
 }
 
 impl Metric {
@@ -139,7 +146,23 @@ impl Metric {
             Metric::TemperatureRise => "temperature rise (K)",
             Metric::GravimetricTimedEnergyDensity => "gravimetric energy density at a fixed discharge time (W h/kg)",
             Metric::VolumetricTimedEnergyDensity => "volumetric energy density at a fixed discharge time (W h/L)",
+            Metric::CapacityRetention => "capacity retention after the life cycles (-)",
         }
+    }
+
+    /// `v` with the decimals the metric's unit needs (0.1 W h/kg; 1e-4 for a ratio or a rate).
+    pub fn show(&self, v: f64) -> String {
+        let decimals = match self {
+            Metric::FastChargeRate | Metric::NpRatio | Metric::CapacityRetention => 4,
+            Metric::Capacity | Metric::Energy | Metric::TemperatureRise => 3,
+            _ => 1,
+        };
+        format!("{v:.decimals$}")
+    }
+
+    /// The metric's name in study files (`gravimetric_energy_density`, ...).
+    pub fn key(&self) -> String {
+        serde_json::to_value(self).ok().and_then(|v| v.as_str().map(str::to_string)).unwrap_or_default()
     }
 
     /// Whether the metric needs a timed discharge ([`TimedEnergySpec`]) besides the discharge.
@@ -155,6 +178,11 @@ impl Metric {
     /// Whether the metric needs a plating-free charge search ([`FastChargeSpec`]).
     pub fn needs_fast_charge(&self) -> bool {
         matches!(self, Metric::FastChargeRate)
+    }
+
+    /// Whether the metric needs the life cycles ([`LifeSpec`]).
+    pub fn needs_life(&self) -> bool {
+        matches!(self, Metric::CapacityRetention)
     }
 }
 
@@ -180,6 +208,7 @@ impl DesignMetrics {
             Metric::TemperatureRise => self.temperature_rise,
             Metric::GravimetricTimedEnergyDensity => self.gravimetric_timed_energy_density.unwrap_or(f64::NAN),
             Metric::VolumetricTimedEnergyDensity => self.volumetric_timed_energy_density.unwrap_or(f64::NAN),
+            Metric::CapacityRetention => self.capacity_retention.unwrap_or(f64::NAN),
         }
     }
 }
@@ -208,6 +237,8 @@ pub struct DesignProblem {
     pub fast_charge: Option<FastChargeSpec>,
     /// The timed constant-power discharge whose energy is measured, when asked for.
     pub timed_energy: Option<TimedEnergySpec>,
+    /// The cycles whose capacity retention is measured, when asked for.
+    pub life: Option<LifeSpec>,
     /// Builders re-used across evaluations (one per concurrent evaluation).
     pool: BuilderPool,
 }
@@ -242,6 +273,7 @@ impl DesignProblem {
             pulse: None,
             fast_charge: None,
             timed_energy: None,
+            life: None,
             pool: BuilderPool::default(),
         })
     }
@@ -273,6 +305,13 @@ impl DesignProblem {
     pub fn with_fast_charge(mut self, spec: FastChargeSpec) -> Result<Self, Error> {
         spec.validate()?;
         self.fast_charge = Some(spec);
+        Ok(self)
+    }
+
+    /// Measures every candidate's capacity retention after the life cycles too ([`LifeSpec`]).
+    pub fn with_life(mut self, spec: LifeSpec) -> Result<Self, Error> {
+        spec.validate(self.one_c(&self.base))?;
+        self.life = Some(spec);
         Ok(self)
     }
 
@@ -311,7 +350,7 @@ impl DesignProblem {
                 Step::Power { power, duration: 1.5 * energy / power, until_voltage: None }
             }
             None => {
-                let one_c = if self.rate_from_theoretical_capacity { p.theoretical_capacity() } else { p.cell.nominal_capacity };
+                let one_c = self.one_c(p);
                 let current = self.c_rate * one_c;
                 // Long enough for any design: 1.5 times its theoretical capacity at this current.
                 let duration = 1.5 * 3600.0 * p.theoretical_capacity().max(one_c) / current;
@@ -319,6 +358,12 @@ impl DesignProblem {
             }
         };
         Protocol { steps: vec![step] }
+    }
+
+    /// The capacity (A h) that 1C of a candidate's parameter set discharges in an hour: the
+    /// nominal or the theoretical one.
+    pub fn one_c(&self, p: &ParameterSet) -> f64 {
+        if self.rate_from_theoretical_capacity { p.theoretical_capacity() } else { p.cell.nominal_capacity }
     }
 
     /// The parameter set of a candidate `x` (one value per variable, ties applied).
@@ -375,6 +420,10 @@ impl DesignProblem {
             Some(spec) => Some(spec.search(builder, p)?),
             None => None,
         };
+        let capacity_retention = match &self.life {
+            Some(spec) => Some(spec.retention(builder, p, self.one_c(p))?),
+            None => None,
+        };
         let built = builder.build(p)?;
         // The discharge's one step is made from `operating.c_rate` or `operating.power`: a
         // demand the cell cannot carry is named by that setting.
@@ -419,6 +468,7 @@ impl DesignProblem {
             timed_energy,
             gravimetric_timed_energy_density: timed_energy.map(|e| e / budget.mass),
             volumetric_timed_energy_density: timed_energy.map(|e| e / (budget.volume * 1e3)),
+            capacity_retention,
             temperature_rise: sol.temperature.iter().fold(0.0f64, |m, t| m.max(t - sol.temperature[0])),
         })
     }

@@ -11,6 +11,7 @@ pub mod global_sensitivity;
 pub mod identification;
 pub mod joint;
 pub mod least_squares;
+pub mod life;
 pub mod posterior;
 pub mod profile;
 pub mod pulse;

@@ -34,6 +34,20 @@ pub fn power_definition(problem: &DesignProblem, min_utilisation: f64) -> String
         100.0 * min_utilisation
     ) + &pulse_definition(problem)
         + &fast_charge_definition(problem)
+        + &life_definition(problem)
+}
+
+/// How capacity retention is defined, when the problem measures it.
+fn life_definition(problem: &DesignProblem) -> String {
+    let Some(spec) = &problem.life else { return String::new() };
+    let start = spec.initial_soc.map_or_else(|| "its set's initial state".to_string(), |s| format!("{:.0} % state of charge", 100.0 * s));
+    format!(
+        " Capacity retention is the discharge capacity of the last of {} cycles of [{}] over the first's, each design from {start}, \
+         with its ageing submodel on and 1C of its own {} capacity.",
+        spec.cycles,
+        spec.cycle.join("; "),
+        if problem.rate_from_theoretical_capacity { "theoretical" } else { "nominal" }
+    )
 }
 
 /// How the plating-free charge rate is defined, when the problem measures it.

@@ -122,7 +122,9 @@ impl CycleStudy {
         let mut p = self.cell.load()?;
         if let Some(soc) = self.cycling.initial_soc {
             crate::params::set_initial_soc(&mut p, soc).map_err(|e| match e {
-                Error::InvalidParameter { value, reason, .. } => Error::InvalidParameter { field: "cycling.initial_soc".into(), value, reason },
+                Error::InvalidParameter { field, value, reason } if field == "soc" => {
+                    Error::InvalidParameter { field: "cycling.initial_soc".into(), value, reason }
+                }
                 other => other,
             })?;
         }

@@ -284,7 +284,11 @@ fn write_outputs(study: &Study, problem: &DesignProblem, out: &mut DesignOutcome
         let _ = writeln!(md, "Multi-start: {} starts (the baseline, then seeded Latin-hypercube points) ended at {}; the best is reported.\n", ends.len(), ends.join(", "));
     }
     if !study.limits.is_empty() {
-        let all: Vec<String> = study.limits.iter().map(super::limits::Limit::describe).collect();
+        let all: Vec<String> = study
+            .limits
+            .iter()
+            .map(|l| format!("{} (initial {:.4}, optimised {:.4})", l.describe(), out.initial.get(l.metric), out.optimised.get(l.metric)))
+            .collect();
         let active = if out.active_limits.is_empty() { "none".to_string() } else { out.active_limits.join(", ") };
         let _ = writeln!(md, "Limits: {}; active at the optimum (within {:.0} % of the bound): {active}.\n", all.join(", "), 100.0 * super::limits::ACTIVE_WITHIN);
     }

@@ -128,6 +128,9 @@ pub struct Operating {
     /// The constant-power discharge of the energy at a fixed discharge time (10 minutes when
     /// its metric is asked for without it).
     pub timed_energy: Option<crate::problem::timed_energy::TimedEnergySpec>,
+    /// The cycles of the capacity-retention metric (no default: a cycle life is asked for
+    /// with its own protocol).
+    pub life: Option<crate::problem::life::LifeSpec>,
 }
 
 /// Default of [`Operating::min_utilisation`].
@@ -275,7 +278,24 @@ impl Study {
                 reason: "temperature_rise needs the lumped thermal submodel: submodels = { thermal = true }".into(),
             });
         }
+        if self.metrics().any(|m| m.needs_life()) {
+            if self.operating.life.is_none() {
+                return Err(Error::InvalidSetting {
+                    field: "operating.life".into(),
+                    reason: "capacity_retention needs the cycles it is measured over: life = { cycles = 500, cycle = [...] }".into(),
+                });
+            }
+            if self.model.submodels.sei == crate::models::submodels::SeiModel::None {
+                return Err(Error::InvalidSetting {
+                    field: "model.submodels".into(),
+                    reason: "capacity_retention needs an ageing submodel, or every design keeps all its capacity: submodels = { sei = \"reaction limited\" }".into(),
+                });
+            }
+        }
         let base = self.base_parameters()?;
+        if let Some(life) = &self.operating.life {
+            life.validate(base.cell.nominal_capacity)?;
+        }
         let fixed = self.cell.format_outputs();
         let mut set_paths: Vec<(String, &str)> = self.variables.iter().enumerate().map(|(k, v)| (format!("variables[{k}].path"), v.path.as_str())).collect();
         set_paths.extend(self.ties.iter().enumerate().map(|(k, t)| (format!("ties[{k}].target"), t.target.as_str())));
@@ -464,6 +484,10 @@ impl Study {
         let problem = match self.operating.fast_charge {
             Some(spec) => problem.with_fast_charge(spec)?,
             None if self.metrics().any(|m| m.needs_fast_charge()) => problem.with_fast_charge(Default::default())?,
+            None => problem,
+        };
+        let problem = match &self.operating.life {
+            Some(spec) => problem.with_life(spec.clone())?,
             None => problem,
         };
         match self.operating.power {

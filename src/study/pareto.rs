@@ -202,10 +202,10 @@ fn report(study: &Study, problem: &crate::problem::design::DesignProblem, c: &Co
     let labels: Vec<&str> = metrics.iter().map(|m| m.label()).collect();
     let _ = writeln!(md, "| | {} | {} |\n|---|{}{}", names.join(" | "), labels.join(" | "), "---|".repeat(names.len()), "---|".repeat(labels.len()));
     let _ = writeln!(md, "| baseline | {} | {} |", study.baseline()?.iter().map(|v| format!("{v:.4e}")).collect::<Vec<_>>().join(" | "),
-        baseline.iter().map(|v| format!("{v:.1}")).collect::<Vec<_>>().join(" | "));
+        metrics.iter().zip(baseline).map(|(m, v)| m.show(*v)).collect::<Vec<_>>().join(" | "));
     for (k, ind) in front.iter().enumerate() {
         let xs: Vec<String> = ind.x.iter().map(|v| format!("{v:.4e}")).collect();
-        let fs: Vec<String> = ind.f.iter().map(|v| format!("{v:.1}")).collect();
+        let fs: Vec<String> = metrics.iter().zip(&ind.f).map(|(m, v)| m.show(*v)).collect();
         let _ = writeln!(md, "| front {} | {} | {} |", k + 1, xs.join(" | "), fs.join(" | "));
     }
     md.push_str("\n![front](pareto_front.svg)\n\n");

@@ -158,16 +158,29 @@ pub(super) fn write_sweep(study: &Study, out: crate::output::OutputDir, baseline
     let mut files = Vec::new();
 
     let names: Vec<&str> = study.variables.iter().map(|v| v.path.as_str()).collect();
+    // The study's other metrics (objectives and limits) after the fixed columns.
+    let fixed = [Metric::GravimetricEnergyDensity, Metric::VolumetricEnergyDensity, Metric::GravimetricPowerDensity, Metric::VolumetricPowerDensity];
+    let mut extra: Vec<Metric> = Vec::new();
+    for m in study.metrics().filter(|m| !fixed.contains(m)) {
+        if !extra.contains(&m) {
+            extra.push(m);
+        }
+    }
     let mut csv = names.join(",");
-    csv.push_str(",energy_Wh,mass_kg,volume_m3,gravimetric_energy_density_Wh_kg,volumetric_energy_density_Wh_L,gravimetric_power_density_W_kg,volumetric_power_density_W_L,utilisation,status,error\n");
+    csv.push_str(",energy_Wh,mass_kg,volume_m3,gravimetric_energy_density_Wh_kg,volumetric_energy_density_Wh_L,gravimetric_power_density_W_kg,volumetric_power_density_W_L,utilisation");
+    for m in &extra {
+        let _ = write!(csv, ",{}", m.key());
+    }
+    csv.push_str(",status,error\n");
     for p in &points {
         let xs: Vec<String> = p.x.iter().map(|v| format!("{v:e}")).collect();
         let m = p.metrics.unwrap_or_default();
         let nan = p.metrics.is_none();
         let f = |v: f64| if nan { "nan".to_string() } else { format!("{v}") };
+        let extra: Vec<String> = extra.iter().map(|&e| format!(",{}", f(m.get(e)))).collect();
         let _ = writeln!(
             csv,
-            "{},{},{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{},{}{},{},{}",
             xs.join(","),
             f(m.energy),
             f(m.mass),
@@ -177,6 +190,7 @@ pub(super) fn write_sweep(study: &Study, out: crate::output::OutputDir, baseline
             f(m.gravimetric_power_density),
             f(m.volumetric_power_density),
             f(m.utilisation),
+            extra.concat(),
             p.status.name(),
             p.error.clone().unwrap_or_default().replace(',', ";")
         );
