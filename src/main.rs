@@ -133,6 +133,13 @@ fn run(cli: Cli) -> Result<(), Error> {
             if let Some(l) = last.sei_thickness_m {
                 println!("SEI thickness    {:.4} nm", l * 1e9);
             }
+            if let Some(fade) = &out.fade {
+                warn(&fade.warnings());
+                println!("fade fit         RMSE {:.3} mA h (start {:.3} mA h), {} iterations, {} simulations", fade.rmse_fitted_ah * 1e3, fade.rmse_start_ah * 1e3, fade.iterations, fade.simulations);
+                for line in fade.lines() {
+                    println!("                 {line}");
+                }
+            }
             for f in &out.files {
                 println!("wrote            {}", f.display());
             }

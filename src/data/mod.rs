@@ -2,6 +2,7 @@
 //! comparison of simulated voltage against a recording.
 
 pub mod cycler;
+mod fade;
 mod format;
 mod pseudo_ocv;
 mod pulses;
@@ -9,6 +10,7 @@ mod recording;
 mod sanity;
 mod segments;
 
+pub use fade::CapacityFade;
 pub use format::CsvFormat;
 pub use pseudo_ocv::{OcvBranch, PseudoOcv};
 pub use pulses::{Pulse, pulses};

@@ -57,9 +57,54 @@ pub struct LeastSquaresFit {
     pub converged: bool,
     pub iterations: usize,
     pub simulations: usize,
-    /// Model voltage (V) at every recorded point, at `x`.
+    /// The modelled curve at `x` ([`LeastSquares::curve`]): for a recording, the voltage (V)
+    /// at every recorded point.
     #[serde(skip)]
     pub voltage: Vec<f64>,
+}
+
+/// What Levenberg-Marquardt fits: bounded parameters and the weighted residuals of a model
+/// run at them (a recording's voltage, a capacity-fade curve, ...).
+pub trait LeastSquares: Sync {
+    /// What one model run produced.
+    type Run: Send;
+    /// The parameters, in the order of `x`.
+    fn parameters(&self) -> &[FitParameter];
+    /// Runs the model at `x` (parameter units); errors when it fails.
+    fn run(&self, x: &[f64]) -> Result<Self::Run, Error>;
+    /// Weighted residuals of a run.
+    fn weighted_residuals(&self, run: &Self::Run) -> Vec<f64>;
+    /// Points with a positive weight, and the residuals they give (more when a point holds
+    /// several measured quantities), for the residual variance.
+    fn counts(&self, run: &Self::Run) -> (usize, usize);
+    /// Lag-1 autocorrelation of a run's residuals in recording order (0 when independent).
+    fn lag1(&self, run: &Self::Run) -> f64;
+    /// The modelled curve kept with the fit, one value per recorded point.
+    fn curve(run: Self::Run) -> Vec<f64>;
+}
+
+impl LeastSquares for FittingProblem {
+    type Run = super::fitting::Simulated;
+    fn parameters(&self) -> &[FitParameter] {
+        &self.parameters
+    }
+    fn run(&self, x: &[f64]) -> Result<Self::Run, Error> {
+        self.simulate_outputs(x)
+    }
+    fn weighted_residuals(&self, run: &Self::Run) -> Vec<f64> {
+        FittingProblem::weighted_residuals(self, run)
+    }
+    fn counts(&self, run: &Self::Run) -> (usize, usize) {
+        let points = self.weights.iter().filter(|w| **w > 0.0).count();
+        // A fitted temperature doubles the residuals.
+        (points, if run.temperature.is_empty() { points } else { 2 * points })
+    }
+    fn lag1(&self, run: &Self::Run) -> f64 {
+        lag1(&self.residuals(&run.voltage), &self.weights)
+    }
+    fn curve(run: Self::Run) -> Vec<f64> {
+        run.voltage
+    }
 }
 
 struct Scale<'a>(&'a [FitParameter]);
@@ -89,14 +134,14 @@ fn sse(r: &[f64]) -> f64 {
 
 /// Fits the problem's parameters from `start` (parameter units) by Levenberg-Marquardt.
 /// Errors when the model fails at `start`; a failed trial step only raises the damping.
-pub fn levenberg_marquardt(problem: &FittingProblem, start: &[f64], settings: LmSettings) -> Result<LeastSquaresFit, Error> {
-    let scale = Scale(&problem.parameters);
+pub fn levenberg_marquardt<P: LeastSquares>(problem: &P, start: &[f64], settings: LmSettings) -> Result<LeastSquaresFit, Error> {
+    let scale = Scale(problem.parameters());
     let bounds = scale.bounds();
     let k = start.len();
     let project = |z: &mut [f64]| z.iter_mut().zip(&bounds).for_each(|(v, (lo, hi))| *v = v.clamp(*lo, *hi));
     let mut z = scale.to_z(start);
     project(&mut z);
-    let mut outputs = problem.simulate_outputs(&scale.to_x(&z))?;
+    let mut outputs = problem.run(&scale.to_x(&z))?;
     let mut r = problem.weighted_residuals(&outputs);
     let mut cost = sse(&r);
     let mut simulations = 1;
@@ -162,7 +207,7 @@ pub fn levenberg_marquardt(problem: &FittingProblem, start: &[f64], settings: Lm
                 break;
             }
             simulations += 1;
-            let Ok(v) = problem.simulate_outputs(&scale.to_x(&trial)) else {
+            let Ok(v) = problem.run(&scale.to_x(&trial)) else {
                 lambda *= 10.0;
                 continue;
             };
@@ -194,12 +239,10 @@ pub fn levenberg_marquardt(problem: &FittingProblem, start: &[f64], settings: Lm
     }
     converged &= !holding;
     let x = scale.to_x(&z);
-    let points = problem.weights.iter().filter(|w| **w > 0.0).count();
-    // A fitted temperature doubles the residuals.
-    let residuals = if outputs.temperature.is_empty() { points } else { 2 * points };
+    let (points, residuals) = problem.counts(&outputs);
     let dof = (residuals.saturating_sub(k)).max(1) as f64;
     let sigma2 = (cost / dof).max(f64::MIN_POSITIVE);
-    let rho = lag1(&problem.residuals(&outputs.voltage), &problem.weights).max(0.0).min(0.99);
+    let rho = problem.lag1(&outputs).max(0.0).min(0.99);
     let inflation = (1.0 + rho) / (1.0 - rho);
     let (jtj, _) = normal_equations(&jac, &r);
     let (cov, ln_det) = inverse_and_log_det(&jtj, k)?;
@@ -216,7 +259,7 @@ pub fn levenberg_marquardt(problem: &FittingProblem, start: &[f64], settings: Lm
         converged,
         iterations,
         simulations,
-        voltage: outputs.voltage,
+        voltage: P::curve(outputs),
     })
 }
 
@@ -224,12 +267,12 @@ pub fn levenberg_marquardt(problem: &FittingProblem, start: &[f64], settings: Lm
 /// per parameter (stepping inwards at an upper bound), and which columns are held: zero
 /// because the model breaks on both sides of the point in that parameter. Errors when every
 /// column is held.
-fn jacobian(problem: &FittingProblem, scale: &Scale, z: &[f64], bounds: &[(f64, f64)], r: &[f64]) -> Result<(Vec<Vec<f64>>, Vec<bool>), Error> {
+fn jacobian<P: LeastSquares>(problem: &P, scale: &Scale, z: &[f64], bounds: &[(f64, f64)], r: &[f64]) -> Result<(Vec<Vec<f64>>, Vec<bool>), Error> {
     let columns: Vec<Result<Vec<f64>, Error>> = (0..z.len())
         .into_par_iter()
         .map(|i| {
             let (lo, hi) = bounds[i];
-            let h = if problem.parameters[i].log { 1e-2 } else { 2e-3 };
+            let h = if problem.parameters()[i].log { 1e-2 } else { 2e-3 };
             let h = if z[i] + h > hi { -h.min(z[i] - lo).max(h * 1e-3) } else { h };
             // Forward, or backward when the model fails on the forward side (a step that the
             // bounds shrink to nothing is no step).
@@ -238,9 +281,9 @@ fn jacobian(problem: &FittingProblem, scale: &Scale, z: &[f64], bounds: &[(f64, 
                 zi[i] = (z[i] + h).clamp(lo, hi);
                 let h = zi[i] - z[i];
                 if h == 0.0 {
-                    return Err(Error::invalid(problem.parameters[i].path.clone(), scale.to_x(z)[i], "no room for a difference step inside the bounds"));
+                    return Err(Error::invalid(problem.parameters()[i].path.clone(), scale.to_x(z)[i], "no room for a difference step inside the bounds"));
                 }
-                let v = problem.simulate_outputs(&scale.to_x(&zi))?;
+                let v = problem.run(&scale.to_x(&zi))?;
                 Ok(problem.weighted_residuals(&v).iter().zip(r).map(|(a, b)| (a - b) / h).collect())
             };
             column(h).or_else(|_| column(-h))

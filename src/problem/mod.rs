@@ -4,6 +4,7 @@ pub mod balancing;
 pub mod bracket;
 pub mod design;
 pub mod experiment_design;
+pub mod fade;
 pub mod fast_charge;
 pub mod fitting;
 pub mod gitt;

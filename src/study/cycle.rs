@@ -53,6 +53,9 @@ pub struct CycleStudy {
     pub cycling: Cycling,
     #[serde(default)]
     pub output: Output,
+    /// Ageing parameters fitted to a measured capacity-fade curve before the cycles run.
+    #[serde(default)]
+    pub fit: Option<super::fade_fit::FadeFitSpec>,
 }
 
 /// The `[cycling]` table.
@@ -83,6 +86,8 @@ pub struct CycleOutcome {
     /// Wall time of the cycles (s).
     pub seconds: f64,
     pub files: Vec<PathBuf>,
+    /// The fade fit, when the study has a `[fit]` table.
+    pub fade: Option<super::fade_fit::FadeFitOutcome>,
 }
 
 impl CycleStudy {
@@ -112,6 +117,9 @@ impl CycleStudy {
             return Err(Error::invalid("cycling.tolerance", c.tolerance, "must lie in (0, 0.01)"));
         }
         let p = self.parameters()?;
+        if let Some(fit) = &self.fit {
+            fit.validate(&p)?;
+        }
         crate::protocol::experiment::parse(&c.cycle, p.cell.nominal_capacity)
             .map_err(|e| Error::InvalidSetting { field: "cycling.cycle".into(), reason: e.to_string() })?
             .validate()
@@ -136,12 +144,19 @@ impl CycleStudy {
     pub fn run(&self, on_cycle: &mut dyn FnMut(&CycleSummary)) -> Result<CycleOutcome, Error> {
         let p = self.parameters()?;
         let protocol = crate::protocol::experiment::parse(&self.cycling.cycle, p.cell.nominal_capacity)?;
-        let inputs: Vec<&Path> = self.source.as_deref().into_iter().chain(self.cell.file()).collect();
+        let inputs: Vec<&Path> = self.source.as_deref().into_iter().chain(self.cell.file()).chain(self.fit.as_ref().map(|f| f.data.as_path())).collect();
         let staged = crate::output::OutputDir::create(&self.output.dir, &inputs)?;
-        let mut builder = ModelBuilder::new(self.model.kind, self.model.submodels, MeshSizes::default());
-        let built = builder.build(&p)?;
         let mut opts = SimOptions::for_cell(&p);
         (opts.solver.rtol, opts.solver.atol) = (self.cycling.tolerance, self.cycling.tolerance);
+        let (p, fade) = match &self.fit {
+            Some(spec) => {
+                let (fitted, outcome) = spec.fit(&p, self.model.kind, self.model.submodels, &protocol, &opts)?;
+                (fitted, Some(outcome))
+            }
+            None => (p, None),
+        };
+        let mut builder = ModelBuilder::new(self.model.kind, self.model.submodels, MeshSizes::default());
+        let built = builder.build(&p)?;
         let n = self.cycling.cycles;
         let bar = crate::progress::bar("cycle", n as u64, "cycle {bar:30} {pos}/{len} cycles [{elapsed}, eta {eta}] {msg}");
         let start = Instant::now();
@@ -170,8 +185,16 @@ impl CycleStudy {
         let x: Vec<f64> = summaries.iter().map(|s| s.cycle as f64).collect();
         let y: Vec<f64> = summaries.iter().map(|s| 100.0 * s.capacity_retention).collect();
         line_plot(&svg, &self.name, "Cycle", "Capacity retention (%)", &[Series { label: format!("{} {}", self.model.kind, p.name), x: &x, y: &y }])?;
-        let files = staged.commit(&[csv, json, svg])?;
-        Ok(CycleOutcome { summaries, seconds, files })
+        let mut written = vec![csv, json, svg];
+        if let Some(fade) = &fade {
+            let (json, svg) = (dir.join("fade_fit.json"), dir.join("fade_fit.svg"));
+            let body = serde_json::json!({ "fit": fade, "warnings": fade.warnings() });
+            crate::error::write_file(&json, serde_json::to_string_pretty(&body).unwrap_or_default())?;
+            fade.plot(&svg, &format!("{}: capacity fade", self.name))?;
+            written.extend([json, svg]);
+        }
+        let files = staged.commit(&written)?;
+        Ok(CycleOutcome { summaries, seconds, files, fade })
     }
 }
 

@@ -10,6 +10,7 @@ pub mod cycle;
 pub mod design;
 pub mod eis;
 pub mod experiment_design;
+pub mod fade_fit;
 pub mod fit;
 mod fit_data;
 pub mod fit_run;
