@@ -100,7 +100,7 @@ fn judged(t: &Truth, rounds: &[Diagnosis]) -> bool {
     }
 }
 
-fn run_case(name: &str) {
+fn run_case(name: &str) -> Vec<Diagnosis> {
     let t = truth(name);
     let rec = Recording::from_csv(&case_dir(name).join("recording.csv")).unwrap();
     let mut p = chen2020();
@@ -131,6 +131,7 @@ fn run_case(name: &str) {
         let goal = (before / 5.0).max(1.1 * rounds[0].noise);
         assert!(after <= goal, "{name}: RMSE cut only {:.2}x ({:.2} -> {:.2} mV, noise {:.2} mV)", before / after, before * 1e3, after * 1e3, rounds[0].noise * 1e3);
     }
+    rounds
 }
 
 #[test]
@@ -431,4 +432,27 @@ fn p4_negative_control_gitt_charge_warm_dfn() {
 #[test]
 fn p8_hysteresis_two_way_gitt_spme() {
     run_case("diagnosis-extra/p8_hysteresis_bidirectional_gitt_15C");
+}
+
+// Multi-cycle recordings (`scripts/make_ageing_cases.py`, 12 CC-CV cycles of PyBaMM's SPM):
+// SEI growth is named only where the lithium loss drifts from cycle to cycle.
+
+#[test]
+fn g1_sei_growth_over_12_cycles_spm() {
+    let rounds = run_case("diagnosis-ageing/g1_sei_growth_12_cycles_spm");
+    let fit = rounds[0].best().and_then(|c| c.fit.as_ref()).expect("a named candidate holds its fit");
+    let k = fit.names.iter().position(|n| n == "sei.exchange_current").map(|i| fit.values[i]).expect("the SEI's exchange current is fitted");
+    // PyBaMM's Chen 2020 SEI exchange current x20.
+    assert!((k / 3.0e-6 - 1.0).abs() < 0.05, "SEI exchange current {k:.4e} vs PyBaMM's 3.0e-6");
+}
+
+#[test]
+fn g2_negative_control_12_cycles_spm() {
+    run_case("diagnosis-ageing/g2_control_12_cycles_spm");
+}
+
+#[test]
+fn g3_fixed_inventory_loss_is_not_sei_growth_spm() {
+    let rounds = run_case("diagnosis-ageing/g3_fixed_inventory_loss_12_cycles_spm");
+    assert!(!report::verdict_in_words(&rounds[0]).contains("SEI"), "{}", rounds[0].summary);
 }

@@ -10,6 +10,7 @@ use serde::Serialize;
 use super::features::Features;
 use crate::data::Recording;
 use crate::models::ModelKind;
+use crate::models::submodels::SeiModel;
 use crate::params::ParameterSet;
 use crate::problem::fitting::{FitParameter, INITIAL_SOC, ModelSpec};
 
@@ -28,6 +29,7 @@ pub enum Candidate {
     Thermal,
     RcDynamics,
     Hysteresis,
+    SeiGrowth,
 }
 
 /// Missing physics or a parameter the model has but with the wrong value.
@@ -57,8 +59,24 @@ pub struct Augmentation {
 /// Multiplicative range (-) over which a parameter that the model already has is refitted.
 const MISMATCH_RANGE: f64 = 30.0;
 
+/// Multiplicative range (-) of the SEI's exchange current around the set's: a parameter set's
+/// ageing rate is a guess, not a measurement.
+const SEI_RANGE: f64 = 1000.0;
+
+/// Full swings of the charge a recording must span for an ageing candidate (a single
+/// discharge is half a swing).
+const MIN_AGEING_CYCLES: f64 = 3.0;
+
+/// Charge throughput over twice the largest swing of the discharged charge `capacity` (A h,
+/// cumulative): about the number of full cycles the recording spans.
+fn equivalent_cycles(capacity: &[f64]) -> f64 {
+    let throughput: f64 = capacity.windows(2).map(|w| (w[1] - w[0]).abs()).sum();
+    let (lo, hi) = capacity.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), q| (a.min(*q), b.max(*q)));
+    if hi > lo { throughput / (2.0 * (hi - lo)) } else { 0.0 }
+}
+
 impl Candidate {
-    pub const ALL: [Candidate; 11] = [
+    pub const ALL: [Candidate; 12] = [
         Candidate::SeriesResistance,
         Candidate::Electrolyte,
         Candidate::ElectrolyteComposite,
@@ -70,6 +88,7 @@ impl Candidate {
         Candidate::Thermal,
         Candidate::RcDynamics,
         Candidate::Hysteresis,
+        Candidate::SeiGrowth,
     ];
 
     /// Short name, as the verdict uses it.
@@ -86,12 +105,19 @@ impl Candidate {
             Candidate::Thermal => "thermal (self-heating, temperature dependence)",
             Candidate::RcDynamics => "RC / double-layer dynamics",
             Candidate::Hysteresis => "OCV hysteresis",
+            Candidate::SeiGrowth => "SEI growth (lithium lost as the film grows over the cycles)",
         }
     }
 
     pub fn class(self) -> Class {
         match self {
-            Candidate::SeriesResistance | Candidate::Electrolyte | Candidate::ElectrolyteComposite | Candidate::Thermal | Candidate::RcDynamics | Candidate::Hysteresis => {
+            Candidate::SeriesResistance
+            | Candidate::Electrolyte
+            | Candidate::ElectrolyteComposite
+            | Candidate::Thermal
+            | Candidate::RcDynamics
+            | Candidate::Hysteresis
+            | Candidate::SeiGrowth => {
                 Class::MissingPhysics
             }
             _ => Class::ParameterMismatch,
@@ -112,6 +138,7 @@ impl Candidate {
             Candidate::Thermal => "losses that fall as the cell warms under load (correlated with the recorded temperature rise or with the accumulated I²)",
             Candidate::RcDynamics => "transients of seconds after current steps that settle to an offset under load and decay in rests",
             Candidate::Hysteresis => "an offset at rest whose sign follows the direction of the last current (charge vs discharge), not its size",
+            Candidate::SeiGrowth => "capacity and the end-of-discharge knee drift from cycle to cycle as lithium is consumed (a fixed stoichiometry offset does not drift), with a slowly growing film resistance",
         }
     }
 
@@ -126,6 +153,7 @@ impl Candidate {
             Candidate::Thermal => "heat-transfer coefficient 1 to 500 W/(m^2 K)",
             Candidate::RcDynamics => "time constant R C of 1 ms to 30 s (longer is transport, not an interface)",
             Candidate::Hysteresis => "half-width up to 50 mV",
+            Candidate::SeiGrowth => "SEI exchange current 0.001 to 1000 times the set's",
         }
     }
 
@@ -170,6 +198,10 @@ impl Candidate {
             // (e.g. the falling current of a constant-voltage hold).
             Candidate::SeriesResistance | Candidate::Kinetics | Candidate::RcDynamics if f.steps.is_empty() && f.distinct_rates < 2 => {
                 Some("needs current steps or loads at two or more rates".into())
+            }
+            Candidate::SeiGrowth => {
+                let cycles = equivalent_cycles(&f.capacity);
+                (cycles < MIN_AGEING_CYCLES).then(|| format!("needs a recording over {MIN_AGEING_CYCLES} or more cycles (this one spans {cycles:.1} full swings of its charge)"))
             }
             _ => None,
         }
@@ -222,6 +254,18 @@ impl Candidate {
                     return None;
                 }
                 (self.refitted_paths().iter().map(|p| around(p)).collect::<Option<_>>()?, "electrolyte diffusivity and conductivity factors refitted".into())
+            }
+            Candidate::SeiGrowth => {
+                // The DFN has no SEI submodel yet.
+                if spec.submodels.sei != SeiModel::None || spec.kind == ModelKind::Dfn {
+                    return None;
+                }
+                spec.submodels.sei = SeiModel::ReactionLimited;
+                // The film's fixed properties: initial thickness, molar volume, resistivity,
+                // equilibrium potential.
+                structural_parameters = 4;
+                let k = p.sei.exchange_current;
+                (vec![FitParameter::log("sei.exchange_current", k, k / SEI_RANGE, k * SEI_RANGE)], "reaction-limited SEI submodel on".into())
             }
             Candidate::Kinetics => (self.refitted_paths().iter().map(|p| around(p)).collect::<Option<_>>()?, "reaction rate constants of both electrodes refitted".into()),
             Candidate::SolidDiffusion => (self.refitted_paths().iter().map(|p| around(p)).collect::<Option<_>>()?, "particle diffusivities refitted".into()),
@@ -346,6 +390,10 @@ impl Candidate {
             Candidate::Hysteresis => {
                 let h = get("cell.hysteresis_voltage")?;
                 (h > 0.05).then(|| format!("hysteresis half-width {:.1} mV exceeds 50 mV", h * 1e3))
+            }
+            Candidate::SeiGrowth => {
+                let ratio = get("sei.exchange_current")? / base.sei.exchange_current;
+                (!(1.0 / SEI_RANGE..=SEI_RANGE).contains(&ratio)).then(|| format!("SEI exchange current at {ratio:.3e} times the set's is outside 0.001 to 1000"))
             }
             Candidate::Electrolyte | Candidate::ElectrolyteComposite => None,
         }
