@@ -8,6 +8,7 @@ each with PyBaMM's option "loss of active material" set to
 - "reaction-driven", with SEI "reaction limited" (Chen 2020's SEI parameters) and the
   "Negative electrode reaction-driven LAM factor [m3.mol-1]" = 1e-4 of PyBaMM's LAM notebook
   (docs/source/examples/notebooks/models/loss_of_active_materials.ipynb);
+- "stress and reaction-driven", with both of the above and the SEI;
 PyBaMM's default mesh (20 volumes per x-domain and per particle, as ours), IDAKLU at
 rtol = atol = 1e-8.
 
@@ -49,6 +50,7 @@ MECHANICS_KEYS = [
 OPTIONS = {
     "stress_driven": {"loss of active material": "stress-driven"},
     "reaction_driven": {"loss of active material": "reaction-driven", "SEI": "reaction limited"},
+    "stress_and_reaction_driven": {"loss of active material": "stress and reaction-driven", "SEI": "reaction limited"},
 }
 REACTION_FACTOR = 1e-4
 # The largest "LAM constant proportional term [s-1]" of the notebook's sweep (1e-2 per hour,

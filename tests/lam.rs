@@ -3,7 +3,7 @@
 //! options "stress-driven" (OKane2022's mechanical constants, the LAM proportional term
 //! 1e-2 / 3600 1/s of PyBaMM's LAM notebook, stress-induced diffusion on as PyBaMM sets it)
 //! and "reaction-driven" (with the SEI "reaction limited", reaction-driven LAM factor 1e-4
-//! m^3/mol), through 5 CC-CV cycles, the same mesh, PyBaMM's IDAKLU at rtol = atol = 1e-8 and
+//! m^3/mol), and both ("stress and reaction-driven", with the SEI), through 5 CC-CV cycles, the same mesh, PyBaMM's IDAKLU at rtol = atol = 1e-8 and
 //! ours at 1e-8. Compared: the voltage outside the holds, the current in the holds, the
 //! active material volume fractions and the lithium lost with them against time, and the
 //! per-cycle summaries. Lithium (particles + lost with the active material + SEI) is
@@ -15,17 +15,20 @@ use cellstudio::models::{ModelBuilder, ModelKind, Submodels};
 use cellstudio::params::{FARADAY, ParameterSet, chen2020};
 use cellstudio::protocol::{Protocol, Step, experiment};
 use cellstudio::simulation::cycling::run_cycles;
-use cellstudio::simulation::{SimOptions, simulate};
+use cellstudio::simulation::SimOptions;
 
 const CYCLE: [&str; 5] = ["Discharge at 1C until 3.0 V", "Rest for 10 minutes", "Charge at 1C until 4.1 V", "Hold at 4.1 V until C/20", "Rest for 10 minutes"];
 const CYCLES: usize = 5;
-const OPTIONS: [(LamModel, SeiModel, &str); 2] =
-    [(LamModel::StressDriven, SeiModel::None, "stress_driven"), (LamModel::ReactionDriven, SeiModel::ReactionLimited, "reaction_driven")];
+const OPTIONS: [(LamModel, SeiModel, &str); 3] = [
+    (LamModel::StressDriven, SeiModel::None, "stress_driven"),
+    (LamModel::ReactionDriven, SeiModel::ReactionLimited, "reaction_driven"),
+    (LamModel::StressAndReactionDriven, SeiModel::ReactionLimited, "stress_and_reaction_driven"),
+];
+
+mod common;
 
 fn rows(file: &str) -> Vec<Vec<f64>> {
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/lam").join(file);
-    let text = std::fs::read_to_string(&path).unwrap();
-    text.lines().skip(1).map(|l| l.split(',').map(|x| x.parse().unwrap()).collect()).collect()
+    common::csv_rows("lam", file)
 }
 
 /// Chen 2020 with the reference's LAM proportional terms (the other LAM parameters are our
@@ -52,14 +55,6 @@ fn cycle() -> Protocol {
     experiment::parse(&CYCLE, chen2020().cell.nominal_capacity).unwrap()
 }
 
-fn rms(x: &[f64]) -> f64 {
-    (x.iter().map(|e| e * e).sum::<f64>() / x.len() as f64).sqrt()
-}
-
-fn max(x: &[f64]) -> f64 {
-    x.iter().fold(0.0f64, |m, e| m.max(e.abs()))
-}
-
 /// The differences over the cycles against PyBaMM's curve.
 #[derive(Debug)]
 struct Gaps {
@@ -83,65 +78,46 @@ fn compare(kind: ModelKind, lam: LamModel, sei: SeiModel, name: &str) -> Gaps {
     let model = built.model.as_ref();
     let last = &rec[rec.len() - 1];
     let change = [rec[0][3] - last[3], rec[0][4] - last[4]];
-    let (mut v, mut i, mut fraction, mut lithium) = (vec![], vec![], [0.0f64; 2], [0.0f64; 2]);
-    let mut y = model.initial_state();
+    let (mut fraction, mut lithium) = ([0.0f64; 2], [0.0f64; 2]);
     let total = |y: &[f64]| {
         let am = model.active_material(y).unwrap();
         model.solid_lithium(y) + model.sei_lithium(y) + am.lithium_lost_mol.iter().sum::<f64>()
     };
-    let total0 = total(&y);
+    let total0 = total(&model.initial_state());
     let mut conservation = 0.0f64;
-    // Step by step, each from the last one's end state, with outputs at PyBaMM's times since
-    // the step's start (as tests/sei.rs).
-    for (s, step) in steps.iter().enumerate() {
-        let ref_rows: Vec<&Vec<f64>> = rec.iter().filter(|r| r[8] as usize == s).collect();
-        let t0 = ref_rows[0][0];
-        let mut times: Vec<f64> = ref_rows.iter().map(|r| r[0] - t0).collect();
-        times.dedup();
-        let opts = SimOptions { t_eval: Some(times), keep_states: true, ..options() };
-        let sol = simulate(model, &mut built.workspace, &Protocol { steps: vec![step.clone()] }, &opts, Some(y)).unwrap();
-        y = sol.final_state.clone();
-        let ours_end = sol.cutoff_times.first().copied().unwrap_or(step.duration());
-        let ref_end = ref_rows[ref_rows.len() - 1][0] - t0;
-        for r in ref_rows {
-            let Some(k) = sol.time.iter().position(|t| *t == r[0] - t0) else { continue };
-            let y = &sol.states[k];
-            let am = model.active_material(y).unwrap();
-            for e in 0..2 {
-                if change[e] > 0.0 {
-                    fraction[e] = fraction[e].max((am.fraction[e] - r[3 + e]).abs() / change[e]);
-                    lithium[e] = lithium[e].max((am.lithium_lost_mol[e] - r[5 + e]).abs() / last[5 + e]);
-                } else {
-                    assert_eq!(am.fraction[e], r[3 + e], "{name}: electrode {e} lost no active material in PyBaMM");
-                }
-            }
-            conservation = conservation.max((total(y) - total0).abs() / total0);
-            if sol.time[k] < 20.0 || sol.time[k] > ours_end.min(ref_end) - 20.0 {
-                continue;
-            }
-            if s % CYCLE.len() == 3 {
-                i.push((sol.current[k] - r[1]) * 1e3);
+    let hold = |s: usize| s % CYCLE.len() == 3;
+    let run = common::step_by_step(model, &mut built.workspace, &steps, &rec, 8, hold, &options(), |sol, k, r| {
+        let y = &sol.states[k];
+        let am = model.active_material(y).unwrap();
+        for e in 0..2 {
+            if change[e] > 0.0 {
+                fraction[e] = fraction[e].max((am.fraction[e] - r[3 + e]).abs() / change[e]);
+                lithium[e] = lithium[e].max((am.lithium_lost_mol[e] - r[5 + e]).abs() / last[5 + e]);
             } else {
-                v.push((sol.voltage[k] - r[2]) * 1e3);
+                assert_eq!(am.fraction[e], r[3 + e], "{name}: electrode {e} lost no active material in PyBaMM");
             }
         }
-    }
+        conservation = conservation.max((total(y) - total0).abs() / total0);
+    });
+    let (v, i) = (run.voltage, run.current);
     assert!(v.len() > 400 && i.len() > 100, "{name}: compared {} voltages and {} currents", v.len(), i.len());
+    let (rms, max) = (common::rms, common::max_abs);
     let gaps = Gaps { voltage: (rms(&v), max(&v)), current: (rms(&i), max(&i)), fraction, lithium, conservation };
     println!("{kind} {name}: {gaps:?}");
     gaps
 }
 
-/// Limits two to five times the achieved: voltage RMS / max 1.4e-5-4.0e-5 / 7.3e-5-2.5e-4 mV,
-/// hold current RMS / max 1.6e-4-3.6e-4 / 1.0e-3-1.7e-3 mA, volume fractions within
-/// 3.7e-6-7.8e-5 of their change and lithium lost within 1.5e-6-6.0e-5 of its final value,
-/// lithium conserved to 1.0e-15-2.0e-15.
+/// Limits three to five times the largest achieved: voltage RMS / max 1.4e-5-6.9e-5 /
+/// 7.3e-5-4.6e-4 mV (the largest for the SPMe with both laws), hold current RMS / max
+/// 1.6e-4-4.1e-4 / 1.0e-3-1.7e-3 mA, volume fractions within 3.6e-6-9.0e-5 of their change
+/// and lithium lost within 1.5e-6-8.3e-5 of its final value, lithium conserved to
+/// 1.0e-15-2.1e-15.
 fn check(kind: ModelKind) {
     for (lam, sei, name) in OPTIONS {
         let g = compare(kind, lam, sei, name);
-        assert!(g.voltage.0 < 1.5e-4 && g.voltage.1 < 6e-4, "{kind} {name}: voltage {:?} mV", g.voltage);
-        assert!(g.current.0 < 1.5e-3 && g.current.1 < 1e-2, "{kind} {name}: hold current {:?} mA", g.current);
-        assert!(g.fraction.iter().chain(&g.lithium).all(|d| *d < 3e-4), "{kind} {name}: fractions {:?}, lithium {:?}", g.fraction, g.lithium);
+        assert!(g.voltage.0 < 2.5e-4 && g.voltage.1 < 1.5e-3, "{kind} {name}: voltage {:?} mV", g.voltage);
+        assert!(g.current.0 < 1.5e-3 && g.current.1 < 6e-3, "{kind} {name}: hold current {:?} mA", g.current);
+        assert!(g.fraction.iter().chain(&g.lithium).all(|d| *d < 4e-4), "{kind} {name}: fractions {:?}, lithium {:?}", g.fraction, g.lithium);
         assert!(g.conservation < 1e-14, "{kind} {name}: lithium changed by {:e}", g.conservation);
     }
 }
@@ -186,10 +162,10 @@ fn lam_cycle_summaries_match_pybamm() {
                 }
             }
             println!("{kind} {name}: discharge capacity within {dq:.2e} A h, active material lost within {dam:.2e}, lithium within {dli:.2e} of the final");
-            // Limits about five times the achieved: capacity 3.7e-8-3.6e-7 A h, active material
-            // lost 2.8e-6-7.8e-5 and lithium 4.9e-7-6.0e-5 of their final values.
+            // Limits three to five times the largest achieved: capacity 3.7e-8-6.6e-7 A h,
+            // active material lost 2.8e-6-9.1e-5 and lithium 4.9e-7-8.4e-5 of their final values.
             assert!(dq < 2e-6, "{kind} {name}: discharge capacity {dq:e} A h");
-            assert!(dam < 3e-4 && dli < 3e-4, "{kind} {name}: active material {dam:e}, lithium {dli:e}");
+            assert!(dam < 4e-4 && dli < 4e-4, "{kind} {name}: active material {dam:e}, lithium {dli:e}");
         }
     }
 }

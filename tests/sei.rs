@@ -20,10 +20,10 @@ const CYCLE: [&str; 5] = ["Discharge at 1C until 3.0 V", "Rest for 10 minutes", 
 const CYCLES: usize = 10;
 const OPTIONS: [(SeiModel, &str); 2] = [(SeiModel::ReactionLimited, "reaction_limited"), (SeiModel::SolventDiffusionLimited, "solvent_diffusion_limited")];
 
+mod common;
+
 fn rows(file: &str) -> Vec<Vec<f64>> {
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/sei").join(file);
-    let text = std::fs::read_to_string(&path).unwrap();
-    text.lines().skip(1).map(|l| l.split(',').map(|x| x.parse().unwrap()).collect()).collect()
+    common::csv_rows("sei", file)
 }
 
 fn options() -> SimOptions {
@@ -63,43 +63,17 @@ fn compare(kind: ModelKind, sei: SeiModel, name: &str) -> Gaps {
     let model = built.model.as_ref();
     let (l0, l_end) = (rec[0][3], rec[rec.len() - 1][3]);
     let lost_end = rec[rec.len() - 1][4];
-    let (mut v, mut i, mut l, mut li, mut step_end) = (vec![], vec![], vec![], vec![], 0.0f64);
-    let mut y = model.initial_state();
-    let sei0 = model.sei_lithium(&y);
-    // Step by step, each from the last one's end state, with outputs at PyBaMM's times
-    // since the step's start: a step end a millisecond apart (the C/20 end of a hold is
-    // that sensitive to the solver tolerance, PyBaMM's and ours) does not shift the later
-    // steps against each other.
-    for (s, step) in steps.iter().enumerate() {
-        let ref_rows: Vec<&Vec<f64>> = rec.iter().filter(|r| r[5] as usize == s).collect();
-        let t0 = ref_rows[0][0];
-        let mut times: Vec<f64> = ref_rows.iter().map(|r| r[0] - t0).collect();
-        times.dedup();
-        let opts = SimOptions { t_eval: Some(times), keep_states: true, ..options() };
-        let sol = simulate(model, &mut built.workspace, &Protocol { steps: vec![step.clone()] }, &opts, Some(y)).unwrap();
-        y = sol.final_state.clone();
-        let ours_end = sol.cutoff_times.first().copied().unwrap_or(step.duration());
-        let ref_end = ref_rows[ref_rows.len() - 1][0] - t0;
-        step_end = step_end.max((ours_end - ref_end).abs());
-        for r in ref_rows {
-            let Some(k) = sol.time.iter().position(|t| *t == r[0] - t0) else { continue };
-            let y = &sol.states[k];
-            l.push((model.sei_thickness(y).unwrap() - r[3]) / (l_end - l0));
-            li.push((model.sei_lithium(y) - sei0 - r[4]) / lost_end);
-            // Away from the step's ends (the first output holds the last step's current).
-            if sol.time[k] < 20.0 || sol.time[k] > ours_end.min(ref_end) - 20.0 {
-                continue;
-            }
-            if s % CYCLE.len() == 3 {
-                i.push((sol.current[k] - r[1]) * 1e3);
-            } else {
-                v.push((sol.voltage[k] - r[2]) * 1e3);
-            }
-        }
-    }
+    let (mut l, mut li) = (vec![], vec![]);
+    let sei0 = model.sei_lithium(&model.initial_state());
+    let hold = |s: usize| s % CYCLE.len() == 3;
+    let run = common::step_by_step(model, &mut built.workspace, &steps, &rec, 5, hold, &options(), |sol, k, r| {
+        let y = &sol.states[k];
+        l.push((model.sei_thickness(y).unwrap() - r[3]) / (l_end - l0));
+        li.push((model.sei_lithium(y) - sei0 - r[4]) / lost_end);
+    });
+    let (v, i, step_end) = (run.voltage, run.current, run.step_end);
     assert!(v.len() > 800 && i.len() > 200, "{name}: compared {} voltages and {} currents", v.len(), i.len());
-    let rms = |x: &[f64]| (x.iter().map(|e| e * e).sum::<f64>() / x.len() as f64).sqrt();
-    let max = |x: &[f64]| x.iter().fold(0.0f64, |m, e| m.max(e.abs()));
+    let (rms, max) = (common::rms, common::max_abs);
     let gaps = Gaps { voltage: (rms(&v), max(&v)), current: (rms(&i), max(&i)), thickness: (rms(&l), max(&l)), lithium: (rms(&li), max(&li)), step_end };
     println!("{kind} {name}: {gaps:?}");
     gaps
