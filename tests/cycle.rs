@@ -43,7 +43,7 @@ fn bad_cycle_settings_name_the_key() {
         ("tolerance = 1e-6", "tolerance = 0.5", vec!["cycling.tolerance", "0.5"]),
         ("initial_soc = 0.0", "initial_soc = 1.5", vec!["cycling.initial_soc", "1.5"]),
         ("\"Rest for 10 minutes\",\n    \"Discharge", "\"Rest for ten minutes\",\n    \"Discharge", vec!["cycling.cycle"]),
-        ("kind = \"spm\"", "kind = \"dfn\"", vec!["model.submodels.sei"]),
+        ("{ sei = \"reaction limited\" }", "{ lam = \"reaction-driven\" }", vec!["model.submodels.lam", "SEI"]),
         ("sei = \"reaction limited\"", "sei = \"fast\"", vec!["study.toml", "line 12"]),
     ] {
         let path = study(&s, |t| {

@@ -1,5 +1,5 @@
 //! SEI growth against PyBaMM 26.10 (`scripts/make_sei_reference.py`, curves in
-//! `tests/data/sei/`): the SPM and SPMe on Chen 2020 with PyBaMM's SEI options "reaction
+//! `tests/data/sei/`): the SPM, SPMe and DFN on Chen 2020 with PyBaMM's SEI options "reaction
 //! limited" and "solvent-diffusion limited" (film resistance on, side reaction x-averaged),
 //! through 10 CC-CV cycles ("Discharge at 1C until 3.0 V", rest 10 min, "Charge at 1C until
 //! 4.1 V", "Hold at 4.1 V until C/20", rest 10 min), the same mesh, PyBaMM's IDAKLU at
@@ -84,12 +84,17 @@ fn compare(kind: ModelKind, sei: SeiModel, name: &str) -> Gaps {
 /// 6.4e-6 (SPM reaction limited; 2.4e-8 to 8.8e-7 otherwise) of their growth, step ends
 /// 1.8e-3-2.5e-3 s (the C/20 end of a hold, as sensitive to either solver's tolerance:
 /// ours moves by 1.8e-3 s from rtol 1e-8 to 1e-12).
+/// The DFN, its own limits about five times its achieved: voltage RMS / max
+/// 8.6e-6-1.0e-5 / 4.4e-5-7.5e-5 mV, hold current 7.6e-5-9.5e-5 / 3.2e-4-3.5e-4 mA,
+/// thickness and lithium 2.7e-8-5.5e-8, step ends 1.4e-3-1.6e-3 s.
 fn check(kind: ModelKind) {
+    // (voltage RMS, max) mV, (current RMS, max) mA, thickness and lithium (-).
+    let (voltage, current, growth) = if kind == ModelKind::Dfn { ((5e-5, 4e-4), (5e-4, 2e-3), 3e-7) } else { ((1.5e-4, 6e-4), (1.5e-3, 1e-2), 3e-5) };
     for (sei, name) in OPTIONS {
         let g = compare(kind, sei, name);
-        assert!(g.voltage.0 < 1.5e-4 && g.voltage.1 < 6e-4, "{kind} {name}: voltage {:?} mV", g.voltage);
-        assert!(g.current.0 < 1.5e-3 && g.current.1 < 1e-2, "{kind} {name}: hold current {:?} mA", g.current);
-        assert!(g.thickness.1 < 3e-5 && g.lithium.1 < 3e-5, "{kind} {name}: thickness {:?}, lithium {:?}", g.thickness, g.lithium);
+        assert!(g.voltage.0 < voltage.0 && g.voltage.1 < voltage.1, "{kind} {name}: voltage {:?} mV", g.voltage);
+        assert!(g.current.0 < current.0 && g.current.1 < current.1, "{kind} {name}: hold current {:?} mA", g.current);
+        assert!(g.thickness.1 < growth && g.lithium.1 < growth, "{kind} {name}: thickness {:?}, lithium {:?}", g.thickness, g.lithium);
         assert!(g.step_end < 0.012, "{kind} {name}: step ends {} s apart", g.step_end);
     }
 }
@@ -104,12 +109,17 @@ fn sei_spme_matches_pybamm() {
     check(ModelKind::Spme);
 }
 
+#[test]
+fn sei_dfn_matches_pybamm() {
+    check(ModelKind::Dfn);
+}
+
 /// The per-cycle summaries (discharge capacity, lithium lost, SEI thickness) of ten
 /// cycles run one at a time against PyBaMM's over the same experiment.
 #[test]
 fn cycle_summaries_match_pybamm() {
     let p = chen2020();
-    for kind in [ModelKind::Spm, ModelKind::Spme] {
+    for kind in [ModelKind::Spm, ModelKind::Spme, ModelKind::Dfn] {
         for (sei, name) in OPTIONS {
             let reference = rows(&format!("{}_{name}_cycles.csv", kind.to_string().to_lowercase()));
             let mut b = builder(kind, sei);
@@ -135,7 +145,8 @@ fn cycle_summaries_match_pybamm() {
                 ours_fade * 1e3,
                 ref_fade * 1e3
             );
-            // Achieved: 3.5e-5-6.4e-5 mA h, 1.4e-7-6.2e-6, 2.5e-9-2.4e-6, fade 3e-7-7e-6.
+            // Achieved: 3.5e-5-6.4e-5 mA h, 1.4e-7-6.2e-6, 2.5e-9-2.4e-6, fade 3e-7-2.4e-5
+            // (DFN: 2.0e-5-2.6e-5 mA h, 6.8e-8, 7e-9-1.8e-8, 1.4e-6-5.4e-6).
             assert_eq!(summaries.len(), CYCLES);
             assert!(dq < 3e-4 && dli < 3e-5 && dl < 1.2e-5, "{kind} {name}: {dq} mA h, {dli}, {dl}");
             assert!(fade_gap < 4e-5, "{kind} {name}: fade {ours_fade} vs {ref_fade}");
@@ -148,7 +159,7 @@ fn cycle_summaries_match_pybamm() {
 #[test]
 fn lithium_in_particles_and_sei_is_conserved() {
     let p = chen2020();
-    for kind in [ModelKind::Spm, ModelKind::Spme] {
+    for kind in [ModelKind::Spm, ModelKind::Spme, ModelKind::Dfn] {
         for (sei, name) in OPTIONS {
             let mut b = builder(kind, sei);
             let built = b.build(&p).unwrap();
@@ -161,7 +172,7 @@ fn lithium_in_particles_and_sei_is_conserved() {
             let taken = m.sei_lithium(&sol.final_state) - m.sei_lithium(&sol.states[0]);
             println!("{kind} {name}: {li0:.6} mol, SEI took {taken:.3e} mol ({:.2e} of it), worst drift {worst:.2e}", taken / li0);
             assert!(taken / li0 > 1e-6, "{kind} {name}: the SEI took {taken} mol");
-            // Achieved 5.9e-16 to 1.7e-14.
+            // Achieved 5.9e-16 to 1.7e-14 (DFN 5.9e-16).
             assert!(worst < 1e-13, "{kind} {name}: lithium drift {worst:e}");
         }
     }

@@ -74,8 +74,9 @@ pub struct Submodels {
     /// One-state OCV hysteresis (`cell.hysteresis_voltage`, `cell.hysteresis_rate`,
     /// `cell.hysteresis_initial`): one extra state.
     pub hysteresis: bool,
-    /// SEI growth on the negative electrode (`sei` parameters), x-averaged: one extra state
-    /// in the SPM and SPMe; the DFN has none yet.
+    /// SEI growth on the negative electrode (`sei` parameters): one extra state in the SPM,
+    /// one per negative x volume in the SPMe, two per negative x volume in the DFN (with the
+    /// total interfacial current density).
     pub sei: submodels::SeiModel,
     /// Loss of active material (`lam` parameters) in the SPM and SPMe: four extra states
     /// (volume fraction and lithium lost per electrode); "reaction-driven" needs `sei`.
@@ -87,9 +88,6 @@ impl Submodels {
     pub fn check(&self, kind: ModelKind) -> Result<(), crate::error::Error> {
         use submodels::{LamModel, SeiModel};
         let invalid = |name: &str, reason: String| crate::error::Error::InvalidSetting { field: format!("model.submodels.{name}"), reason };
-        if kind == ModelKind::Dfn && self.sei != SeiModel::None {
-            return Err(invalid("sei", format!("{:?} SEI growth is built for the SPM and SPMe only (x-averaged): use model = \"spm\" or \"spme\"", self.sei)));
-        }
         if kind == ModelKind::Dfn && self.lam != LamModel::None {
             return Err(invalid("lam", format!("{:?} loss of active material is built for the SPM and SPMe only (x-averaged): use model = \"spm\" or \"spme\"", self.lam)));
         }

@@ -111,6 +111,26 @@ impl SeiLayer {
         j * arrhenius(s.activation_energy, ec.t_ref(), temp)
     }
 
+    /// Thickness (m) of the layer in state `k` (an index into `y`) on surface area density
+    /// `a` (1/m).
+    pub fn local_thickness(ec: &Electrochem, y: &[f64], k: usize, a: f64) -> f64 {
+        Self::thickness_of(ec, y[k], a)
+    }
+
+    /// Side-reaction current density `j_sei` (A/m^2) of the layer in state `k` (an index
+    /// into `y`) at `phi_s - phi_e` = `delta_phi` (V), with the film carrying current density
+    /// `j_film` (A/m^2: the total in the single-particle models, the intercalation current in
+    /// the DFN, as PyBaMM's), on surface area density `a` (1/m) at temperature `temp` (K).
+    pub fn side_current(&self, ec: &Electrochem, y: &[f64], k: usize, delta_phi: f64, j_film: f64, a: f64, temp: f64) -> f64 {
+        self.current_at(ec, Self::thickness_of(ec, y[k], a), delta_phi, j_film, temp)
+    }
+
+    /// `d c_sei / dt` (mol/(m^3 s)) of side-reaction current density `j_sei` (A/m^2) on
+    /// surface area density `a` (1/m).
+    pub fn growth_rate(ec: &Electrochem, a: f64, j_sei: f64) -> f64 {
+        -a * j_sei / (FARADAY * ec.params.sei.lithium_per_sei)
+    }
+
     /// Writes `d c_sei / dt` (mol/(m^3 s)) of each state into `out`, given `phi_s - phi_e`
     /// (V) at each (one per state, film included), the total interfacial current density
     /// `j_tot` (A/m^2) and surface area density `a` (1/m), and returns the x-averaged
@@ -120,11 +140,10 @@ impl SeiLayer {
         if self.start.is_none() {
             return 0.0;
         }
-        let rate = -a / (FARADAY * ec.params.sei.lithium_per_sei);
         let mut sum = 0.0;
         for (k, d) in self.indices().zip(delta_phi) {
-            let j = self.current_at(ec, Self::thickness_of(ec, y[k], a), d, j_tot, temp);
-            out[k] = rate * j;
+            let j = self.side_current(ec, y, k, d, j_tot, a, temp);
+            out[k] = Self::growth_rate(ec, a, j);
             sum += j;
         }
         sum / self.count as f64
