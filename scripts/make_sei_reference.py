@@ -1,7 +1,9 @@
-"""PyBaMM reference for SEI growth (tests/sei.rs): SPM and SPMe on Chen 2020 (its SEI
+"""PyBaMM reference for SEI growth (tests/sei.rs): SPM, SPMe and DFN on Chen 2020 (its SEI
 parameters), each with PyBaMM's SEI options "reaction limited" and "solvent-diffusion
-limited" (SEI film resistance "distributed", PyBaMM's default with SEI; side reactions
-x-averaged, as PyBaMM's SPM and SPMe do), PyBaMM's default mesh (20 volumes per x-domain and
+limited" (SEI film resistance "distributed", PyBaMM's default with SEI, which in the DFN
+makes the total interfacial current density an algebraic state; side reactions x-averaged
+in the SPM, per x volume in the SPMe and DFN, PyBaMM's defaults; SEI porosity change
+"false", PyBaMM's default), PyBaMM's default mesh (20 volumes per x-domain and
 per particle, as ours), IDAKLU at rtol = atol = 1e-8.
 
 Protocol: CYCLES CC-CV cycles of "Discharge at 1C until 3.0 V", "Rest for 10 minutes",
@@ -17,7 +19,10 @@ Writes into the folder given (default tests/data/sei):
 - `meta.json`: versions, options, protocol, timings.
 
     python -m venv .venv && .venv/bin/pip install pybamm==26.10.1.1
-    .venv/bin/python scripts/make_sei_reference.py tests/data/sei
+    .venv/bin/python scripts/make_sei_reference.py tests/data/sei [spm,spme,dfn]
+
+(the optional second argument names the models to (re)make; the other cases stay in
+`meta.json`.)
 """
 
 import json
@@ -32,7 +37,7 @@ import pybamm
 from make_cccv_reference import EXPERIMENT as CYCLE
 CYCLES = 10
 OPTIONS = {"reaction_limited": "reaction limited", "solvent_diffusion_limited": "solvent-diffusion limited"}
-MODELS = {"spm": pybamm.lithium_ion.SPM, "spme": pybamm.lithium_ion.SPMe}
+MODELS = {"spm": pybamm.lithium_ion.SPM, "spme": pybamm.lithium_ion.SPMe, "dfn": pybamm.lithium_ion.DFN}
 
 
 def simulation(model_cls, option, cycles=CYCLES, period=60, tol=1e-8):
@@ -66,7 +71,11 @@ def main(root):
     os.makedirs(root, exist_ok=True)
     meta = {"made_by": f"PyBaMM {pybamm.__version__}, Chen2020, IDAKLU rtol=atol=1e-8, default mesh",
             "cycle": CYCLE, "cycles": CYCLES, "period_s": 60, "cases": {}}
-    for mname, cls in MODELS.items():
+    models = sys.argv[2].split(",") if len(sys.argv) > 2 else list(MODELS)
+    if os.path.exists(os.path.join(root, "meta.json")):
+        with open(os.path.join(root, "meta.json")) as f:
+            meta["cases"] = json.load(f)["cases"]
+    for mname, cls in ((m, MODELS[m]) for m in models):
         for oname, option in OPTIONS.items():
             sol, seconds = solve(cls, option)
             name = f"{mname}_{oname}"

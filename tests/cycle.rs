@@ -20,7 +20,8 @@ fn cycle_study_writes_a_summary_per_cycle() {
     let o = run(&s.0, &["cycle", &path]);
     succeeds(&o);
     let csv = std::fs::read_to_string(s.path("out/cycle_sei/cycles.csv")).unwrap();
-    let rows: Vec<Vec<f64>> = csv.lines().skip(1).map(|l| l.split(',').map(|x| x.parse().unwrap()).collect()).collect();
+    // Columns of absent submodels (here loss of active material) are empty.
+    let rows: Vec<Vec<f64>> = csv.lines().skip(1).map(|l| l.split(',').map(|x| if x.is_empty() { f64::NAN } else { x.parse().unwrap() }).collect()).collect();
     assert_eq!(rows.len(), 6);
     assert_eq!(rows[0][4], 1.0, "retention is relative to the first cycle");
     for w in rows.windows(2) {
@@ -42,7 +43,7 @@ fn bad_cycle_settings_name_the_key() {
         ("tolerance = 1e-6", "tolerance = 0.5", vec!["cycling.tolerance", "0.5"]),
         ("initial_soc = 0.0", "initial_soc = 1.5", vec!["cycling.initial_soc", "1.5"]),
         ("\"Rest for 10 minutes\",\n    \"Discharge", "\"Rest for ten minutes\",\n    \"Discharge", vec!["cycling.cycle"]),
-        ("kind = \"spm\"", "kind = \"dfn\"", vec!["model.submodels.sei"]),
+        ("{ sei = \"reaction limited\" }", "{ lam = \"reaction-driven\" }", vec!["model.submodels.lam", "SEI"]),
         ("sei = \"reaction limited\"", "sei = \"fast\"", vec!["study.toml", "line 12"]),
     ] {
         let path = study(&s, |t| {
@@ -55,4 +56,28 @@ fn bad_cycle_settings_name_the_key() {
     }
     let o = run(&s.0, &["cycle", EXAMPLE, "--set", "sei.initial_thickness=-1"]);
     fails_with(&o, &["sei.initial_thickness", "-1"]);
+}
+
+/// The LAM example (`examples/cycle_lam_chen2020.toml`): each cycle loses active material in
+/// both electrodes and lithium with it, reported in its own columns; a bad LAM parameter is
+/// an error naming it.
+#[test]
+fn cycle_study_reports_active_material_lost() {
+    let s = Scratch::new("cycle-lam");
+    let example = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/cycle_lam_chen2020.toml");
+    let text = std::fs::read_to_string(example).unwrap().replace("cycles = 20", "cycles = 4");
+    let path = s.write("study.toml", &text).display().to_string();
+    let o = run(&s.0, &["cycle", &path]);
+    succeeds(&o);
+    let csv = std::fs::read_to_string(s.path("out/cycle_lam/cycles.csv")).unwrap();
+    let header: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
+    let col = |name: &str| header.iter().position(|h| *h == name).unwrap_or_else(|| panic!("no column {name}"));
+    let lam = ["negative_active_material_lost", "positive_active_material_lost", "lithium_lost_to_negative_lam_mol", "lithium_lost_to_positive_lam_mol"].map(col);
+    let rows: Vec<Vec<f64>> = csv.lines().skip(1).map(|l| l.split(',').map(|x| x.parse().unwrap()).collect()).collect();
+    assert_eq!(rows.len(), 4);
+    for w in rows.windows(2) {
+        assert!(lam.iter().all(|&c| w[1][c] > w[0][c] && w[0][c] > 0.0), "{w:?}");
+    }
+    let o = run(&s.0, &["cycle", &path, "--set", "lam.positive.poisson_ratio=0.7"]);
+    fails_with(&o, &["lam.positive.poisson_ratio", "0.7"]);
 }

@@ -42,7 +42,7 @@ fn readme_commands_run_as_written() {
 
     let dir: PathBuf = std::env::temp_dir().join(format!("cellstudio-readme-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
-    for sub in ["designs", "fits", "protocols", "examples", "tests/data/cycler", "tests/data/parameterisation"] {
+    for sub in ["designs", "fits", "protocols", "examples", "tests/data/cycler", "tests/data/parameterisation", "tests/data/sei"] {
         copy_dir(&Path::new(REPO).join(sub), &dir.join(sub));
     }
     let seed = Path::new(REPO).join("tests/data/spm_contact_resistance_seed.csv");

@@ -256,7 +256,8 @@ impl Candidate {
                 (self.refitted_paths().iter().map(|p| around(p)).collect::<Option<_>>()?, "electrolyte diffusivity and conductivity factors refitted".into())
             }
             Candidate::SeiGrowth => {
-                // The DFN has no SEI submodel yet.
+                // Not offered on the DFN: no PyBaMM-made multi-cycle DFN case holds it to
+                // account yet.
                 if spec.submodels.sei != SeiModel::None || spec.kind == ModelKind::Dfn {
                     return None;
                 }

@@ -60,13 +60,30 @@ impl SphereMesh {
     /// Writes `dc/dt` for diffusivity `diff` (m^2/s) and outward surface molar flux `flux`
     /// (mol/(m^2 s)), i.e. `-D dc/dr = flux` at `r = R`.
     pub fn diffusion(&self, c: &[f64], diff: f64, flux: f64, out: &mut [f64]) {
+        self.stressed_diffusion(c, diff, None, flux, out);
+    }
+
+    /// [`Self::diffusion`] with stress-induced diffusion when `stress = Some((theta, c_0))`:
+    /// the diffusivity at shell `k` is `diff (1 + theta (c_k - c_0))` (`theta` in m^3/mol,
+    /// `c_0` in mol/m^3) and at an interior face the harmonic mean of its two shells' (as
+    /// PyBaMM averages a diffusivity multiplying a gradient). The surface flux is imposed
+    /// as given.
+    pub fn stressed_diffusion(&self, c: &[f64], diff: f64, stress: Option<(f64, f64)>, flux: f64, out: &mut [f64]) {
         let n = c.len();
         let g = diff / self.dr;
         let (outer, inner, out) = (&self.outer[..n], &self.inner[..n], &mut out[..n]);
+        let factor = |k: usize| stress.map_or(1.0, |(theta, c0)| 1.0 + theta * (c[k] - c0));
         // `D dc/dr` at the inner face of the current shell (zero at the centre).
         let mut left = 0.0;
         for k in 0..n - 1 {
-            let right = g * (c[k + 1] - c[k]);
+            let face = match stress {
+                None => g,
+                Some(_) => {
+                    let (a, b) = (factor(k), factor(k + 1));
+                    g * 2.0 * a * b / (a + b)
+                }
+            };
+            let right = face * (c[k + 1] - c[k]);
             out[k] = outer[k] * right - inner[k] * left;
             left = right;
         }

@@ -49,12 +49,7 @@ impl ModelBuilder {
             let built = self.last.as_mut().expect("checked above");
             built.model.set_params(params.clone());
         } else {
-            if self.kind == ModelKind::Dfn && self.submodels.sei != super::submodels::SeiModel::None {
-                return Err(Error::InvalidSetting {
-                    field: "model.submodels.sei".into(),
-                    reason: format!("{:?} SEI growth is built for the SPM and SPMe only (x-averaged): use model = \"spm\" or \"spme\"", self.submodels.sei),
-                });
-            }
+            self.submodels.check(self.kind)?;
             let ec = Electrochem::new(params.clone(), Discretisation::new(geometry), self.submodels);
             let mut model: Box<dyn PhysicsModel> = match self.kind {
                 ModelKind::Spm => Box::new(Spm::new(ec)),

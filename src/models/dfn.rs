@@ -3,7 +3,9 @@
 //! States, in order: negative particle shells (x-node major), positive particle shells,
 //! electrolyte concentration `c_e` over all x volumes (mol/m^3), then the algebraic
 //! potentials `phi_e` over all x volumes, `phi_s` in the negative and in the positive
-//! electrode (V), and `T` (K) when the thermal submodel is on.
+//! electrode (V), with an SEI submodel the SEI concentration (mol/m^3) and the (algebraic)
+//! total interfacial current density `j_tot` (A/m^2) of each negative volume, and `T` (K)
+//! when the thermal submodel is on.
 //!
 //! Equations (x through the cell, r in each particle, SI units):
 //! - particles: `dc_s/dt = 1/r^2 d/dr (r^2 D_s dc_s/dr)`, `-D_s dc_s/dr|_R = j / F`;
@@ -11,7 +13,13 @@
 //!   the current collectors;
 //! - `d i_e/dx = a j`, `i_e = -kappa_eff (dphi_e/dx - 2 (1 - t+) chi R T / F dln c_e/dx)`;
 //! - `d i_s/dx = -a j`, `i_s = -sigma_eff dphi_s/dx`, `phi_s(0) = 0`, `i_s(L) = I / A`;
-//! - `j = 2 j0 sinh(alpha F (phi_s - phi_e - U) / (R T))`.
+//! - `j = 2 j0 sinh(alpha F (phi_s - phi_e - U) / (R T))`;
+//! - with SEI growth (PyBaMM's "distributed" film, "total interfacial current density as a
+//!   state"): in each negative volume `j = 2 j0 sinh(alpha F (phi_s - phi_e - U - j_tot L
+//!   R_sei) / (R T))` into the particle, the side reaction `j_sei` of
+//!   [`crate::models::submodels::SeiLayer`] at `phi_s - phi_e` with the film carrying `j`,
+//!   `0 = j_tot - (j + j_sei)`, and `a j_tot` the source of the electrolyte and the
+//!   potentials (docs/ageing.md, section 1).
 //!
 //! Voltage: `phi_s(L) - phi_s(0) - I R_contact`, `phi_s(L)` extrapolated linearly from the
 //! last two volumes as PyBaMM does.
@@ -19,6 +27,7 @@
 use super::electrochem::{Electrochem, Side};
 use super::electrolyte::ElectrolyteOp;
 use super::kinetics::{butler_volmer, exchange_current};
+use super::submodels::SeiLayer;
 use super::submodels::thermal::bernardi_heat;
 use super::{Model, PhysicsModel, push_tridiagonal};
 use crate::params::ParameterSet;
@@ -29,6 +38,7 @@ pub struct Dfn {
     /// Index ranges of the state blocks.
     pub layout: Layout,
     electrolyte: ElectrolyteOp,
+    sei: SeiLayer,
     /// Effective solid conductivities of the negative and positive electrodes (S/m).
     sigma: [f64; 2],
     mass: Vec<f64>,
@@ -49,6 +59,9 @@ pub struct Layout {
     pub phie: usize,
     pub phis_n: usize,
     pub phis_p: usize,
+    /// With SEI growth: the SEI concentrations of the negative volumes from here, then their
+    /// total interfacial current densities.
+    pub sei: Option<usize>,
     pub temp: Option<usize>,
     pub len: usize,
 }
@@ -65,9 +78,10 @@ impl Layout {
         let phie = ce + nx;
         let phis_n = phie + nx;
         let phis_p = phis_n + nxn;
-        let end = phis_p + nxp;
+        let sei = (ec.submodels.sei != super::submodels::SeiModel::None).then_some(phis_p + nxp);
+        let end = phis_p + nxp + if sei.is_some() { 2 * nxn } else { 0 };
         let temp = ec.submodels.thermal.then_some(end);
-        Self { nxn, nxs, nxp, nrn, nrp, cs_n, cs_p, ce, phie, phis_n, phis_p, temp, len: end + usize::from(temp.is_some()) }
+        Self { nxn, nxs, nxp, nrn, nrp, cs_n, cs_p, ce, phie, phis_n, phis_p, sei, temp, len: end + usize::from(temp.is_some()) }
     }
 
     pub fn nx(&self) -> usize {
@@ -117,9 +131,16 @@ impl Dfn {
             mass[t] = 1.0;
             scale[t] = p.thermal.ambient_temperature;
         }
+        if let Some(s) = layout.sei {
+            let n = layout.nxn;
+            mass[s..s + n].fill(1.0);
+            scale[s..s + n].fill(SeiLayer::initial_concentration(&ec));
+            scale[s + n..s + 2 * n].fill(ec.mean_interfacial_current(Side::Negative, p.cell.nominal_capacity).abs());
+        }
+        let sei = SeiLayer::new(ec.submodels.sei, layout.sei.unwrap_or(0), layout.nxn);
         let electrolyte = ElectrolyteOp::new(&ec);
         let sigma = Self::solid_conductivities(&ec);
-        Self { ec, layout, electrolyte, sigma, mass, scale }
+        Self { ec, layout, electrolyte, sei, sigma, mass, scale }
     }
 
     fn temp(&self, y: &[f64]) -> f64 {
@@ -162,7 +183,16 @@ impl Model for Dfn {
             let kinetics: Vec<usize> = match l.electrode_of(i) {
                 Some((side, k, start)) => {
                     let nr = l.nr(side);
-                    vec![start + nr - 2, start + nr - 1, l.ce + i, l.phie + i, l.phis(side, k)]
+                    let mut c = vec![start + nr - 2, start + nr - 1, l.ce + i, l.phie + i, l.phis(side, k)];
+                    // The SEI concentration and total current of a negative volume, whose rows
+                    // read the same.
+                    if let (Side::Negative, Some(s)) = (side, l.sei) {
+                        c.extend([s + k, s + l.nxn + k]);
+                        for row in [s + k, s + l.nxn + k] {
+                            p.extend(c.iter().map(|&col| (row, col)));
+                        }
+                    }
+                    c
                 }
                 None => Vec::new(),
             };
@@ -209,6 +239,9 @@ impl Model for Dfn {
         let up = self.ec.ocp(Side::Positive, p.positive.initial_concentration);
         y[l.phie..l.phis_n].iter_mut().for_each(|v| *v = -un);
         y[l.phis_p..l.phis_p + l.nxp].iter_mut().for_each(|v| *v = up - un);
+        if let Some(s) = l.sei {
+            y[s..s + l.nxn].fill(SeiLayer::initial_concentration(&self.ec));
+        }
         if let Some(t) = l.temp {
             y[t] = p.thermal.initial_temperature;
         }
@@ -244,8 +277,25 @@ impl Model for Dfn {
                 let ocp = ec.ocp(side, c_s);
                 sum_ocp[slot] += ocp;
                 let j0 = exchange_current(rate, y[l.ce + i], c_e_ref, c_s, e.max_concentration);
-                let j = butler_volmer(j0, y[l.phis(side, k)] - y[l.phie + i] - ocp, e.charge_transfer_coefficient, temp);
-                out_phie[i] = vols[i].a * j;
+                let delta_phi = y[l.phis(side, k)] - y[l.phie + i];
+                let a = vols[i].a;
+                let j = match (side, l.sei) {
+                    (Side::Negative, Some(s)) => {
+                        let (c_sei, j_tot) = (s + k, s + l.nxn + k);
+                        let film = y[j_tot] * SeiLayer::local_thickness(ec, y, c_sei, a) * ec.params.sei.resistivity;
+                        let j = butler_volmer(j0, delta_phi - ocp - film, e.charge_transfer_coefficient, temp);
+                        let j_sei = self.sei.side_current(ec, y, c_sei, delta_phi, j, a, temp);
+                        out_phis[c_sei - l.phis_n] = SeiLayer::growth_rate(ec, a, j_sei);
+                        out_phis[j_tot - l.phis_n] = y[j_tot] - (j + j_sei);
+                        out_phie[i] = a * (j + j_sei);
+                        j
+                    }
+                    _ => {
+                        let j = butler_volmer(j0, delta_phi - ocp, e.charge_transfer_coefficient, temp);
+                        out_phie[i] = a * j;
+                        j
+                    }
+                };
                 sphere.diffusion(shells, diff, Electrochem::molar_flux(j), &mut out_cs[start..start + nr]);
             }
         }
@@ -315,6 +365,14 @@ impl Model for Dfn {
             }
         }
         total
+    }
+
+    fn sei_lithium(&self, y: &[f64]) -> f64 {
+        self.sei.lithium(&self.ec, y)
+    }
+
+    fn sei_thickness(&self, y: &[f64]) -> Option<f64> {
+        self.sei.thickness(&self.ec, y, self.ec.params.negative.surface_area_density())
     }
 
     fn fields(&self, y: &[f64]) -> Vec<super::Field> {

@@ -1,5 +1,6 @@
 //! Battery models sharing one state/output interface: SPM, SPMe, DFN and a Thevenin ECM,
-//! with switchable submodels (contact resistance, lumped thermal, SEI growth).
+//! with switchable submodels (contact resistance, lumped thermal, SEI growth, loss of active
+//! material).
 
 pub mod builder;
 pub mod dfn;
@@ -73,12 +74,29 @@ pub struct Submodels {
     /// One-state OCV hysteresis (`cell.hysteresis_voltage`, `cell.hysteresis_rate`,
     /// `cell.hysteresis_initial`): one extra state.
     pub hysteresis: bool,
-    /// SEI growth on the negative electrode (`sei` parameters), x-averaged: one extra state
-    /// in the SPM and SPMe; the DFN has none yet.
+    /// SEI growth on the negative electrode (`sei` parameters): one extra state in the SPM,
+    /// one per negative x volume in the SPMe, two per negative x volume in the DFN (with the
+    /// total interfacial current density).
     pub sei: submodels::SeiModel,
+    /// Loss of active material (`lam` parameters) in the SPM and SPMe: four extra states
+    /// (volume fraction and lithium lost per electrode); "reaction-driven" needs `sei`.
+    pub lam: submodels::LamModel,
 }
 
 impl Submodels {
+    /// Checks the submodels can be built on `kind`; the error names `model.submodels.NAME`.
+    pub fn check(&self, kind: ModelKind) -> Result<(), crate::error::Error> {
+        use submodels::{LamModel, SeiModel};
+        let invalid = |name: &str, reason: String| crate::error::Error::InvalidSetting { field: format!("model.submodels.{name}"), reason };
+        if kind == ModelKind::Dfn && self.lam != LamModel::None {
+            return Err(invalid("lam", format!("{:?} loss of active material is built for the SPM and SPMe only (x-averaged): use model = \"spm\" or \"spme\"", self.lam)));
+        }
+        if self.lam.reaction() && self.sei == SeiModel::None {
+            return Err(invalid("lam", format!("{:?} loss of active material is driven by the SEI reaction: it needs an SEI submodel (e.g. sei = \"reaction limited\")", self.lam)));
+        }
+        Ok(())
+    }
+
     /// Whether a submodel that appends states through [`submodels::Augmented`] is on.
     pub fn augments(&self) -> bool {
         self.rc || self.hysteresis
@@ -116,6 +134,11 @@ pub trait Model: Send + Sync {
     }
     /// SEI thickness (m), x-averaged; `None` without an SEI submodel.
     fn sei_thickness(&self, _y: &[f64]) -> Option<f64> {
+        None
+    }
+    /// The electrodes' active material (volume fractions, capacities, lithium lost with
+    /// it); `None` without a loss-of-active-material submodel.
+    fn active_material(&self, _y: &[f64]) -> Option<submodels::lam::ActiveMaterial> {
         None
     }
     /// Open-circuit voltage at the particles' average stoichiometries (V).

@@ -2,11 +2,15 @@
 //! current, electrolyte at its initial concentration.
 //!
 //! States: negative shells `c_n` (mol/m^3), positive shells `c_p`, the SEI concentration
-//! (mol/m^3) when an SEI submodel is on, then `T` (K) when the thermal submodel is on.
+//! (mol/m^3) when an SEI submodel is on, the LAM states when a loss-of-active-material
+//! submodel is on (the shells then hold `eps c`, see [`LamLayer`]), then `T` (K) when the
+//! thermal submodel is on.
+
+use std::borrow::Cow;
 
 use super::electrochem::{Electrochem, Side};
 use super::kinetics::{overpotential, particle_factor};
-use super::submodels::SeiLayer;
+use super::submodels::{LamLayer, SeiLayer};
 use super::submodels::thermal::bernardi_heat;
 use super::{Model, PhysicsModel, push_tridiagonal};
 use crate::params::ParameterSet;
@@ -15,6 +19,7 @@ use crate::params::ParameterSet;
 pub struct Spm {
     pub ec: Electrochem,
     sei: SeiLayer,
+    lam: LamLayer,
     mass: Vec<f64>,
     scale: Vec<f64>,
 }
@@ -23,14 +28,16 @@ impl Spm {
     pub fn new(ec: Electrochem) -> Self {
         let (nn, np) = (ec.disc.sphere_n.len(), ec.disc.sphere_p.len());
         let sei = SeiLayer::new(ec.submodels.sei, nn + np, 1);
-        let n = nn + np + sei.len() + usize::from(ec.submodels.thermal);
-        let mut scale = vec![ec.params.negative.max_concentration; nn];
-        scale.extend(std::iter::repeat_n(ec.params.positive.max_concentration, np));
+        let lam = LamLayer::new(ec.submodels.lam, nn + np + sei.len());
+        let n = nn + np + sei.len() + lam.len() + usize::from(ec.submodels.thermal);
+        let mut scale = vec![lam.shell_scale(&ec, Side::Negative); nn];
+        scale.extend(std::iter::repeat_n(lam.shell_scale(&ec, Side::Positive), np));
         scale.extend(sei.indices().map(|_| SeiLayer::initial_concentration(&ec)));
+        lam.push_scale(&ec, &mut scale);
         if ec.submodels.thermal {
             scale.push(ec.params.thermal.ambient_temperature);
         }
-        Self { ec, sei, mass: vec![1.0; n], scale }
+        Self { ec, sei, lam, mass: vec![1.0; n], scale }
     }
 
     fn split<'a>(&self, y: &'a [f64]) -> (&'a [f64], &'a [f64]) {
@@ -39,10 +46,16 @@ impl Spm {
         (&y[..nn], &y[nn..nn + np])
     }
 
+    /// Shell concentrations (mol/m^3) of the negative and positive particles.
+    fn particles<'a>(&self, y: &'a [f64]) -> (Cow<'a, [f64]>, Cow<'a, [f64]>) {
+        let (n, p) = self.split(y);
+        (self.lam.concentrations(Side::Negative, y, n), self.lam.concentrations(Side::Positive, y, p))
+    }
+
     /// Surface concentrations (mol/m^3) of the negative and positive particles.
     pub fn surface_concentrations(&self, y: &[f64]) -> (f64, f64) {
-        let (cn, cp) = self.split(y);
-        self.ec.single_particle_surfaces(cn, cp)
+        let (cn, cp) = self.particles(y);
+        self.ec.single_particle_surfaces(&cn, &cp)
     }
 }
 
@@ -54,24 +67,25 @@ impl Spm {
         let ec = &self.ec;
         let temp = self.temperature(y);
         let e = ec.electrode(side);
-        let j = ec.mean_interfacial_current(side, current);
+        let j = self.lam.interfacial_current(ec, side, y, current);
         // PyBaMM 26.10's SPM regularises the particle factors of j0 but not the constant
         // sqrt(c_e) (2.5e-7 of j0, 1e-5 mV): see docs/pybamm_equations.md, section 1.
         let c_in = c_s.clamp(0.0, e.max_concentration);
         let j0 = ec.rate_constant(side, temp) * ec.params.electrolyte.initial_concentration.sqrt() * particle_factor(c_in, e.max_concentration);
-        let film = if side == Side::Negative { self.sei.film(ec, y, current) } else { 0.0 };
+        let film = if side == Side::Negative { self.sei.film(ec, y, j, self.lam.surface_area_density(ec, side, y)) } else { 0.0 };
         ec.ocp(side, c_s) + overpotential(j, j0, e.charge_transfer_coefficient, temp) + film
     }
 
     /// Writes the SEI state's rate into `out` and returns the side-reaction current density
     /// (A/m^2); zero without SEI.
-    fn sei_rhs(&self, y: &[f64], current: f64, out: &mut [f64]) -> f64 {
+    fn sei_rhs(&self, y: &[f64], sn: f64, current: f64, out: &mut [f64]) -> f64 {
         if self.sei.len() == 0 {
             return 0.0;
         }
-        let (sn, _) = self.surface_concentrations(y);
         let delta_phi = self.surface_potential_difference(Side::Negative, sn, y, current);
-        self.sei.rhs(&self.ec, y, std::iter::once(delta_phi), current, self.temperature(y), out)
+        let (ec, side) = (&self.ec, Side::Negative);
+        let (j, a) = (self.lam.interfacial_current(ec, side, y, current), self.lam.surface_area_density(ec, side, y));
+        self.sei.rhs(ec, y, std::iter::once(delta_phi), j, a, self.temperature(y), out)
     }
 }
 
@@ -99,14 +113,17 @@ impl Model for Spm {
         for (start, len) in [(0, nn), (nn, np)] {
             push_tridiagonal(&mut p, start, len);
         }
-        let t = nn + np + self.sei.len();
-        let thermal: &[usize] = if self.ec.submodels.thermal { &[t] } else { &[] };
-        self.sei.push_pattern(&mut p, [nn - 2, nn - 1], thermal);
+        let t = nn + np + self.sei.len() + self.lam.len();
+        // The SEI reads the temperature and the negative volume fraction (its surface area).
+        let sei_reads: Vec<usize> = self.ec.submodels.thermal.then_some(t).into_iter().chain(self.lam.indices().take(1)).collect();
+        self.sei.push_pattern(&mut p, [nn - 2, nn - 1], &sei_reads);
+        let lam_reads: Vec<usize> = self.sei.indices().chain(self.ec.submodels.thermal.then_some(t)).collect();
+        self.lam.push_pattern(&mut p, [0..nn, nn..nn + np], &lam_reads);
         if self.ec.submodels.thermal {
             for i in 0..t {
                 p.push((i, t));
             }
-            for i in [nn - 2, nn - 1, nn + np - 2, nn + np - 1, t].into_iter().chain(self.sei.indices()) {
+            for i in [nn - 2, nn - 1, nn + np - 2, nn + np - 1, t].into_iter().chain(self.sei.indices()).chain(self.lam.indices()) {
                 p.push((t, i));
             }
         }
@@ -115,9 +132,10 @@ impl Model for Spm {
 
     fn initial_state(&self) -> Vec<f64> {
         let p = &self.ec.params;
-        let mut y = vec![p.negative.initial_concentration; self.ec.disc.sphere_n.len()];
-        y.extend(std::iter::repeat_n(p.positive.initial_concentration, self.ec.disc.sphere_p.len()));
+        let mut y = vec![self.lam.initial_shell(&self.ec, Side::Negative); self.ec.disc.sphere_n.len()];
+        y.extend(std::iter::repeat_n(self.lam.initial_shell(&self.ec, Side::Positive), self.ec.disc.sphere_p.len()));
         self.sei.push_initial(&self.ec, &mut y);
+        self.lam.push_initial(&self.ec, &mut y);
         if self.ec.submodels.thermal {
             y.push(p.thermal.initial_temperature);
         }
@@ -129,11 +147,14 @@ impl Model for Spm {
         let nn = ec.disc.sphere_n.len();
         let np = ec.disc.sphere_p.len();
         let temp = self.temperature(y);
-        let (cn, cp) = self.split(y);
-        let j_sei = self.sei_rhs(y, current, out);
-        for (side, c, range, side_reaction) in [(Side::Negative, cn, 0..nn, j_sei), (Side::Positive, cp, nn..nn + np, 0.0)] {
-            let flux = Electrochem::molar_flux(ec.mean_interfacial_current(side, current) - side_reaction);
-            ec.sphere(side).diffusion(c, ec.diffusivity(side, temp), flux, &mut out[range]);
+        let (cn, cp) = self.particles(y);
+        let (sn, _) = ec.single_particle_surfaces(&cn, &cp);
+        let j_sei = self.sei_rhs(y, sn, current, out);
+        let a_j_sei = self.lam.surface_area_density(ec, Side::Negative, y) * j_sei;
+        let rates = self.lam.rhs(ec, [&cn, &cp], a_j_sei, out);
+        for (side, c, range, side_reaction, rate) in [(Side::Negative, &cn, 0..nn, j_sei, rates[0]), (Side::Positive, &cp, nn..nn + np, 0.0, rates[1])] {
+            let flux = Electrochem::molar_flux(self.lam.interfacial_current(ec, side, y, current) - side_reaction);
+            self.lam.particle_rhs(ec, side, y, c, flux, rate, temp, &mut out[range]);
         }
         if ec.submodels.thermal {
             let (sn, sp) = self.surface_concentrations(y);
@@ -165,8 +186,8 @@ impl Model for Spm {
     }
 
     fn solid_lithium(&self, y: &[f64]) -> f64 {
-        let (cn, cp) = self.split(y);
-        self.ec.single_particle_lithium(cn, cp)
+        let (n, p) = self.split(y);
+        self.lam.particle_lithium(&self.ec, Side::Negative, n) + self.lam.particle_lithium(&self.ec, Side::Positive, p)
     }
 
     fn sei_lithium(&self, y: &[f64]) -> f64 {
@@ -174,24 +195,29 @@ impl Model for Spm {
     }
 
     fn sei_thickness(&self, y: &[f64]) -> Option<f64> {
-        self.sei.thickness(&self.ec, y)
+        self.sei.thickness(&self.ec, y, self.lam.surface_area_density(&self.ec, Side::Negative, y))
+    }
+
+    fn active_material(&self, y: &[f64]) -> Option<super::submodels::lam::ActiveMaterial> {
+        self.lam.summary(&self.ec, y)
     }
 
     fn fields(&self, y: &[f64]) -> Vec<super::Field> {
-        let (cn, cp) = self.split(y);
-        self.ec.single_particle_fields(cn, cp)
+        let (cn, cp) = self.particles(y);
+        self.ec.single_particle_fields(&cn, &cp)
     }
 
     fn output_states(&self) -> Vec<usize> {
         let mut out = self.ec.single_particle_surface_states();
         out.extend(self.sei.indices());
+        out.extend(self.lam.indices().take(2));
         out.extend(self.ec.submodels.thermal.then(|| self.len() - 1));
         out
     }
 
     fn open_circuit_voltage(&self, y: &[f64]) -> f64 {
-        let (cn, cp) = self.split(y);
-        self.ec.single_particle_ocv(cn, cp)
+        let (cn, cp) = self.particles(y);
+        self.ec.single_particle_ocv(&cn, &cp)
     }
 }
 

@@ -4,13 +4,16 @@
 //! phase's ohmic drop.
 //!
 //! States: negative shells, positive shells (mol/m^3), electrolyte concentration over all x
-//! volumes (mol/m^3), the SEI concentration (mol/m^3) when an SEI submodel is on, then `T`
-//! (K) when the thermal submodel is on.
+//! volumes (mol/m^3), the SEI concentration (mol/m^3) when an SEI submodel is on, the LAM
+//! states when a loss-of-active-material submodel is on (the shells then hold `eps c`, see
+//! [`LamLayer`]), then `T` (K) when the thermal submodel is on.
+
+use std::borrow::Cow;
 
 use super::electrochem::{Electrochem, Side};
 use super::electrolyte::ElectrolyteOp;
 use super::kinetics::{electrolyte_factor, log_mean, mean_overpotential};
-use super::submodels::SeiLayer;
+use super::submodels::{LamLayer, SeiLayer};
 use super::submodels::thermal::bernardi_heat;
 use super::{Model, PhysicsModel, push_tridiagonal};
 use crate::params::{FARADAY, GAS_CONSTANT, ParameterSet};
@@ -24,6 +27,7 @@ pub struct Spme {
     ionic_current_shape: Vec<f64>,
     consts: VoltageConsts,
     sei: SeiLayer,
+    lam: LamLayer,
     mass: Vec<f64>,
     scale: Vec<f64>,
 }
@@ -120,18 +124,20 @@ impl Spme {
         let electrolyte = ElectrolyteOp::new(&ec);
         let (nn, np, nx) = (ec.disc.sphere_n.len(), ec.disc.sphere_p.len(), electrolyte.len());
         let p = &ec.params;
-        let mut scale = vec![p.negative.max_concentration; nn];
-        scale.extend(std::iter::repeat_n(p.positive.max_concentration, np));
-        scale.extend(std::iter::repeat_n(p.electrolyte.initial_concentration, nx));
         let sei = SeiLayer::new(ec.submodels.sei, nn + np + nx, ec.disc.x_n.centres.len());
+        let lam = LamLayer::new(ec.submodels.lam, nn + np + nx + sei.len());
+        let mut scale = vec![lam.shell_scale(&ec, Side::Negative); nn];
+        scale.extend(std::iter::repeat_n(lam.shell_scale(&ec, Side::Positive), np));
+        scale.extend(std::iter::repeat_n(p.electrolyte.initial_concentration, nx));
         scale.extend(sei.indices().map(|_| SeiLayer::initial_concentration(&ec)));
+        lam.push_scale(&ec, &mut scale);
         if ec.submodels.thermal {
             scale.push(p.thermal.ambient_temperature);
         }
         let mass = vec![1.0; scale.len()];
         let ionic_current_shape = Self::ionic_current_shape(&ec, &electrolyte);
         let consts = VoltageConsts::new(&ec, &electrolyte);
-        Self { ec, electrolyte, ionic_current_shape, consts, sei, mass, scale }
+        Self { ec, electrolyte, ionic_current_shape, consts, sei, lam, mass, scale }
     }
 
     /// The leading-order ionic current `x/L_n`, 1, `(L - x)/L_p` at the volume centres,
@@ -247,7 +253,7 @@ impl Spme {
         let (_, _, ce) = self.blocks(y);
         let ec = &self.ec;
         let alpha = ec.electrode(side).charge_transfer_coefficient;
-        let j = ec.mean_interfacial_current(side, current);
+        let j = self.lam.interfacial_current(ec, side, y, current);
         // j0 is the particle factor, once per electrode, times the electrolyte factor.
         // PyBaMM 26.10's SPMe regularises only the electrolyte factor: its regulariser
         // does not recognise the x-averaged surface concentration and falls back to a
@@ -258,21 +264,22 @@ impl Spme {
         let c_in = c_s.clamp(0.0, c_max);
         let j0_particle = k * (c_in * (c_max - c_in)).sqrt();
         let j0 = ce[self.consts.electrode(side)].iter().map(|&c| j0_particle * electrolyte_factor(c, c_e_ref));
-        let film = if side == Side::Negative { self.sei.film(ec, y, current) } else { 0.0 };
+        let film = if side == Side::Negative { self.sei.film(ec, y, j, self.lam.surface_area_density(ec, side, y)) } else { 0.0 };
         ec.ocp(side, c_s) + mean_overpotential(j, j0, alpha, temp) + film
     }
 
     /// Writes the SEI states' rates into `out` and returns the x-averaged side-reaction
     /// current density (A/m^2); zero without SEI. PyBaMM's SPMe does not x-average side
     /// reactions: each negative volume grows its own SEI with its own `phi_s - phi_e`.
-    fn sei_rhs(&self, y: &[f64], current: f64, temp: f64, out: &mut [f64]) -> f64 {
+    fn sei_rhs(&self, y: &[f64], sn: f64, current: f64, temp: f64, out: &mut [f64]) -> f64 {
         if self.sei.len() == 0 {
             return 0.0;
         }
-        let (sn, _) = self.surfaces(y);
         let (_, _, ce) = self.blocks(y);
         let delta_phi = self.surface_potential_difference(Side::Negative, sn, y, current, temp);
-        self.sei.rhs(&self.ec, y, self.negative_potential_profile(delta_phi, ce, current, temp), current, temp, out)
+        let (ec, side) = (&self.ec, Side::Negative);
+        let (j, a) = (self.lam.interfacial_current(ec, side, y, current), self.lam.surface_area_density(ec, side, y));
+        self.sei.rhs(ec, y, self.negative_potential_profile(delta_phi, ce, current, temp), j, a, temp, out)
     }
 
     /// Solid-phase ohmic drop between the x-averaged and current-collector potentials (V).
@@ -280,9 +287,15 @@ impl Spme {
         current / self.ec.area() * self.consts.solid_resistance
     }
 
+    /// Shell concentrations (mol/m^3) of the negative and positive particles.
+    fn particles<'a>(&self, y: &'a [f64]) -> (Cow<'a, [f64]>, Cow<'a, [f64]>) {
+        let (n, p, _) = self.blocks(y);
+        (self.lam.concentrations(Side::Negative, y, n), self.lam.concentrations(Side::Positive, y, p))
+    }
+
     fn surfaces(&self, y: &[f64]) -> (f64, f64) {
-        let (cn, cp, _) = self.blocks(y);
-        self.ec.single_particle_surfaces(cn, cp)
+        let (cn, cp) = self.particles(y);
+        self.ec.single_particle_surfaces(&cn, &cp)
     }
 }
 
@@ -311,10 +324,15 @@ impl Model for Spme {
         for (start, len) in [(0, nn), (nn, np), (nn + np, nx)] {
             push_tridiagonal(&mut p, start, len);
         }
-        let t = nn + np + nx + self.sei.len();
-        // The SEI reads the electrolyte everywhere (through the conductivity at its mean).
+        let t = nn + np + nx + self.sei.len() + self.lam.len();
+        // The SEI reads the electrolyte everywhere (through the conductivity at its mean),
+        // and the negative volume fraction (its surface area).
         let electrolyte: Vec<usize> = (nn + np..nn + np + nx).chain(self.ec.submodels.thermal.then_some(t)).collect();
-        self.sei.push_pattern(&mut p, [nn - 2, nn - 1], &electrolyte);
+        let sei_reads: Vec<usize> = electrolyte.iter().copied().chain(self.lam.indices().take(1)).collect();
+        self.sei.push_pattern(&mut p, [nn - 2, nn - 1], &sei_reads);
+        // LAM reads the SEI's states and inputs when reaction-driven, else only the temperature.
+        let lam_reads: Vec<usize> = if self.ec.submodels.lam.reaction() { self.sei.indices().chain(electrolyte).collect() } else { self.ec.submodels.thermal.then_some(t).into_iter().collect() };
+        self.lam.push_pattern(&mut p, [0..nn, nn..nn + np], &lam_reads);
         if self.ec.submodels.thermal {
             for i in 0..=t {
                 p.push((i, t));
@@ -325,10 +343,11 @@ impl Model for Spme {
 
     fn initial_state(&self) -> Vec<f64> {
         let p = &self.ec.params;
-        let mut y = vec![p.negative.initial_concentration; self.ec.disc.sphere_n.len()];
-        y.extend(std::iter::repeat_n(p.positive.initial_concentration, self.ec.disc.sphere_p.len()));
+        let mut y = vec![self.lam.initial_shell(&self.ec, Side::Negative); self.ec.disc.sphere_n.len()];
+        y.extend(std::iter::repeat_n(self.lam.initial_shell(&self.ec, Side::Positive), self.ec.disc.sphere_p.len()));
         y.extend(std::iter::repeat_n(p.electrolyte.initial_concentration, self.electrolyte.len()));
         self.sei.push_initial(&self.ec, &mut y);
+        self.lam.push_initial(&self.ec, &mut y);
         if self.ec.submodels.thermal {
             y.push(p.thermal.initial_temperature);
         }
@@ -341,11 +360,15 @@ impl Model for Spme {
         let np = ec.disc.sphere_p.len();
         let nx = self.electrolyte.len();
         let temp = self.temp(y);
-        let (cn, cp, ce) = self.blocks(y);
-        let j_sei = self.sei_rhs(y, current, temp, out);
-        for (side, c, range, side_reaction) in [(Side::Negative, cn, 0..nn, j_sei), (Side::Positive, cp, nn..nn + np, 0.0)] {
-            let flux = Electrochem::molar_flux(ec.mean_interfacial_current(side, current) - side_reaction);
-            ec.sphere(side).diffusion(c, ec.diffusivity(side, temp), flux, &mut out[range]);
+        let (_, _, ce) = self.blocks(y);
+        let (cn, cp) = self.particles(y);
+        let (sn, _) = ec.single_particle_surfaces(&cn, &cp);
+        let j_sei = self.sei_rhs(y, sn, current, temp, out);
+        let a_j_sei = self.lam.surface_area_density(ec, Side::Negative, y) * j_sei;
+        let rates = self.lam.rhs(ec, [&cn, &cp], a_j_sei, out);
+        for (side, c, range, side_reaction, rate) in [(Side::Negative, &cn, 0..nn, j_sei, rates[0]), (Side::Positive, &cp, nn..nn + np, 0.0, rates[1])] {
+            let flux = Electrochem::molar_flux(self.lam.interfacial_current(ec, side, y, current) - side_reaction);
+            self.lam.particle_rhs(ec, side, y, c, flux, rate, temp, &mut out[range]);
         }
         let ionic = (self.ionic_current_shape.as_slice(), current / ec.area());
         self.electrolyte.concentration_rhs(ec, ce, self.reaction(current), Some(ionic), temp, &mut out[nn + np..nn + np + nx]);
@@ -378,7 +401,11 @@ impl Model for Spme {
     }
 
     fn sei_thickness(&self, y: &[f64]) -> Option<f64> {
-        self.sei.thickness(&self.ec, y)
+        self.sei.thickness(&self.ec, y, self.lam.surface_area_density(&self.ec, Side::Negative, y))
+    }
+
+    fn active_material(&self, y: &[f64]) -> Option<super::submodels::lam::ActiveMaterial> {
+        self.lam.summary(&self.ec, y)
     }
 
     fn temperature(&self, y: &[f64]) -> f64 {
@@ -386,13 +413,14 @@ impl Model for Spme {
     }
 
     fn solid_lithium(&self, y: &[f64]) -> f64 {
-        let (cn, cp, _) = self.blocks(y);
-        self.ec.single_particle_lithium(cn, cp)
+        let (n, p, _) = self.blocks(y);
+        self.lam.particle_lithium(&self.ec, Side::Negative, n) + self.lam.particle_lithium(&self.ec, Side::Positive, p)
     }
 
     fn fields(&self, y: &[f64]) -> Vec<super::Field> {
-        let (cn, cp, ce) = self.blocks(y);
-        let mut fields = self.ec.single_particle_fields(cn, cp);
+        let (_, _, ce) = self.blocks(y);
+        let (cn, cp) = self.particles(y);
+        let mut fields = self.ec.single_particle_fields(&cn, &cp);
         fields.push(super::Field::concentration_x("electrolyte concentration", self.ec.x_centres(), ce.to_vec()));
         fields
     }
@@ -402,13 +430,14 @@ impl Model for Spme {
         let mut out = self.ec.single_particle_surface_states();
         out.extend(nn + np..nn + np + self.electrolyte.len());
         out.extend(self.sei.indices());
+        out.extend(self.lam.indices().take(2));
         out.extend(self.ec.submodels.thermal.then(|| self.len() - 1));
         out
     }
 
     fn open_circuit_voltage(&self, y: &[f64]) -> f64 {
-        let (cn, cp, _) = self.blocks(y);
-        self.ec.single_particle_ocv(cn, cp)
+        let (cn, cp) = self.particles(y);
+        self.ec.single_particle_ocv(&cn, &cp)
     }
 }
 

@@ -106,5 +106,6 @@ pub fn chen2020() -> ParameterSet {
             positive_collector_heat_capacity: 2700.0 * 897.0,
         },
         sei: super::sei::Sei::default(),
+        lam: super::lam::Lam::default(),
     }
 }

@@ -264,6 +264,10 @@ pub struct ParameterSet {
     /// SEI growth (read only when an SEI submodel is on); PyBaMM's Chen2020 values when absent.
     #[serde(default)]
     pub sei: super::sei::Sei,
+    /// Loss of active material and particle mechanics (read only when a LAM submodel is on);
+    /// PyBaMM's OKane2022 constants when absent.
+    #[serde(default)]
+    pub lam: super::lam::Lam,
 }
 
 impl ParameterSet {
@@ -320,7 +324,8 @@ impl ParameterSet {
         positive("thermal.cell_volume", t.cell_volume)?;
         positive("thermal.negative_collector_heat_capacity", t.negative_collector_heat_capacity)?;
         positive("thermal.positive_collector_heat_capacity", t.positive_collector_heat_capacity)?;
-        self.sei.validate()
+        self.sei.validate()?;
+        self.lam.validate()
     }
 
     /// Reads a parameter set from a TOML file and validates it: a whole set, or a base set
@@ -436,6 +441,7 @@ impl ParameterSet {
                 _ => return Err(unknown()),
             },
             "sei" => self.sei.field_mut(name).ok_or_else(unknown)?,
+            "lam" => self.lam.field_mut(name).ok_or_else(unknown)?,
             _ => return Err(unknown()),
         };
         Ok(slot)

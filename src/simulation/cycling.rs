@@ -31,6 +31,13 @@ pub struct CycleSummary {
     pub lithium_inventory_lost: f64,
     /// SEI thickness at the cycle's end (m); `None` without an SEI submodel.
     pub sei_thickness_m: Option<f64>,
+    /// Active material lost per electrode (negative, positive) since the start, at the
+    /// cycle's end: the lost share of the initial active material volume fraction (-),
+    /// `1 - eps_s / eps_s0`; `None` without a loss-of-active-material submodel.
+    pub active_material_lost: Option<[f64; 2]>,
+    /// Lithium lost with each electrode's active material (negative, positive) since the
+    /// start, at the cycle's end (mol); `None` without a loss-of-active-material submodel.
+    pub lithium_lost_to_lam_mol: Option<[f64; 2]>,
     /// Terminal voltage at the cycle's end (V).
     pub end_voltage_v: f64,
     /// Integrator steps of the cycle.
@@ -54,6 +61,7 @@ pub fn run_cycles(
     let opts = SimOptions { t_eval: None, keep_states: false, ..opts.clone() };
     let mut y = model.initial_state();
     let (li0, sei0) = (model.solid_lithium(&y), model.sei_lithium(&y));
+    let am0 = model.active_material(&y);
     let mut summaries: Vec<CycleSummary> = Vec::with_capacity(n);
     let mut t = 0.0;
     for k in 1..=n {
@@ -78,6 +86,8 @@ pub fn run_cycles(
             lithium_lost_to_sei_mol: model.sei_lithium(&y) - sei0,
             lithium_inventory_lost: (li0 - model.solid_lithium(&y)) / li0,
             sei_thickness_m: model.sei_thickness(&y),
+            active_material_lost: am0.zip(model.active_material(&y)).map(|(a0, a)| [0, 1].map(|k| 1.0 - a.fraction[k] / a0.fraction[k])),
+            lithium_lost_to_lam_mol: model.active_material(&y).map(|a| a.lithium_lost_mol),
             end_voltage_v: sol.final_voltage(),
             steps: sol.stats.steps,
         };

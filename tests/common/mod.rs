@@ -39,3 +39,77 @@ pub fn run(
 pub fn uniform_mesh(n: usize) -> MeshSizes {
     MeshSizes { x_n: n, x_s: n, x_p: n, r_n: n, r_p: n }
 }
+
+/// Rows of a PyBaMM reference CSV in `tests/data/{folder}/{file}` (header skipped).
+pub fn csv_rows(folder: &str, file: &str) -> Vec<Vec<f64>> {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data").join(folder).join(file);
+    let text = std::fs::read_to_string(&path).unwrap();
+    text.lines().skip(1).map(|l| l.split(',').map(|x| x.parse().unwrap()).collect()).collect()
+}
+
+/// Differences from a reference over a run of steps.
+pub struct StepGaps {
+    /// Voltage differences outside the holds, 20 s and more from each step's ends (mV).
+    pub voltage: Vec<f64>,
+    /// Current differences in the holds, as far from their ends (mA).
+    pub current: Vec<f64>,
+    /// Largest difference between the step ends (s).
+    pub step_end: f64,
+}
+
+/// Runs `steps` one at a time on `model`, each from the last one's end state, with outputs at
+/// a reference's times since each step's start (`rows`: time (s), current (A) and voltage (V)
+/// in columns 0 to 2, the 0-based step in column `step_col`), so that a step ending a
+/// millisecond apart (the C/20 end of a hold is that sensitive to either solver's
+/// tolerance) does not shift the later steps against each other. Compares the current in
+/// the steps `hold` names and the voltage in the others, away from the steps' ends (the
+/// first output holds the last step's current), and calls `visit(solution, k, row)` for
+/// each reference row with an output `k`.
+pub fn step_by_step(
+    model: &dyn cellstudio::models::Model,
+    ws: &mut cellstudio::solver::Workspace,
+    steps: &[cellstudio::protocol::Step],
+    rows: &[Vec<f64>],
+    step_col: usize,
+    hold: impl Fn(usize) -> bool,
+    opts: &SimOptions,
+    mut visit: impl FnMut(&Solution, usize, &[f64]),
+) -> StepGaps {
+    let mut y = model.initial_state();
+    let mut gaps = StepGaps { voltage: Vec::new(), current: Vec::new(), step_end: 0.0 };
+    for (s, step) in steps.iter().enumerate() {
+        let ref_rows: Vec<&Vec<f64>> = rows.iter().filter(|r| r[step_col] as usize == s).collect();
+        let t0 = ref_rows[0][0];
+        let mut times: Vec<f64> = ref_rows.iter().map(|r| r[0] - t0).collect();
+        times.dedup();
+        let opts = SimOptions { t_eval: Some(times), keep_states: true, ..opts.clone() };
+        let sol = simulate(model, ws, &Protocol { steps: vec![step.clone()] }, &opts, Some(y)).unwrap();
+        y = sol.final_state.clone();
+        let ours_end = sol.cutoff_times.first().copied().unwrap_or(step.duration());
+        let ref_end = ref_rows[ref_rows.len() - 1][0] - t0;
+        gaps.step_end = gaps.step_end.max((ours_end - ref_end).abs());
+        for r in ref_rows {
+            let Some(k) = sol.time.iter().position(|t| *t == r[0] - t0) else { continue };
+            visit(&sol, k, r);
+            if sol.time[k] < 20.0 || sol.time[k] > ours_end.min(ref_end) - 20.0 {
+                continue;
+            }
+            if hold(s) {
+                gaps.current.push((sol.current[k] - r[1]) * 1e3);
+            } else {
+                gaps.voltage.push((sol.voltage[k] - r[2]) * 1e3);
+            }
+        }
+    }
+    gaps
+}
+
+/// Root mean square of `x`.
+pub fn rms(x: &[f64]) -> f64 {
+    (x.iter().map(|e| e * e).sum::<f64>() / x.len() as f64).sqrt()
+}
+
+/// Largest magnitude in `x`.
+pub fn max_abs(x: &[f64]) -> f64 {
+    x.iter().fold(0.0f64, |m, e| m.max(e.abs()))
+}

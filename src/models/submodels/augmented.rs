@@ -152,6 +152,10 @@ impl Model for Augmented {
         self.base.sei_thickness(&y[..self.n_base])
     }
 
+    fn active_material(&self, y: &[f64]) -> Option<super::lam::ActiveMaterial> {
+        self.base.active_material(&y[..self.n_base])
+    }
+
     fn plating_margin(&self, y: &[f64], current: f64) -> Option<f64> {
         self.base.plating_margin(&y[..self.n_base], current)
     }

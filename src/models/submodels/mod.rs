@@ -1,11 +1,14 @@
 //! Optional physics added to a model: lumped thermal balance (contact resistance is a
 //! single series term applied in each model's voltage), states appended by a wrapper
-//! (series RC element, OCV hysteresis), and SEI growth inside the single-particle models.
+//! (series RC element, OCV hysteresis), and SEI growth and loss of active material inside the
+//! single-particle models.
 
 pub mod augmented;
+pub mod lam;
 pub mod sei;
 pub mod thermal;
 
 pub use augmented::Augmented;
+pub use lam::{LamLayer, LamModel};
 pub use sei::{SeiLayer, SeiModel};
 pub use thermal::LumpedThermal;

@@ -4,7 +4,9 @@
 //! in the SPMe (PyBaMM's default "false" there), with the parameters of
 //! [`crate::params::Sei`]. See docs/ageing.md.
 //!
-//! - thickness `L = c_sei V_bar / a` (m), `a = 3 eps_s / R` the negative surface area density;
+//! - thickness `L = c_sei V_bar / a` (m), `a = 3 eps_s / R` the negative surface area density
+//!   (which follows `eps_s` under loss of active material: the model passes it in, with the
+//!   total interfacial current density `j_tot`);
 //! - film overpotential: the x-averaged `phi_s - phi_e` of the negative electrode gains
 //!   `j_tot L_av R_sei` (V, `L_av` the x-averaged thickness), `j_tot` the total interfacial
 //!   current density (A/m^2, the applied current over `a L_n A`);
@@ -20,7 +22,6 @@
 use serde::{Deserialize, Serialize};
 
 use crate::models::Electrochem;
-use crate::models::electrochem::Side;
 use crate::models::kinetics::arrhenius;
 use crate::params::{FARADAY, GAS_CONSTANT};
 
@@ -71,9 +72,9 @@ impl SeiLayer {
         s.initial_thickness * ec.params.negative.surface_area_density() / s.partial_molar_volume
     }
 
-    /// Thickness (m) for SEI concentration `c` (mol/m^3).
-    fn thickness_of(ec: &Electrochem, c: f64) -> f64 {
-        c * ec.params.sei.partial_molar_volume / ec.params.negative.surface_area_density()
+    /// Thickness (m) for SEI concentration `c` (mol/m^3) on surface area density `a` (1/m).
+    fn thickness_of(ec: &Electrochem, c: f64, a: f64) -> f64 {
+        c * ec.params.sei.partial_molar_volume / a
     }
 
     /// Mean SEI concentration over its states (mol/m^3).
@@ -81,26 +82,27 @@ impl SeiLayer {
         y[self.indices()].iter().sum::<f64>() / self.count as f64
     }
 
-    /// x-averaged SEI thickness (m), `None` when off.
-    pub fn thickness(&self, ec: &Electrochem, y: &[f64]) -> Option<f64> {
-        self.start.map(|_| Self::thickness_of(ec, self.mean_concentration(y)))
+    /// x-averaged SEI thickness (m) on negative surface area density `a` (1/m), `None` when
+    /// off.
+    pub fn thickness(&self, ec: &Electrochem, y: &[f64], a: f64) -> Option<f64> {
+        self.start.map(|_| Self::thickness_of(ec, self.mean_concentration(y), a))
     }
 
     /// Film overpotential `j_tot L R_sei` (V) with the x-averaged thickness `L`, that the
-    /// x-averaged `phi_s - phi_e` of the negative electrode gains at applied current
-    /// `current` (A); zero when off.
-    pub fn film(&self, ec: &Electrochem, y: &[f64], current: f64) -> f64 {
-        self.thickness(ec, y).map_or(0.0, |l| ec.mean_interfacial_current(Side::Negative, current) * l * ec.params.sei.resistivity)
+    /// x-averaged `phi_s - phi_e` of the negative electrode gains at total interfacial
+    /// current density `j_tot` (A/m^2) on surface area density `a` (1/m); zero when off.
+    pub fn film(&self, ec: &Electrochem, y: &[f64], j_tot: f64, a: f64) -> f64 {
+        self.thickness(ec, y, a).map_or(0.0, |l| j_tot * l * ec.params.sei.resistivity)
     }
 
     /// Side-reaction current density `j_sei` (A/m^2, negative while the SEI grows) of a
     /// layer of thickness `l` (m) at its `phi_s - phi_e` = `delta_phi` (V).
-    fn current_at(&self, ec: &Electrochem, l: f64, delta_phi: f64, current: f64, temp: f64) -> f64 {
+    fn current_at(&self, ec: &Electrochem, l: f64, delta_phi: f64, j_tot: f64, temp: f64) -> f64 {
         let s = &ec.params.sei;
         let j = match self.model {
             SeiModel::None => 0.0,
             SeiModel::ReactionLimited => {
-                let film = ec.mean_interfacial_current(Side::Negative, current) * l * s.resistivity;
+                let film = j_tot * l * s.resistivity;
                 let eta = delta_phi - s.open_circuit_potential - film;
                 -s.exchange_current * (-0.5 * FARADAY / (GAS_CONSTANT * temp) * eta).exp()
             }
@@ -109,19 +111,39 @@ impl SeiLayer {
         j * arrhenius(s.activation_energy, ec.t_ref(), temp)
     }
 
+    /// Thickness (m) of the layer in state `k` (an index into `y`) on surface area density
+    /// `a` (1/m).
+    pub fn local_thickness(ec: &Electrochem, y: &[f64], k: usize, a: f64) -> f64 {
+        Self::thickness_of(ec, y[k], a)
+    }
+
+    /// Side-reaction current density `j_sei` (A/m^2) of the layer in state `k` (an index
+    /// into `y`) at `phi_s - phi_e` = `delta_phi` (V), with the film carrying current density
+    /// `j_film` (A/m^2: the total in the single-particle models, the intercalation current in
+    /// the DFN, as PyBaMM's), on surface area density `a` (1/m) at temperature `temp` (K).
+    pub fn side_current(&self, ec: &Electrochem, y: &[f64], k: usize, delta_phi: f64, j_film: f64, a: f64, temp: f64) -> f64 {
+        self.current_at(ec, Self::thickness_of(ec, y[k], a), delta_phi, j_film, temp)
+    }
+
+    /// `d c_sei / dt` (mol/(m^3 s)) of side-reaction current density `j_sei` (A/m^2) on
+    /// surface area density `a` (1/m).
+    pub fn growth_rate(ec: &Electrochem, a: f64, j_sei: f64) -> f64 {
+        -a * j_sei / (FARADAY * ec.params.sei.lithium_per_sei)
+    }
+
     /// Writes `d c_sei / dt` (mol/(m^3 s)) of each state into `out`, given `phi_s - phi_e`
-    /// (V) at each (one per state, film included), and returns the x-averaged side-reaction
-    /// current density (A/m^2) that the negative particle's intercalation current loses;
-    /// zero when off.
-    pub fn rhs(&self, ec: &Electrochem, y: &[f64], delta_phi: impl Iterator<Item = f64>, current: f64, temp: f64, out: &mut [f64]) -> f64 {
+    /// (V) at each (one per state, film included), the total interfacial current density
+    /// `j_tot` (A/m^2) and surface area density `a` (1/m), and returns the x-averaged
+    /// side-reaction current density (A/m^2) that the negative particle's intercalation
+    /// current loses; zero when off.
+    pub fn rhs(&self, ec: &Electrochem, y: &[f64], delta_phi: impl Iterator<Item = f64>, j_tot: f64, a: f64, temp: f64, out: &mut [f64]) -> f64 {
         if self.start.is_none() {
             return 0.0;
         }
-        let rate = -ec.params.negative.surface_area_density() / (FARADAY * ec.params.sei.lithium_per_sei);
         let mut sum = 0.0;
         for (k, d) in self.indices().zip(delta_phi) {
-            let j = self.current_at(ec, Self::thickness_of(ec, y[k]), d, current, temp);
-            out[k] = rate * j;
+            let j = self.side_current(ec, y, k, d, j_tot, a, temp);
+            out[k] = Self::growth_rate(ec, a, j);
             sum += j;
         }
         sum / self.count as f64
