@@ -778,7 +778,27 @@ def batch_o(root):
     (electrolyte conductivity + self-heating, negative kinetics + positive LAM, contact +
     hysteresis); and a DFN control at 15 degC. Lithium and active-material loss are accepted
     only by their own words, as since batch r. No case hides an effect outside every family:
-    the judge (judge_verdict.py) counts "Unexplained" as right only for effect "none"."""
+    the judge (judge_verdict.py) counts "Unexplained" as right only for effect "none".
+
+    First run (2026-11-26, frozen binary /work/bin/frozen-o, sha256 1771c0db7d65, load average
+    4.9 before, 5.2-9.3 during, 7.8 after, on 2 cores shared with other sessions' builds): 6 of 8.
+    o1 electrolyte properties (diffusivity 0.963x, conductivity 0.973x: the separator's change
+    spread over the cell), then a positive kinetics 0.90x stand-in (1.49 -> 1.15 mV), 344 s;
+    o3 no missing physics (1.03 mV), 1 s; o4 lithium inventory with the initial concentrations
+    at the truth (896 and 55378 mol/m3), 3 s; o5 kinetics (0.47x/0.91x, refitted to 0.50x/0.50x
+    once SPMe -> DFN was added in round 2), 16 s; o7 the pair in round 1 at the truth (negative
+    rate constant 0.399x, positive fraction 0.6117 vs 0.6118), 315 s; o8 passed weakly, as two
+    ties: RC 5.13 mOhm (time constant under the 2 s sampling) or contact 5.09 mOhm, then
+    hysteresis 9.94 mV or contact 4.99 mOhm; 9 s. Missed: o2 timed out at 900 s (alone
+    afterwards, a rerun: 1077 s at load ~7, same binary); the isothermal DFN and the thermal
+    candidate run with the first recorded temperature (283.25 K) as the ambient, so the warming
+    towards the 25 degC room needs h = 0.25 W/(m2 K), implausible though the best fit (19.00 ->
+    4.05 mV), and kinetics (negative 1.57x, 7.25 mV) is named first, then lithium inventory with
+    a 35 % negative LAM, then unexplained (4.88 mV). o6 named series/contact resistance 4.06
+    mOhm together with thermal (h 15.03, the truth), 8.45 -> 0.99 mV, 45 s: Chen 2020's
+    conductivity has no temperature dependence, so in the SPMe a conductivity factor is an
+    ohmic term and this pair cannot be told from the true one (a weak case by design); the tool
+    named one pair instead of a tie of pairs."""
     cap = 5.0
     p = chen()
     p.update({"Separator porosity": 0.40})
