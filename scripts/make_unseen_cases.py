@@ -748,7 +748,149 @@ def batch_p(root):
                initial_soc=0.6, seed=108, noise=1.5e-3, period=5, compare=lion.SPMe())
 
 
-BATCHES = {"u": batch_u, "v": batch_v, "w": batch_w, "x": batch_x, "y": batch_y, "z": batch_z, "q": batch_q, "r": batch_r, "s": batch_s, "t": batch_t, "p": batch_p}
+def waveform(segments, dt=1.0):
+    """A programmed current waveform as a 1 s (`dt`) table (time_s, current_A, discharge positive),
+    for `pybamm.step.current`: each segment is (seconds, f) with f(tau) the current in A at tau
+    seconds into the segment; the table is continuous in time (no repeated time: a cycler running
+    a waveform logs no current steps)."""
+    t, i, start = [], [], 0.0
+    for seconds, f in segments:
+        n = int(round(seconds / dt))
+        for k in range(n):
+            t.append(start + k * dt)
+            i.append(float(f(k * dt)))
+        start += n * dt
+    t.append(start)
+    i.append(i[-1])
+    return np.column_stack([t, i])
+
+
+def batch_o(root):
+    """Twelfth batch, made blind (a helper session, judged once on the frozen binary
+    /work/bin/frozen-o before anything else): protocols not used before (3C partial discharges,
+    a cold cell warming towards a warmer room under HPPC-like pulses, a rest-heavy storage check
+    logged by a cycler, a C/5 charge from empty with a rest, a three-stage fast charge, an
+    interrupted 2C discharge, a sinusoidal current ripple, triangular current ramps with no
+    current step at all); concealed parameters that are not candidates but map onto a family
+    (separator porosity -> electrolyte transport; an initial temperature below the
+    ambient -> thermal); a parameter off in the unusual direction (more lithium than the set);
+    kinetics in DFN data handed to the SPMe (a fast charge); three pairs not used before
+    (electrolyte conductivity + self-heating, negative kinetics + positive LAM, contact +
+    hysteresis); and a DFN control at 15 degC. Lithium and active-material loss are accepted
+    only by their own words, as since batch r. No case hides an effect outside every family:
+    the judge (judge_verdict.py) counts "Unexplained" as right only for effect "none".
+
+    First run (2026-11-26, frozen binary /work/bin/frozen-o, sha256 1771c0db7d65, load average
+    4.9 before, 5.2-9.3 during, 7.8 after, on 2 cores shared with other sessions' builds): 6 of 8.
+    o1 electrolyte properties (diffusivity 0.963x, conductivity 0.973x: the separator's change
+    spread over the cell), then a positive kinetics 0.90x stand-in (1.49 -> 1.15 mV), 344 s;
+    o3 no missing physics (1.03 mV), 1 s; o4 lithium inventory with the initial concentrations
+    at the truth (896 and 55378 mol/m3), 3 s; o5 kinetics (0.47x/0.91x, refitted to 0.50x/0.50x
+    once SPMe -> DFN was added in round 2), 16 s; o7 the pair in round 1 at the truth (negative
+    rate constant 0.399x, positive fraction 0.6117 vs 0.6118), 315 s; o8 passed weakly, as two
+    ties: RC 5.13 mOhm (time constant under the 2 s sampling) or contact 5.09 mOhm, then
+    hysteresis 9.94 mV or contact 4.99 mOhm; 9 s. Missed: o2 timed out at 900 s (alone
+    afterwards, a rerun: 1077 s at load ~7, same binary); the isothermal DFN and the thermal
+    candidate run with the first recorded temperature (283.25 K) as the ambient, so the warming
+    towards the 25 degC room needs h = 0.25 W/(m2 K), implausible though the best fit (19.00 ->
+    4.05 mV), and kinetics (negative 1.57x, 7.25 mV) is named first, then lithium inventory with
+    a 35 % negative LAM, then unexplained (4.88 mV). o6 named series/contact resistance 4.06
+    mOhm together with thermal (h 15.03, the truth), 8.45 -> 0.99 mV, 45 s: Chen 2020's
+    conductivity has no temperature dependence, so in the SPMe a conductivity factor is an
+    ohmic term and this pair cannot be told from the true one (a weak case by design); the tool
+    named one pair instead of a tie of pairs."""
+    cap = 5.0
+    p = chen()
+    p.update({"Separator porosity": 0.40})
+    write_case(root, "o1_separator_porosity_3C_partial_dfn", lion.DFN(), p,
+               ["Rest for 5 minutes"] + ["Discharge at 3C for 3 minutes", "Rest for 15 minutes"] * 4,
+               {"effect": "electrolyte_transport", "candidate_model": "dfn", "accept": ["electrolyte"],
+                "note": "separator porosity 0.40 (set: 0.47; a compressed or clogged separator): with Bruggeman 1.5 the "
+                        "separator's effective conductivity and diffusivity x0.79 and less electrolyte in it; not a candidate "
+                        "parameter, its physics is the electrolyte transport family (a tie with a series resistance names it "
+                        "too). From full: 5 min rest, 4 x (3C for 3 min, 15 min rest); DFN data"},
+               seed=111, compare=lion.DFN())
+    p = chen()
+    p.update({"Initial temperature [K]": 283.15, "Total heat transfer coefficient [W.m-2.K-1]": 5.0})
+    hppc = ["Discharge at 2C for 10 seconds", "Rest for 2 minutes", "Charge at 1C for 10 seconds", "Rest for 2 minutes",
+            "Discharge at 1C for 6 minutes", "Rest for 10 minutes"]
+    write_case(root, "o2_cold_start_warming_recorded_dfn", lion.DFN(options={"thermal": "lumped"}), p, ["Rest for 2 minutes"] + hppc * 4,
+               {"effect": "thermal", "candidate_model": "dfn", "accept": ["thermal", "heat"], "ambient_temperature_K": 298.15,
+                "note": "a cell taken from 10 degC storage into a 25 degC room: initial temperature 283.15 K, ambient 298.15 K, lumped "
+                        "thermal h = 5 W/(m2 K) (it warms to about 296 K within 15 min, then its own heat under the 1C steps takes "
+                        "it to about 306 K); the initial temperature is not a candidate parameter, its physics is the thermal family "
+                        "(the candidate is the isothermal DFN at 25 degC). Temperature recorded (0.05 K "
+                        "noise). From 90 % SOC: 4 x (2C discharge and 1C charge pulses of 10 s with 2 min rests, 1C for 6 min, "
+                        "10 min rest); sampled every 2 s; DFN data"},
+               initial_soc=0.9, temperature=True, seed=112, period=2, compare=lion.DFN())
+    p = chen()
+    p.update({"Ambient temperature [K]": 288.15, "Initial temperature [K]": 288.15})
+    storage = ["Rest for 2 hours", "Discharge at C/3 for 15 minutes", "Rest for 1 hour", "Discharge at 1C for 10 seconds", "Rest for 5 minutes",
+               "Charge at 1C for 10 seconds", "Rest for 30 minutes", "Charge at C/3 for 15 minutes", "Rest for 1 hour"]
+    write_case(root, "o3_control_storage_check_15C_dfn", lion.DFN(), p, storage,
+               {"effect": "none", "candidate_model": "dfn", "accept": ["no missing"], "ambient_temperature_K": 288.15,
+                "note": "negative control at 15 degC (isothermal): a rest-heavy storage check from 50 % SOC (2 h rest, C/3 for 15 "
+                        "min, 1 h rest, 1C discharge and charge pulses of 10 s, 30 min rest, C/3 charge for 15 min, 1 h rest); DFN "
+                        "data and model; cycler artefacts (irregular sampling, 3 mA current noise, 0.1 mV resolution)"},
+               initial_soc=0.5, seed=113, cycler=CYCLER, compare=lion.DFN())
+    p = scaled(chen(), "Initial concentration in negative electrode [mol.m-3]", 1.04)
+    write_case(root, "o4_more_lithium_c5_charge_from_empty", lion.SPMe(), p,
+               ["Rest for 30 minutes", "Charge at C/5 until 4.2 V", "Rest for 1 hour"],
+               {"effect": "lithium_inventory_loss", "candidate_model": "spme", "accept": ["inventory"],
+                "note": "4 % MORE cyclable lithium than the set (negative initial concentration x1.04, the other direction of "
+                        "a lithium loss); from empty (0 % SOC of that cell, at 2.5 V): 30 min rest, C/5 charge to 4.2 V (no "
+                        "hold), 1 h rest; sampled every 5 s; SPMe data"},
+               initial_soc=0.0, seed=114, period=5, compare=lion.SPMe())
+    p = chen()
+    for side in ["Negative", "Positive"]:
+        p = scaled(p, f"{side} electrode exchange-current density [A.m-2]", 0.5)
+    write_case(root, "o5_kinetics_fast_charge_dfn_data_spme", lion.DFN(), p,
+               ["Rest for 10 minutes", "Charge at 1.5C until 3.9 V", "Charge at 1C until 4.1 V", "Charge at C/3 until 4.2 V", "Rest for 30 minutes"],
+               {"effect": "kinetics", "candidate_model": "spme", "accept": ["kinetic", "charge transfer", "exchange"],
+                "note": "exchange currents x0.5 (both electrodes); a three-stage fast charge from 10 % SOC (1.5C to 3.9 V, 1C to 4.1 V, "
+                        "C/3 to 4.2 V, no hold, 30 min rest); DFN data handed to the SPMe. Replaying the recorded current (before "
+                        "noise), PyBaMM's SPMe with the nominal set is 29.0 mV RMS from the recording, its SPMe with the concealed "
+                        "kinetics 5.6 mV (the SPMe's own error, most of it at the 1.5C stage): one concealed effect, electrolyte "
+                        "transport (SPMe -> DFN) beside it is right too, any other partner is a stand-in; sampled every 2 s"},
+               initial_soc=0.1, seed=115, period=2, compare=lion.SPMe())
+    p = scaled(chen(), "Electrolyte conductivity [S.m-1]", 0.5)
+    p.update({"Total heat transfer coefficient [W.m-2.K-1]": 15.0})
+    write_case(root, "o6_conductivity_and_thermal_interrupted_2C", lion.SPMe(options={"thermal": "lumped"}), p,
+               ["Discharge at 2C for 5 minutes or until 2.7 V", "Rest for 1 minute"] * 5 + ["Rest for 30 minutes", "Charge at 1C for 15 minutes",
+                                                                                          "Rest for 20 minutes"],
+               {"effect": "electrolyte_transport+thermal", "candidate_model": "spme", "accept": ["electrolyte", "thermal|heat"],
+                "note": "electrolyte conductivity x0.5 and lumped self-heating h = 15 W/(m2 K), which mask each other (the warming "
+                        "cell's conductivity recovers: 22 mV RMS from the conductivity alone, 8.8 mV from both); from full: an "
+                        "interrupted 2C discharge (5 x (2C for 5 min, 1 min rest)), 30 min rest, 1C charge for 15 min, 20 min "
+                        "rest; temperature recorded; sampled every 2 s; SPMe data, the candidate the isothermal SPMe"},
+               temperature=True, seed=116, period=2, compare=lion.SPMe())
+    ripple = waveform([(3600, lambda s: cap * (0.6 + 0.9 * np.sin(2 * np.pi * s / 180.0)))], dt=2.0)
+    p = scaled(chen(), "Negative electrode exchange-current density [A.m-2]", 0.4)
+    p = scaled(p, "Positive electrode active material volume fraction", 0.92)
+    write_case(root, "o7_kinetics_negative_and_lam_positive_sine", lion.SPMe(), p,
+               ["Rest for 5 minutes", pybamm.step.current(ripple), "Discharge at C/2 until 2.7 V", "Rest for 30 minutes"],
+               {"effect": "kinetics+active_material_loss", "candidate_model": "spme", "accept": ["kinetic|charge transfer|exchange", "active material"],
+                "note": "negative exchange current x0.4 (positive as set) and 8 % loss of positive active material (default initial "
+                        "concentrations); from full: 5 min rest, an hour of sinusoidal current (0.6C mean, 0.9C amplitude, 3 min "
+                        "period: -0.3C to 1.5C), then C/2 to 2.7 V, 30 min rest; sampled every 2 s; SPMe data"},
+               seed=117, period=2, compare=lion.SPMe())
+    tri = lambda sign: (600, lambda s: sign * cap * (s / 300.0 if s < 300 else (600 - s) / 300.0))
+    rest = lambda seconds: (seconds, lambda s: 0.0)
+    ramps = waveform([rest(600)] + [tri(1), rest(600), tri(-1), rest(600)] * 3, dt=2.0)
+    p = chen()
+    with_negative_hysteresis(p, 0.010)
+    p.update({"Contact resistance [Ohm]": 0.005}, check_already_exists=False)
+    write_case(root, "o8_contact_and_hysteresis_triangle_ramps_spm",
+               lion.SPM(options={"contact resistance": "true", "open-circuit potential": ("one-state hysteresis", "single")}), p,
+               [pybamm.step.current(ramps)],
+               {"effect": "contact_resistance+hysteresis", "candidate_model": "spm", "accept": ["contact|series resistance", "hysteresis"],
+                "note": "5 mOhm contact resistance and one-state hysteresis of the negative OCP, +-10 mV (decay rate 10, initial "
+                        "state 0); from 60 % SOC: 10 min rest, 3 x (a triangular discharge ramp 0 -> 1C -> 0 over 10 min, 10 min "
+                        "rest, the same as charge, 10 min rest): no current step anywhere; sampled every 2 s; SPM data"},
+               initial_soc=0.6, seed=118, period=2, compare=lion.SPM())
+
+
+BATCHES = {"u": batch_u, "v": batch_v, "w": batch_w, "x": batch_x, "y": batch_y, "z": batch_z, "q": batch_q, "r": batch_r, "s": batch_s, "t": batch_t, "p": batch_p, "o": batch_o}
 
 if __name__ == "__main__":
     root = sys.argv[1] if len(sys.argv) > 1 else "out/unseen-cases"
