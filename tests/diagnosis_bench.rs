@@ -456,3 +456,17 @@ fn g3_fixed_inventory_loss_is_not_sei_growth_spm() {
     let rounds = run_case("diagnosis-ageing/g3_fixed_inventory_loss_12_cycles_spm");
     assert!(!report::verdict_in_words(&rounds[0]).contains("SEI"), "{}", rounds[0].summary);
 }
+
+#[test]
+fn o2_cold_start_warming_in_its_room_dfn() {
+    // Blind batch o (scripts/make_unseen_cases.py o): a cell from 10 degC storage in a 25 degC
+    // room with its temperature recorded. Missed on its first run (the thermal candidate took
+    // the first recorded temperature as the room's and needed h = 0.25 W/(m^2 K)); the
+    // candidate now fits the ambient to the recorded temperature.
+    let rounds = run_case("diagnosis-extra/o2_cold_start_warming_recorded_dfn");
+    let fit = rounds[0].best().and_then(|c| c.fit.as_ref()).expect("a named candidate holds its fit");
+    let value = |path: &str| fit.names.iter().position(|n| n == path).map(|i| fit.values[i]).expect(path);
+    // PyBaMM's truth: ambient 298.15 K, h = 5 W/(m^2 K).
+    assert!((value("thermal.ambient_temperature") - 298.15).abs() < 0.2, "{}", rounds[0].summary);
+    assert!((value("thermal.heat_transfer_coefficient") / 5.0 - 1.0).abs() < 0.03, "{}", rounds[0].summary);
+}

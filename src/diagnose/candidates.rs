@@ -63,6 +63,9 @@ const MISMATCH_RANGE: f64 = 30.0;
 /// ageing rate is a guess, not a measurement.
 const SEI_RANGE: f64 = 1000.0;
 
+/// How far (K) the fitted ambient may lie from a recording's first temperature.
+const AMBIENT_RANGE_K: f64 = 30.0;
+
 /// Full swings of the charge a recording must span for an ageing candidate (a single
 /// discharge is half a swing).
 const MIN_AGEING_CYCLES: f64 = 3.0;
@@ -209,8 +212,10 @@ impl Candidate {
 
     /// The model with this candidate added, or `None` when the model already has it or it
     /// cannot be added (e.g. electrolyte transport to a DFN). `fitted` lists the paths the
-    /// user's model already fits; they stay fitted beside the candidate's.
-    pub fn augment(self, spec: &ModelSpec, base: &ParameterSet, fitted: &[String]) -> Option<Augmentation> {
+    /// user's model already fits; they stay fitted beside the candidate's. `recorded_start`
+    /// is the recording's first temperature (K) when it holds one: the thermal candidate then
+    /// fits the ambient too (a cell need not start at the temperature of its room).
+    pub fn augment(self, spec: &ModelSpec, base: &ParameterSet, fitted: &[String], recorded_start: Option<f64>) -> Option<Augmentation> {
         let mut spec = *spec;
         let p = base.clone();
         let around = |path: &str| {
@@ -301,7 +306,15 @@ impl Candidate {
                 spec.submodels.thermal = true;
                 // Heat capacity, cooling area and the activation energies enter as fixed values.
                 structural_parameters = 3;
-                (vec![FitParameter::log("thermal.heat_transfer_coefficient", 10.0, 0.1, 1000.0)], "lumped thermal submodel on".into())
+                let mut extra = vec![FitParameter::log("thermal.heat_transfer_coefficient", 10.0, 0.1, 1000.0)];
+                let change = match recorded_start {
+                    Some(t0) => {
+                        extra.push(FitParameter::linear("thermal.ambient_temperature", t0, t0 - AMBIENT_RANGE_K, t0 + AMBIENT_RANGE_K));
+                        "lumped thermal submodel on, ambient fitted to the recorded temperature"
+                    }
+                    None => "lumped thermal submodel on",
+                };
+                (extra, change.into())
             }
             Candidate::RcDynamics => {
                 if spec.submodels.rc {

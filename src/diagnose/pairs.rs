@@ -123,10 +123,11 @@ fn fit_pair(a: &CandidateOutcome, b: &CandidateOutcome, round: &Round, start: Pa
     let n_train = round.split.train_points();
     let next_a = a.next.as_ref()?;
     let paths: Vec<String> = next_a.fitted.iter().map(|p| p.path.clone()).collect();
-    let mut aug = b.candidate.augment(&next_a.spec, &next_a.base, &paths)?;
+    let start_temperature = round.data.temperature.as_ref().and_then(|t| t.first().copied());
+    let mut aug = b.candidate.augment(&next_a.spec, &next_a.base, &paths, start_temperature)?;
     let partner: Vec<String> = aug.extra.iter().map(|p| p.path.clone()).collect();
     // The first effect's fixed structural parameters count too.
-    let structural_a = a.candidate.augment(&round.options.spec, round.base, round.fitted_paths).map_or(0, |x| x.structural_parameters);
+    let structural_a = a.candidate.augment(&round.options.spec, round.base, round.fitted_paths, start_temperature).map_or(0, |x| x.structural_parameters);
     let change = format!("{}; {}", a.change, aug.change);
     let mut warm = next_a.fitted.clone();
     let mut options = round.options.clone();

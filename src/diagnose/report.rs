@@ -12,20 +12,20 @@ pub fn format_parameter(path: &str, value: f64, std_error: f64) -> String {
     let se = |scale: f64, digits: usize| {
         if std_error.is_finite() { format!(" ± {:.*}", digits, std_error * scale) } else { " (not identifiable)".into() }
     };
+    let scientific = |unit: &str| {
+        let e = if std_error.is_finite() { format!(" ± {std_error:.2e}") } else { " (not identifiable)".into() };
+        format!("{path} = {value:.3e}{e}{unit}")
+    };
     match name {
         "contact_resistance" | "rc_resistance" => format!("{path} = {:.2}{} mOhm", value * 1e3, se(1e3, 2)),
         "hysteresis_voltage" => format!("{path} = {:.2}{} mV", value * 1e3, se(1e3, 2)),
         "rc_capacitance" => format!("{path} = {value:.4e}{} F", se(1.0, 1)),
-        "diffusivity" => {
-            let e = if std_error.is_finite() { format!(" ± {std_error:.2e}") } else { " (not identifiable)".into() };
-            format!("{path} = {value:.3e}{e} m^2/s")
-        }
+        "diffusivity" => scientific(" m^2/s"),
         "initial_concentration" => format!("{path} = {value:.0}{} mol/m^3", se(1.0, 0)),
         "heat_transfer_coefficient" => format!("{path} = {value:.3}{} W/(m^2 K)", se(1.0, 3)),
-        _ if value != 0.0 && !(1e-2..1e4).contains(&value.abs()) => {
-            let e = if std_error.is_finite() { format!(" ± {std_error:.2e}") } else { " (not identifiable)".into() };
-            format!("{path} = {value:.3e}{e}")
-        }
+        "ambient_temperature" => format!("{path} = {value:.2}{} K", se(1.0, 2)),
+        "exchange_current" => scientific(" A/m^2"),
+        _ if value != 0.0 && !(1e-2..1e4).contains(&value.abs()) => scientific(""),
         _ => format!("{path} = {value:.4}{}", se(1.0, 4)),
     }
 }
