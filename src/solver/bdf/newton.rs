@@ -122,6 +122,7 @@ impl<'a> Newton<'a> {
                 n_iter = k + 1;
                 dae.rhs(t_new, y_new, f);
                 stats.rhs_evals += 1;
+                stats.newton_iters += 1;
                 let mut finite = true;
                 for ((((r, fi), m), ps), dv) in rhs.iter_mut().zip(f.iter()).zip(mass).zip(psi).zip(dvec.iter()) {
                     finite &= fi.is_finite();
@@ -168,6 +169,7 @@ impl<'a> Newton<'a> {
             if converged {
                 return Ok(Some(n_iter));
             }
+            stats.newton_failures += 1;
             if self.jac_current {
                 return Ok(None);
             }
