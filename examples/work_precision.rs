@@ -50,11 +50,12 @@ fn main() {
     let at_ref = simulate(built.model.as_ref(), &mut built.workspace, &protocol, &dense, None).expect("simulate");
     let err = rec.voltage_error(&at_ref.time, &at_ref.voltage);
     println!(
-        "{{\"side\":\"cellstudio\",\"model\":\"{model}\",\"case\":\"{case}\",\"rtol\":{rtol:e},\"solve_s\":{:e},\"points\":{},\"steps\":{},\"rms_mV\":{:e},\"max_mV\":{:e}}}",
+        "{{\"side\":\"cellstudio\",\"model\":\"{model}\",\"case\":\"{case}\",\"rtol\":{rtol:e},\"solve_s\":{:e},\"points\":{},\"steps\":{},\"rms_mV\":{:e},\"max_mV\":{:e},\"stats\":{}}}",
         times[times.len() / 2],
         sol.time.len(),
         sol.stats.steps,
         err.rms * 1e3,
-        err.max * 1e3
+        err.max * 1e3,
+        serde_json::to_string(&sol.stats).expect("stats")
     );
 }

@@ -116,13 +116,18 @@ impl Solution {
 }
 
 /// Solves the algebraic rows `f_alg(y) = 0` for the algebraic states by Newton's method,
-/// holding the differential states fixed.
+/// holding the differential states fixed. Once an update is below `CHORD_FROM` (relative to
+/// the state scales) and ten times smaller than the one before, the factorised Jacobian is kept
+/// (chord iterations: one right-hand side and one solve each) while the updates keep shrinking
+/// tenfold.
 pub fn consistent_initialisation(
     model: &dyn Model,
     ws: &mut Workspace,
     current: f64,
     y: &mut [f64],
 ) -> Result<(), Error> {
+    /// Largest update (relative to the state scales) after which the Jacobian is kept.
+    const CHORD_FROM: f64 = 1e-3;
     let mass = model.mass();
     if mass.iter().all(|&m| m != 0.0) {
         return Ok(());
@@ -130,12 +135,19 @@ pub fn consistent_initialisation(
     let n = y.len();
     let scale = model.scale();
     let mut f = vec![0.0; n];
+    let mut dy = vec![0.0; n];
     let mut g = |yy: &[f64], out: &mut [f64]| model.rhs(yy, current, out);
+    let mut refresh = true;
+    let mut last = f64::INFINITY;
     for _ in 0..50 {
         g(y, &mut f);
-        ws.factorise_algebraic(&mut g, y, &f, scale, mass)?;
-        let mut dy: Vec<f64> = f.iter().zip(mass).map(|(v, &m)| if m == 0.0 { -v } else { 0.0 }).collect();
-        ws.solve(&mut dy);
+        if refresh {
+            ws.factorise_algebraic(&mut g, y, &f, scale, mass)?;
+        }
+        for ((d, v), &m) in dy.iter_mut().zip(&f).zip(mass) {
+            *d = if m == 0.0 { -v } else { 0.0 };
+        }
+        ws.solve_algebraic(&mut dy);
         let mut step = 0.0f64;
         for i in 0..n {
             if mass[i] == 0.0 {
@@ -149,6 +161,8 @@ pub fn consistent_initialisation(
         if step < 1e-12 {
             return Ok(());
         }
+        refresh = !(step < CHORD_FROM && step < 0.1 * last);
+        last = step;
     }
     Err(Error::Solver { t: 0.0, reason: "consistent initialisation of algebraic states did not converge".into() })
 }

@@ -2,6 +2,7 @@
 //! dense output and event location.
 
 pub mod bdf;
+mod algebraic;
 mod dense;
 pub mod jacobian;
 pub mod ordering;

@@ -1,6 +1,7 @@
 //! The integrator's reusable work space for one model build: Jacobian pattern and colouring,
 //! the sparse LU of the Newton matrix, and the algebraic block for consistent initialisation.
 
+use super::algebraic::AlgebraicBlock;
 use super::jacobian::ColouredPattern;
 use super::sparse::SparseSystem;
 use crate::error::Error;
@@ -10,10 +11,9 @@ pub struct Workspace {
     pub(super) pattern: ColouredPattern,
     pub(super) system: SparseSystem,
     pub(super) jac: Vec<f64>,
-    /// The algebraic block (algebraic rows and columns) with its own, smaller colouring, and
-    /// each of its entries' place in `pattern`; built at the first consistent initialisation.
-    algebraic: Option<(ColouredPattern, Vec<usize>)>,
-    algebraic_jac: Vec<f64>,
+    /// The algebraic block (algebraic rows and columns) with its own, smaller colouring and
+    /// LU; built at the first consistent initialisation.
+    algebraic: Option<AlgebraicBlock>,
 }
 
 impl Workspace {
@@ -24,7 +24,7 @@ impl Workspace {
         entries.dedup();
         let system = SparseSystem::new(n, &entries)?;
         let jac = vec![0.0; entries.len()];
-        Ok(Self { pattern: ColouredPattern::new(n, entries), system, jac, algebraic: None, algebraic_jac: Vec::new() })
+        Ok(Self { pattern: ColouredPattern::new(n, entries), system, jac, algebraic: None })
     }
 
     /// Residual evaluations per Jacobian.
@@ -38,10 +38,11 @@ impl Workspace {
         self.system.factor_nnz()
     }
 
-    /// Factorises the Newton matrix of the algebraic rows alone, `diag(mass) + J_aa`
-    /// (identity on differential rows), for consistent initialisation; `f0 = f(y)`. Only the
-    /// algebraic columns are perturbed, so a Jacobian costs the colours of the algebraic block
-    /// (the DFN's potentials) instead of those of the whole pattern.
+    /// Evaluates and factorises the Jacobian block `J_aa` of the algebraic rows with respect
+    /// to the algebraic states at `y` (with `f0 = f(y)`), for consistent initialisation. Only
+    /// the algebraic columns are perturbed and only the block is factorised, so this costs the
+    /// colours and the LU of the algebraic block (the DFN's potentials), not of the whole
+    /// pattern; the Newton matrix and Jacobian of the integrator are left untouched.
     pub fn factorise_algebraic(
         &mut self,
         f: &mut dyn FnMut(&[f64], &mut [f64]),
@@ -50,23 +51,16 @@ impl Workspace {
         scale: &[f64],
         mass: &[f64],
     ) -> Result<(), Error> {
-        let full = &self.pattern.entries;
-        let (block, place) = self.algebraic.get_or_insert_with(|| {
-            let (place, entries): (Vec<usize>, Vec<(usize, usize)>) =
-                full.iter().enumerate().filter(|&(_, &(r, c))| mass[r] == 0.0 && mass[c] == 0.0).unzip();
-            (ColouredPattern::new(y.len(), entries), place)
-        });
-        self.algebraic_jac.resize(place.len(), 0.0);
-        block.evaluate(f, y, f0, scale, &mut self.algebraic_jac);
-        self.jac.iter_mut().for_each(|v| *v = 0.0);
-        for (&k, &v) in place.iter().zip(&self.algebraic_jac) {
-            self.jac[k] = v;
-        }
-        self.system.factorise(mass, -1.0, &self.jac)
+        let block = match &mut self.algebraic {
+            Some(block) => block,
+            None => self.algebraic.insert(AlgebraicBlock::new(&self.pattern.entries, mass)?),
+        };
+        block.factorise(f, y, f0, scale)
     }
 
-    /// Solves with the last factorisation.
-    pub fn solve(&mut self, rhs: &mut [f64]) {
-        self.system.solve(rhs)
+    /// Applies `J_aa^-1` of the last [`Workspace::factorise_algebraic`] to the algebraic
+    /// entries of `rhs` in place (the differential entries are left alone).
+    pub fn solve_algebraic(&mut self, rhs: &mut [f64]) {
+        self.algebraic.as_mut().expect("factorise_algebraic before solve_algebraic").solve(rhs)
     }
 }

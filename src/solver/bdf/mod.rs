@@ -57,11 +57,20 @@ impl Default for SolverOptions {
 /// Counters of the work done, for benchmarks and performance-regression tests.
 #[derive(Clone, Copy, Debug, Default, serde::Serialize)]
 pub struct SolverStats {
+    /// Accepted steps.
     pub steps: usize,
+    /// Rejected step attempts (Newton failures with a fresh Jacobian plus error-test failures).
     pub rejected_steps: usize,
+    /// Right-hand side evaluations, including those of finite-difference Jacobians.
     pub rhs_evals: usize,
     pub jacobian_evals: usize,
     pub factorisations: usize,
+    /// Newton iterations (one linear solve each).
+    pub newton_iters: usize,
+    /// Newton iterations that failed to converge (with a stale or a fresh Jacobian).
+    pub newton_failures: usize,
+    /// Steps rejected by the local error test.
+    pub error_test_failures: usize,
 }
 
 impl SolverStats {
@@ -71,6 +80,9 @@ impl SolverStats {
         self.rhs_evals += other.rhs_evals;
         self.jacobian_evals += other.jacobian_evals;
         self.factorisations += other.factorisations;
+        self.newton_iters += other.newton_iters;
+        self.newton_failures += other.newton_failures;
+        self.error_test_failures += other.error_test_failures;
     }
 }
 

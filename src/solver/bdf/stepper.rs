@@ -182,6 +182,7 @@ impl<'a> Bdf<'a> {
                 self.d.rescale(order, factor);
                 self.n_equal_steps = 0;
                 self.stats.rejected_steps += 1;
+                self.stats.error_test_failures += 1;
                 continue;
             }
             self.t = t_new;
