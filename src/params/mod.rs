@@ -23,7 +23,7 @@ pub use format::{CellFormat, Cylindrical, FormatName, Pouch, Sizing};
 pub use pybop_mass::{MassConvention, PybopDensities};
 pub use mass::{CellBudget, MassBasis, MassComponent, Part, StackAreas};
 pub use overrides::{Override, apply_overrides, from_base_table};
-pub use soc::{StoichiometryWindow, set_initial_soc, stoichiometry_window};
+pub use soc::{StoichiometryWindow, set_initial_soc, set_initial_soc_from, stoichiometry_window};
 pub use lam::{Lam, LamElectrode};
 pub use sei::Sei;
 pub use set::{Cell, Electrode, Electrolyte, FARADAY, GAS_CONSTANT, ParameterSet, Separator, Thermal};

@@ -148,6 +148,15 @@ pub fn stoichiometry_window(p: &ParameterSet) -> Result<StoichiometryWindow, Err
     Ok(StoichiometryWindow { x0, x100, y0: line.positive(x0), y100: line.positive(x100) })
 }
 
+/// [`set_initial_soc`] with a state of charge outside [0, 1] reported under `field` (the
+/// study key it came from, e.g. `cycling.initial_soc`).
+pub fn set_initial_soc_from(p: &mut ParameterSet, soc: f64, field: &str) -> Result<StoichiometryWindow, Error> {
+    set_initial_soc(p, soc).map_err(|e| match e {
+        Error::InvalidParameter { field: f, value, reason } if f == "soc" => Error::InvalidParameter { field: field.into(), value, reason },
+        other => other,
+    })
+}
+
 /// Sets the initial particle concentrations of `p` to state of charge `soc` in [0, 1]
 /// (0 at the lower cut-off, 1 at the upper), conserving the cyclable lithium. Returns the
 /// window used.

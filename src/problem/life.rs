@@ -62,12 +62,7 @@ impl LifeSpec {
     pub fn retention(&self, builder: &mut ModelBuilder, p: &ParameterSet, one_c: f64) -> Result<f64, Error> {
         let mut p = p.clone();
         if let Some(soc) = self.initial_soc {
-            crate::params::set_initial_soc(&mut p, soc).map_err(|e| match e {
-                Error::InvalidParameter { field, value, reason } if field == "soc" => {
-                    Error::InvalidParameter { field: "operating.life.initial_soc".into(), value, reason }
-                }
-                other => other,
-            })?;
+            crate::params::set_initial_soc_from(&mut p, soc, "operating.life.initial_soc")?;
         }
         let protocol = self.protocol(one_c)?;
         let built = builder.build(&p)?;

@@ -129,12 +129,7 @@ impl CycleStudy {
     fn parameters(&self) -> Result<crate::params::ParameterSet, Error> {
         let mut p = self.cell.load()?;
         if let Some(soc) = self.cycling.initial_soc {
-            crate::params::set_initial_soc(&mut p, soc).map_err(|e| match e {
-                Error::InvalidParameter { field, value, reason } if field == "soc" => {
-                    Error::InvalidParameter { field: "cycling.initial_soc".into(), value, reason }
-                }
-                other => other,
-            })?;
+            crate::params::set_initial_soc_from(&mut p, soc, "cycling.initial_soc")?;
         }
         Ok(p)
     }
