@@ -23,10 +23,6 @@ pub mod backward;
 mod baseline;
 pub mod candidates;
 pub mod features;
-
-/// Hold-out RMSE of the best named single effect, in multiples of the size floor, above which
-/// pairs are tried against it.
-const PAIR_TRIGGER: f64 = 3.0;
 pub mod locate;
 mod pairs;
 mod refit_candidate;
@@ -49,6 +45,10 @@ use crate::error::Error;
 use crate::params::ParameterSet;
 use refit_candidate::refit_candidate;
 use crate::problem::fitting::{FitParameter, ModelSpec};
+
+/// Hold-out RMSE of the best named single effect, in multiples of the size floor, above which
+/// pairs are tried against it.
+const PAIR_TRIGGER: f64 = 3.0;
 
 /// A fit parameter for `path` around its value in `base`: log-scaled between a tenth and ten
 /// times a positive value, linear within ±1 around a zero or negative one.
@@ -115,6 +115,9 @@ impl DiagnoseOptions {
 #[derive(Clone, Debug, Serialize)]
 pub struct CandidateOutcome {
     pub candidate: Candidate,
+    /// The second effect, when this outcome is a pair refitted together.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub partner: Option<Candidate>,
     pub name: String,
     pub class: Class,
     pub signature: String,
@@ -266,6 +269,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
         .map(|(c, aug)| {
             let mut out = CandidateOutcome {
                 candidate: c,
+                partner: None,
                 name: c.name().into(),
                 class: c.class(),
                 signature: c.signature().into(),
@@ -322,9 +326,8 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
     // Structure: the whiteness tests reject noise, or the residual is twice the noise level,
     // and what lies above the noise exceeds the size floor.
     let structured = (analysis.structured || baseline.rmse_all > 2.0 * noise) && !no_room;
-    let standings: Vec<select::Standing> =
-        outcomes.iter().map(|c| select::Standing { candidate: c.candidate, comparison: c.comparison, named: c.named }).collect();
-    let mut verdict = select::verdict(&standings, structured, options.margins.min_delta_bic, |a, b| a.separating_experiment(b, &features));
+    let separate = |a: Candidate, b: Candidate| a.separating_experiment(b, &features);
+    let mut verdict = select::verdict(&standings(&outcomes), structured, options.margins.min_delta_bic, separate);
     // No single effect: two may be hiding each other. One effect named that leaves far more
     // than the noise on held-out points may be standing in for two: a pair that beats it by
     // the same margins (against it, not the user's model) replaces it.
@@ -341,9 +344,15 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
             }
             _ => true,
         };
-        if let Some(pair) = pairs::best_pair(&outcomes, &round).filter(beats_single) {
-            verdict = Verdict::Found { candidate: pair.candidate, class: pair.class };
-            outcomes.insert(0, pair);
+        // Pairs that fit alike are a tie, as singles are: one pair's parameter may stand in
+        // for the other's (in the SPMe a conductivity factor acts as a series resistance).
+        let mut named = pairs::named_pairs(&outcomes, &round);
+        named.retain(beats_single);
+        if !named.is_empty() {
+            let n_pairs = select::common_effective_points(named.iter().map(|c| &c.comparison));
+            named.sort_by(|a, b| a.comparison.bic_at(n_pairs).total_cmp(&b.comparison.bic_at(n_pairs)));
+            verdict = select::verdict(&standings(&named), true, options.margins.min_delta_bic, separate);
+            outcomes.splice(0..0, named);
         }
     }
     let residual_after = outcomes.first().and_then(|c| c.fit.as_ref()).map(|f| {
@@ -379,6 +388,11 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
     diagnosis.summary = report::plain_words(&diagnosis);
     diagnosis.seconds = start.elapsed().as_secs_f64();
     Ok(diagnosis)
+}
+
+/// The outcomes' standings for [`select::verdict`], in their order.
+fn standings(outcomes: &[CandidateOutcome]) -> Vec<select::Standing> {
+    outcomes.iter().map(|c| select::Standing { candidate: c.candidate, partner: c.partner, class: c.class, comparison: c.comparison, named: c.named }).collect()
 }
 
 /// Diagnoses repeatedly: after a round names an effect, the next round starts from the model

@@ -25,9 +25,10 @@ pub(super) struct Round<'a> {
     pub noise: f64,
 }
 
-/// The best named pair of `singles` (refitted candidates), as one candidate outcome named
-/// "A together with B"; `None` when no pair clears the margins with plausible values.
-pub(super) fn best_pair(singles: &[CandidateOutcome], round: &Round) -> Option<CandidateOutcome> {
+/// Every named pair of `singles` (refitted candidates), each as one candidate outcome named
+/// "A together with B" (its best fit when it was fitted twice); empty when no pair clears
+/// the margins with plausible values.
+pub(super) fn named_pairs(singles: &[CandidateOutcome], round: &Round) -> Vec<CandidateOutcome> {
     // A thermal candidate fitted to a recorded temperature has evidence of its own even
     // when alone it does not lower the voltage's error (a second effect may hide it).
     let own_evidence = |c: &CandidateOutcome| c.candidate == Candidate::Thermal && round.data.temperature.is_some();
@@ -86,12 +87,15 @@ pub(super) fn best_pair(singles: &[CandidateOutcome], round: &Round) -> Option<C
         .into_par_iter()
         .filter_map(|(k, _)| fit_pair(pairs[*k].0, pairs[*k].1, round, PairStart::Every))
         .collect();
-    first
-        .into_iter()
-        .map(|(_, p)| p)
-        .chain(again)
-        .filter(|p| p.named)
-        .max_by(|p, q| p.comparison.delta_bic.total_cmp(&q.comparison.delta_bic))
+    let mut named: Vec<CandidateOutcome> = Vec::new();
+    for p in first.into_iter().map(|(_, p)| p).chain(again).filter(|p| p.named) {
+        match named.iter_mut().find(|q| (q.candidate, q.partner) == (p.candidate, p.partner)) {
+            Some(q) if rmse_train(&p) < rmse_train(q) => *q = p,
+            Some(_) => {}
+            None => named.push(p),
+        }
+    }
+    named
 }
 
 /// Levenberg-Marquardt iterations of every pair's screening fit.
@@ -182,6 +186,7 @@ fn fit_pair(a: &CandidateOutcome, b: &CandidateOutcome, round: &Round, start: Pa
     let name = format!("{} together with {}", a.candidate.named_by_values(&fit.names, &fit.values, round.base), b.candidate.named_by_values(&fit.names, &fit.values, round.base));
     Some(CandidateOutcome {
         candidate: a.candidate,
+        partner: Some(b.candidate),
         name,
         class: if a.class == b.class { a.class } else { super::Class::MissingPhysics },
         signature: format!("{}; {}", a.signature, b.signature),

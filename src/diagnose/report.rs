@@ -169,11 +169,11 @@ fn truncated(f: &FitOutcome) -> &'static str {
 /// The verdict sentence(s), first in the summary.
 pub fn verdict_in_words(d: &Diagnosis) -> String {
     let b = &d.baseline;
-    let find = |c: Candidate| d.candidates.iter().find(|o| o.candidate == c);
+    let find = |c: Candidate, partner: Option<Candidate>| d.candidates.iter().find(|o| (o.candidate, o.partner) == (c, partner));
     let floor = d.margins.size_floor(d.noise);
     match &d.verdict {
-        Verdict::Found { candidate, class } => {
-            let c = find(*candidate).expect("named candidate");
+        Verdict::Found { candidate, partner, class } => {
+            let c = find(*candidate, *partner).expect("named candidate");
             let f = c.fit.as_ref().expect("named candidate has a fit");
             format!(
                 "{}: {} ({}){}. Adding it cuts the RMSE from {} to {} (hold-out {} -> {}), removing {} RMS against a noise level of {}; ΔBIC = {:.0} with {:.0} effective points, Laplace ln Bayes factor {:.0}{}.",
@@ -193,8 +193,8 @@ pub fn verdict_in_words(d: &Diagnosis) -> String {
                 truncated(f)
             )
         }
-        Verdict::Tie { first, second, class, experiment } => {
-            let (a, c2) = (find(*first).expect("tied"), find(*second).expect("tied"));
+        Verdict::Tie { first, first_partner, second, second_partner, class, experiment } => {
+            let (a, c2) = (find(*first, *first_partner).expect("tied"), find(*second, *second_partner).expect("tied"));
             let (fa, fb) = (a.fit.as_ref().expect("tied fit"), c2.fit.as_ref().expect("tied fit"));
             format!(
                 "{}: {}{} or {}{}: the recording cannot tell them apart (hold-out RMSE {} vs {}, ΔBIC {:.0} vs {:.0}); {} would separate them. Either cuts the RMSE from {} to about {}.",
@@ -263,8 +263,12 @@ pub fn conclusion(rounds: &[Diagnosis]) -> String {
     }
     // A tied round is named by both candidates.
     let name_of = |k: usize, c: &CandidateOutcome| match &rounds[k - 1].verdict {
-        Verdict::Tie { second, .. } => {
-            let other = rounds[k - 1].candidates.iter().find(|o| o.candidate == *second).map_or(second.name().to_string(), |o| o.name.clone());
+        Verdict::Tie { second, second_partner, .. } => {
+            let other = rounds[k - 1]
+                .candidates
+                .iter()
+                .find(|o| (o.candidate, o.partner) == (*second, *second_partner))
+                .map_or(second.name().to_string(), |o| o.name.clone());
             format!("({} or {})", c.name, other)
         }
         _ => c.name.clone(),

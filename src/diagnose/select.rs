@@ -109,10 +109,25 @@ pub fn compare(baseline: &FitOutcome, candidate: &FitOutcome, n: usize) -> Compa
 #[derive(Clone, Debug, Serialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
 pub enum Verdict {
-    /// One candidate explains the mismatch clearly better than the others.
-    Found { candidate: Candidate, class: Class },
-    /// Two candidates explain it equally well: the data cannot tell them apart.
-    Tie { first: Candidate, second: Candidate, class: Class, experiment: String },
+    /// One candidate (with its `partner` when it is a pair of effects) explains the mismatch
+    /// clearly better than the others.
+    Found {
+        candidate: Candidate,
+        #[serde(skip_serializing_if = "Option::is_none")]
+        partner: Option<Candidate>,
+        class: Class,
+    },
+    /// Two candidates (or two pairs) explain it equally well: the data cannot tell them apart.
+    Tie {
+        first: Candidate,
+        #[serde(skip_serializing_if = "Option::is_none")]
+        first_partner: Option<Candidate>,
+        second: Candidate,
+        #[serde(skip_serializing_if = "Option::is_none")]
+        second_partner: Option<Candidate>,
+        class: Class,
+        experiment: String,
+    },
     /// Structure beyond noise that no plausible candidate removes.
     Unexplained,
     /// The residual is at the noise level (or what remains is below the size floor).
@@ -128,6 +143,9 @@ impl Verdict {
 /// One candidate's standing for the verdict.
 pub struct Standing {
     pub candidate: Candidate,
+    /// The second effect of a pair.
+    pub partner: Option<Candidate>,
+    pub class: Class,
     pub comparison: Comparison,
     /// Clears every margin and its fitted values are plausible.
     pub named: bool,
@@ -143,14 +161,29 @@ pub fn verdict(ranked: &[Standing], structured: bool, min_delta_bic: f64, separa
     match named.as_slice() {
         [] if structured => Verdict::Unexplained,
         [] => Verdict::NoMissingPhysics,
-        [best, second, ..] if second.comparison.bic_at(n_eff) - best.comparison.bic_at(n_eff) < min_delta_bic => Verdict::Tie {
-            first: best.candidate,
-            second: second.candidate,
-            class: best.candidate.class(),
-            experiment: separate(best.candidate, second.candidate),
-        },
-        [best, ..] => Verdict::Found { candidate: best.candidate, class: best.candidate.class() },
+        [best, second, ..] if second.comparison.bic_at(n_eff) - best.comparison.bic_at(n_eff) < min_delta_bic => {
+            let (x, y) = told_apart_by(best, second);
+            Verdict::Tie {
+                first: best.candidate,
+                first_partner: best.partner,
+                second: second.candidate,
+                second_partner: second.partner,
+                class: best.class,
+                experiment: separate(x, y),
+            }
+        }
+        [best, ..] => Verdict::Found { candidate: best.candidate, partner: best.partner, class: best.class },
     }
+}
+
+/// The effects in which two standings differ (for two pairs that share an effect, the two
+/// others): the ones an experiment must separate.
+fn told_apart_by(a: &Standing, b: &Standing) -> (Candidate, Candidate) {
+    let members = |s: &Standing| [Some(s.candidate), s.partner].into_iter().flatten().collect::<Vec<_>>();
+    let (ma, mb) = (members(a), members(b));
+    let only_a = ma.iter().find(|c| !mb.contains(c)).copied().unwrap_or(a.candidate);
+    let only_b = mb.iter().find(|c| !ma.contains(c)).copied().unwrap_or(b.candidate);
+    (only_a, only_b)
 }
 
 #[cfg(test)]
@@ -161,7 +194,7 @@ mod tests {
         // Both far better than the user's model (46 mV), as in a contact-resistance case.
         let delta_bic = effective_points * (0.046f64 / rmse_train).powi(2).ln() - parameters * effective_points.ln();
         let comparison = Comparison { delta_bic, ln_bayes_factor: 1e3, holdout_gain: 0.97, explained: 0.044, effective_points, rmse_train, parameters };
-        Standing { candidate, comparison, named: true }
+        Standing { candidate, partner: None, class: candidate.class(), comparison, named: true }
     }
 
     #[test]
@@ -177,5 +210,26 @@ mod tests {
         // A clearly better fit (10 % lower RMSE) is found, not tied.
         let ranked = [standing(Candidate::Kinetics, 0.9e-3, 3.0, 3700.0), standing(Candidate::SeriesResistance, 1.0e-3, 2.0, 3700.0)];
         assert!(matches!(verdict(&ranked, true, 10.0, |_, _| String::new()), Verdict::Found { candidate: Candidate::Kinetics, .. }));
+    }
+
+    #[test]
+    fn pairs_that_fit_alike_tie_and_are_separated_on_the_effects_they_do_not_share() {
+        let pair = |a: Candidate, b: Candidate, rmse_train: f64, parameters: f64| Standing {
+            partner: Some(b),
+            class: Class::MissingPhysics,
+            ..standing(a, rmse_train, parameters, 2090.0)
+        };
+        let ranked = [
+            pair(Candidate::SeriesResistance, Candidate::Thermal, 0.9829e-3, 7.0),
+            pair(Candidate::Thermal, Candidate::ElectrolyteTransport, 0.9828e-3, 8.0),
+        ];
+        let separated = |a: Candidate, b: Candidate| format!("{a:?}/{b:?}");
+        match verdict(&ranked, true, 10.0, separated) {
+            Verdict::Tie { first_partner, second, second_partner, experiment, .. } => {
+                assert_eq!((first_partner, second, second_partner), (Some(Candidate::Thermal), Candidate::Thermal, Some(Candidate::ElectrolyteTransport)));
+                assert_eq!(experiment, "SeriesResistance/ElectrolyteTransport");
+            }
+            other => panic!("not a tie: {other:?}"),
+        }
     }
 }
