@@ -1,5 +1,6 @@
-"""cellstudio from Python: SPM, SPMe and DFN simulation, design studies, fitting, sampling
-and model-discrepancy diagnosis, with PyBaMM's names where one exists.
+"""cellstudio from Python: SPM, SPMe and DFN simulation, design studies, fitting, sampling,
+parameterisation workflows, cycling with ageing, and model-discrepancy diagnosis, with
+PyBaMM's names where one exists.
 
     import cellstudio as cs
     ps = cs.ParameterSet.chen2020()
@@ -14,23 +15,27 @@ message.
 from ._diagnose import diagnose
 from ._errors import CellstudioError
 from ._parameters import ParameterSet
-from ._results import DesignResult, DiagnosisResult, FitResult, ParetoResult, SampleResult, SweepResult
+from ._results import CycleResult, DesignResult, DiagnosisResult, FitResult, ParameterisationResult, ParetoResult, SampleResult, SweepResult
 from ._solution import Solution, simulate
-from ._studies import DesignStudy, fit, sample
+from ._studies import DesignStudy, cycle, fit, parameterise, sample
 
 __all__ = [
     "CellstudioError",
+    "CycleResult",
     "DesignResult",
     "DesignStudy",
     "DiagnosisResult",
     "FitResult",
+    "ParameterisationResult",
     "ParameterSet",
     "ParetoResult",
     "SampleResult",
     "Solution",
     "SweepResult",
+    "cycle",
     "diagnose",
     "fit",
+    "parameterise",
     "sample",
     "simulate",
 ]

@@ -1,6 +1,8 @@
 """Results of the study runs: the outcome as a dict (``.data``) with the useful parts as
 attributes and DataFrames. Plain Python objects, so they pickle."""
 
+import json
+
 
 def _frame(rows):
     import pandas as pd
@@ -129,6 +131,46 @@ class SampleResult(Result):
 
     def to_pandas(self):
         return _frame(self.data["summary"]["parameters"]).set_index("name")
+
+
+class ParameterisationResult(Result):
+    """``cellstudio parameterise``: each stage's results by key (``stages["balancing"]``), the
+    one-line ``summary`` per stage, and ``parameters``, the set the stages leave."""
+
+    @property
+    def stages(self):
+        return self.data["stages"]
+
+    @property
+    def summary(self):
+        return self.data["summary"]
+
+    @property
+    def parameters(self):
+        from ._parameters import ParameterSet
+
+        return ParameterSet.from_json(json.dumps(self.data["parameters"]))
+
+
+class CycleResult(Result):
+    """``cellstudio cycle``: ``to_pandas()`` has a row per cycle (capacities in A h,
+    retention, lithium lost, SEI thickness); ``fade_fit`` the fitted values when asked."""
+
+    @property
+    def cycles(self):
+        return self.data["cycles"]
+
+    @property
+    def retention(self):
+        return self.cycles[-1]["capacity_retention"]
+
+    @property
+    def fade_fit(self):
+        fit = self.data.get("fade_fit")
+        return None if fit is None else {"values": dict(zip(fit["names"], fit["values"])), "std_errors": dict(zip(fit["names"], fit["std_errors"]))}
+
+    def to_pandas(self):
+        return _frame(self.cycles).set_index("cycle")
 
 
 class DiagnosisResult(Result):

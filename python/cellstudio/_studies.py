@@ -8,7 +8,7 @@ import os
 
 from . import _native
 from ._progress import with_progress
-from ._results import DesignResult, FitResult, ParetoResult, SampleResult, SweepResult
+from ._results import CycleResult, DesignResult, FitResult, ParameterisationResult, ParetoResult, SampleResult, SweepResult
 
 
 def _pairs(overrides):
@@ -63,3 +63,15 @@ def sample(study_path, data=None, set=None, out=None, sampler=None, progress=Tru
     (``chains``, ``iterations``, ``warmup``, ``seed``) replace the study's ``[sampler]`` ones."""
     options = [(str(k), int(v)) for k, v in (sampler or {}).items()]
     return SampleResult(json.loads(with_progress(_native.sample, os.fspath(study_path), _path(data), _pairs(set), _path(out), options, progress=progress)))
+
+
+def parameterise(study_path, set=None, out=None, progress=True):
+    """``cellstudio parameterise STUDY``: its stages (pseudo-OCV, balancing, pulses, kinetics,
+    GITT) in order, each feeding the next; ``parameters`` is the set they leave."""
+    return ParameterisationResult(json.loads(with_progress(_native.parameterise, os.fspath(study_path), _pairs(set), _path(out), progress=progress)))
+
+
+def cycle(study_path, set=None, out=None, progress=True):
+    """``cellstudio cycle STUDY``: N cycles with a summary per cycle (``to_pandas()``), and
+    the fade fit (``fade_fit``) when the study has a ``[fit]`` table."""
+    return CycleResult(json.loads(with_progress(_native.cycle, os.fspath(study_path), _pairs(set), _path(out), progress=progress)))

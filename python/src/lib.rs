@@ -42,6 +42,8 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(studies::pareto, m)?)?;
     m.add_function(wrap_pyfunction!(studies::fit, m)?)?;
     m.add_function(wrap_pyfunction!(studies::sample, m)?)?;
+    m.add_function(wrap_pyfunction!(studies::parameterise, m)?)?;
+    m.add_function(wrap_pyfunction!(studies::cycle, m)?)?;
     m.add_function(wrap_pyfunction!(diagnosis::diagnose, m)?)?;
     m.add_function(wrap_pyfunction!(progress, m)?)?;
     Ok(())

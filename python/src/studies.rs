@@ -1,6 +1,6 @@
-//! Design and fitting studies from their TOML files, run as `cellstudio design`, `sweep`,
-//! `pareto`, `fit` and `sample` run them (same library calls, same files written), their
-//! outcomes returned as JSON text for the Python layer.
+//! Studies from their TOML files, run as `cellstudio design`, `sweep`, `pareto`, `fit`,
+//! `sample`, `parameterise` and `cycle` run them (same library calls, same files written),
+//! their outcomes returned as JSON text for the Python layer.
 
 use std::path::{Path, PathBuf};
 
@@ -180,4 +180,46 @@ pub fn sample(py: Python<'_>, path: PathBuf, data: Option<PathBuf>, set: Vec<(St
 pub fn load_design(path: PathBuf, set: Vec<(String, f64)>) -> PyResult<String> {
     let study = design_study(&path, set, None).map_err(to_py)?;
     serde_json::to_string(&study).map_err(|e| to_py(Error::Parse { path: path.display().to_string(), message: e.to_string() }))
+}
+
+/// Runs the parameterisation study's stages (`cellstudio parameterise`): pseudo-OCV,
+/// balancing, pulses, kinetics, GITT, each feeding the next.
+#[pyfunction]
+#[pyo3(signature = (path, set=Vec::new(), out=None))]
+pub fn parameterise(py: Python<'_>, path: PathBuf, set: Vec<(String, f64)>, out: Option<PathBuf>) -> PyResult<String> {
+    use cellstudio::study::parameterise::{ParameterisationStudy, run_parameterisation};
+    detached(py, || {
+        let mut study = ParameterisationStudy::from_file(&path)?.with_overrides(overrides(set))?;
+        if let Some(dir) = out {
+            study.output.dir = dir;
+        }
+        let o = run_parameterisation(&study)?;
+        Ok(outcome(&study.name, &o.warnings, &o.files, json!({
+            "stages": o.stages,
+            "summary": o.summary,
+            "notes": o.notes,
+            "parameters": o.parameters,
+        })))
+    })
+}
+
+/// Cycles the cell as the study says (`cellstudio cycle`), with its fade fit when the study
+/// has a `[fit]` table.
+#[pyfunction]
+#[pyo3(signature = (path, set=Vec::new(), out=None))]
+pub fn cycle(py: Python<'_>, path: PathBuf, set: Vec<(String, f64)>, out: Option<PathBuf>) -> PyResult<String> {
+    use cellstudio::study::cycle::CycleStudy;
+    detached(py, || {
+        let mut study = CycleStudy::from_file(&path)?.with_overrides(overrides(set))?;
+        if let Some(dir) = out {
+            study.output.dir = dir;
+        }
+        let o = study.run(&mut |_| {})?;
+        let warnings = o.fade.as_ref().map(|f| f.warnings()).unwrap_or_default();
+        Ok(outcome(&study.name, &warnings, &o.files, json!({
+            "cycles": o.summaries,
+            "seconds": o.seconds,
+            "fade_fit": o.fade,
+        })))
+    })
 }

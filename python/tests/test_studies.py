@@ -85,3 +85,27 @@ def test_long_runs_draw_the_library_progress_with_tqdm(at_repo, tmp_path, monkey
     assert progress.with_progress(lambda: 42) == 42
     with pytest.raises(ZeroDivisionError):
         progress.with_progress(lambda: 1 / 0)
+
+
+def test_parameterise_gives_the_cli_balance_and_its_parameter_set(at_repo, tmp_path):
+    study = at_repo / "fits" / "param_ocv_c20.toml"
+    result = cs.parameterise(study, out=tmp_path / "py")
+    printed = run_cli(["parameterise", str(study)], cwd=at_repo)
+    assert set(result.stages) == {"ocv", "balancing"}
+    assert all(line in printed for line in result.summary)
+    # The balance was applied: the set the stages leave carries the fitted window.
+    balance = result.stages["balancing"]
+    assert result.parameters != cs.ParameterSet.chen2020()
+    assert balance and (tmp_path / "py" / "parameters.json").is_file()
+
+
+def test_cycle_summaries_and_fade_fit(at_repo, tmp_path):
+    study = at_repo / "examples" / "fade_fit_sei_chen2020.toml"
+    result = cs.cycle(study, out=tmp_path / "py")
+    df = result.to_pandas()
+    assert list(df.index) == list(range(1, len(df) + 1)) and len(df) >= 2
+    assert df["capacity_retention"].iloc[0] == 1.0 and 0.0 < result.retention < 1.0
+    # PyBaMM's SEI exchange current behind the fade curve (tests/data, scripts/make_sei_reference.py).
+    assert result.fade_fit["values"]["sei.exchange_current"] == pytest.approx(1.5e-7, rel=1e-3)
+    with pytest.raises(cs.CellstudioError, match="sei.exchange_curren"):
+        cs.cycle(study, set={"sei.exchange_curren": 1e-7}, out=tmp_path / "bad")

@@ -52,6 +52,10 @@ pub struct ParameterisationOutcome {
     pub summary: Vec<String>,
     pub notes: Vec<String>,
     pub warnings: Vec<String>,
+    /// Each stage's results by its key (`ocv`, `balancing`, ...), as `parameterisation.json`.
+    pub stages: serde_json::Value,
+    /// The parameter set as the stages left it, as `parameters.json`.
+    pub parameters: crate::params::ParameterSet,
 }
 
 /// One stage's report section, console line, notes and JSON.
@@ -164,9 +168,10 @@ pub fn run_parameterisation(study: &ParameterisationStudy) -> Result<Parameteris
     // The set as the stages left it, readable as `[cell] parameter_set` by later studies.
     write_output(&dir, "parameters.json", serde_json::to_string_pretty(&stages.parameters).expect("serialisable"), &mut files)?;
     md.push_str("\nThe parameter set as the stages left it: `parameters.json` (use it as `[cell] parameter_set` of a later study).\n");
-    write_output(&dir, "parameterisation.json", serde_json::to_string_pretty(&json).expect("serialisable"), &mut files)?;
+    let stages_json = serde_json::Value::Object(json);
+    write_output(&dir, "parameterisation.json", serde_json::to_string_pretty(&stages_json).expect("serialisable"), &mut files)?;
     let md = super::fit::with_notes(md, &notes, &warnings);
     write_output(&dir, "report.md", md, &mut files)?;
     let files = out.commit(&files)?;
-    Ok(ParameterisationOutcome { files, summary, notes, warnings })
+    Ok(ParameterisationOutcome { files, summary, notes, warnings, stages: stages_json, parameters: stages.parameters })
 }
