@@ -167,11 +167,16 @@ impl PlatingLayer {
     /// Appends its Jacobian pattern: each of its rows reads the negative particle's last two
     /// shells `surface` (through `phi_s - phi_e`), all its states, and `extra` states (the
     /// electrolyte, the SEI, the volume fraction, the temperature); the last shell's row
-    /// reads all its states (the reaction's flux).
+    /// reads all its states and `extra` (the reaction's flux). (Leaving out the last shell's
+    /// dependence on the electrolyte, through `j0_pl = F k c_e`, costs the integrator's
+    /// exact conservation of lithium in the SPMe: 7e-11.)
     pub fn push_pattern(&self, pattern: &mut Vec<(usize, usize)>, surface: [usize; 2], extra: &[usize]) {
+        if self.start.is_none() {
+            return;
+        }
         for k in self.indices() {
             pattern.extend(surface.iter().chain(extra).copied().chain(self.indices()).map(|c| (k, c)));
-            pattern.push((surface[1], k));
         }
+        pattern.extend(self.indices().chain(extra.iter().copied()).map(|c| (surface[1], c)));
     }
 }
