@@ -1,5 +1,5 @@
-//! Cycling studies (`cellstudio cycle STUDY.toml`): a cell and model (typically with an SEI
-//! or loss-of-active-material submodel) through `N` repetitions of one cycle's protocol, a progress-bar tick per cycle,
+//! Cycling studies (`cellstudio cycle STUDY.toml`): a cell and model (typically with an SEI,
+//! loss-of-active-material or lithium plating submodel) through `N` repetitions of one cycle's protocol, a progress-bar tick per cycle,
 //! and per-cycle summaries written as `cycles.csv`, `cycles.json` and a retention plot
 //! into a staged output folder (all or nothing).
 //!
