@@ -11,9 +11,8 @@
 use cellstudio::geometry::MeshSizes;
 use cellstudio::models::submodels::{PlatingModel, SeiModel};
 use cellstudio::models::{ModelBuilder, ModelKind, Submodels};
-use cellstudio::params::{ParameterSet, chen2020};
+use cellstudio::params::chen2020;
 use cellstudio::protocol::{Protocol, Step, experiment};
-use cellstudio::simulation::cycling::run_cycles;
 use cellstudio::simulation::{SimOptions, simulate};
 
 const CYCLE: [&str; 5] = ["Discharge at 1C until 3.0 V", "Rest for 10 minutes", "Charge at 2C until 4.1 V", "Hold at 4.1 V until C/20", "Rest for 10 minutes"];
@@ -29,12 +28,6 @@ mod common;
 
 fn rows(file: &str) -> Vec<Vec<f64>> {
     common::csv_rows("plating-submodel", file)
-}
-
-fn options(p: &ParameterSet) -> SimOptions {
-    let mut opts = SimOptions::for_cell(p);
-    (opts.solver.rtol, opts.solver.atol) = (1e-8, 1e-8);
-    opts
 }
 
 fn builder(kind: ModelKind, plating: PlatingModel, sei: SeiModel) -> ModelBuilder {
@@ -71,7 +64,7 @@ fn compare(kind: ModelKind, plating: PlatingModel, sei: SeiModel, name: &str) ->
     let total0 = total(&model.initial_state());
     let (mut lithium, mut conservation) = ([0.0f64; 2], 0.0f64);
     let hold = |s: usize| s % CYCLE.len() == 3;
-    let run = common::step_by_step(model, &mut built.workspace, &steps, &rec, 6, hold, &options(&p), |sol, k, r| {
+    let run = common::step_by_step(model, &mut built.workspace, &steps, &rec, 6, hold, &common::tight_options(&p), |sol, k, r| {
         let y = &sol.states[k];
         let li = model.plated_lithium(y).unwrap();
         lithium[0] = lithium[0].max((li.plated_mol - r[3]).abs() / largest);
@@ -110,7 +103,7 @@ fn plating_spme_matches_pybamm() {
     check(ModelKind::Spme);
 }
 
-/// The per-cycle summaries of [`run_cycles`] (discharge capacity, lithium lost to plating,
+/// The per-cycle summaries of `run_cycles` (discharge capacity, lithium lost to plating,
 /// dead lithium) against PyBaMM's over the same experiment.
 #[test]
 fn plating_cycle_summaries_match_pybamm() {
@@ -118,9 +111,7 @@ fn plating_cycle_summaries_match_pybamm() {
     for kind in [ModelKind::Spm, ModelKind::Spme] {
         for (plating, sei, name) in OPTIONS {
             let reference = rows(&format!("{}_{name}_cycles.csv", kind.to_string().to_lowercase()));
-            let mut b = builder(kind, plating, sei);
-            let built = b.build(&p).unwrap();
-            let summaries = run_cycles(built.model.as_ref(), &mut built.workspace, &cycle(), CYCLES, &options(&p), &mut |_| {}).unwrap();
+            let summaries = common::cycle_summaries(kind, Submodels { plating, sei, ..Default::default() }, &p, &cycle(), CYCLES);
             let final_lost = reference[CYCLES - 1][2];
             let (mut dq, mut dli, mut ddead) = (0.0f64, 0.0f64, 0.0f64);
             for (s, r) in summaries.iter().zip(&reference) {
@@ -150,7 +141,7 @@ fn zero_rate_constant_is_the_model_without_plating() {
         let run = |plating| {
             let mut b = builder(kind, plating, SeiModel::None);
             let built = b.build(&p).unwrap();
-            let opts = SimOptions { keep_states: true, ..options(&p) };
+            let opts = SimOptions { keep_states: true, ..common::tight_options(&p) };
             let sol = simulate(built.model.as_ref(), &mut built.workspace, &protocol, &opts, None).unwrap();
             let plated = sol.states.iter().map(|y| built.model.plated_lithium(y).map_or(0.0, |l| l.total_mol())).fold(0.0f64, |m, x| m.max(x.abs()));
             (sol, plated)
