@@ -136,6 +136,9 @@ fn run(cli: Cli) -> Result<(), Error> {
             if let (Some(am), Some(li)) = (last.active_material_lost, last.lithium_lost_to_lam_mol) {
                 println!("active material  {:.4} % lost (negative), {:.4} % (positive), with {:.4e} / {:.4e} mol of lithium", 100.0 * am[0], 100.0 * am[1], li[0], li[1]);
             }
+            if let (Some(lost), Some(dead)) = (last.lithium_lost_to_plating_mol, last.dead_lithium_mol) {
+                println!("plated lithium   {lost:.4e} mol lost to plating, {dead:.4e} mol of it dead");
+            }
             if let Some(fade) = &out.fade {
                 warn(&fade.warnings());
                 println!("fade fit         RMSE {:.3} mA h (start {:.3} mA h), {} iterations, {} simulations", fade.rmse_fitted_ah * 1e3, fade.rmse_start_ah * 1e3, fade.iterations, fade.simulations);

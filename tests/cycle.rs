@@ -13,6 +13,11 @@ fn study(s: &Scratch, edit: impl Fn(String) -> String) -> String {
     s.write("study.toml", &text).display().to_string()
 }
 
+/// The rows of a `cycles.csv` (header skipped), an empty column as NaN.
+fn numbers(csv: &str) -> Vec<Vec<f64>> {
+    csv.lines().skip(1).map(|l| l.split(',').map(|x| if x.is_empty() { f64::NAN } else { x.parse().unwrap() }).collect()).collect()
+}
+
 #[test]
 fn cycle_study_writes_a_summary_per_cycle() {
     let s = Scratch::new("cycle");
@@ -21,7 +26,7 @@ fn cycle_study_writes_a_summary_per_cycle() {
     succeeds(&o);
     let csv = std::fs::read_to_string(s.path("out/cycle_sei/cycles.csv")).unwrap();
     // Columns of absent submodels (here loss of active material) are empty.
-    let rows: Vec<Vec<f64>> = csv.lines().skip(1).map(|l| l.split(',').map(|x| if x.is_empty() { f64::NAN } else { x.parse().unwrap() }).collect()).collect();
+    let rows = numbers(&csv);
     assert_eq!(rows.len(), 6);
     assert_eq!(rows[0][4], 1.0, "retention is relative to the first cycle");
     for w in rows.windows(2) {
@@ -73,11 +78,35 @@ fn cycle_study_reports_active_material_lost() {
     let header: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
     let col = |name: &str| header.iter().position(|h| *h == name).unwrap_or_else(|| panic!("no column {name}"));
     let lam = ["negative_active_material_lost", "positive_active_material_lost", "lithium_lost_to_negative_lam_mol", "lithium_lost_to_positive_lam_mol"].map(col);
-    let rows: Vec<Vec<f64>> = csv.lines().skip(1).map(|l| l.split(',').map(|x| x.parse().unwrap()).collect()).collect();
+    let rows = numbers(&csv);
     assert_eq!(rows.len(), 4);
     for w in rows.windows(2) {
         assert!(lam.iter().all(|&c| w[1][c] > w[0][c] && w[0][c] > 0.0), "{w:?}");
     }
     let o = run(&s.0, &["cycle", &path, "--set", "lam.positive.poisson_ratio=0.7"]);
     fails_with(&o, &["lam.positive.poisson_ratio", "0.7"]);
+}
+
+/// The plating example (`examples/cycle_plating_chen2020.toml`): its last two columns (after
+/// `steps`) hold the lithium lost to plating and the dead lithium, which grows each cycle;
+/// a bad plating parameter is an error naming it.
+#[test]
+fn cycle_study_reports_plated_lithium() {
+    let s = Scratch::new("cycle-plating");
+    let example = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/cycle_plating_chen2020.toml");
+    let text = std::fs::read_to_string(example).unwrap().replace("cycles = 20", "cycles = 3");
+    let path = s.write("study.toml", &text).display().to_string();
+    let o = run(&s.0, &["cycle", &path]);
+    succeeds(&o);
+    let csv = std::fs::read_to_string(s.path("out/cycle_plating/cycles.csv")).unwrap();
+    let header: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
+    assert_eq!(header[header.len() - 3..], ["steps", "lithium_lost_to_plating_mol", "dead_lithium_mol"]);
+    let rows = numbers(&csv);
+    let (lost, dead) = (header.len() - 2, header.len() - 1);
+    assert_eq!(rows.len(), 3);
+    for w in rows.windows(2) {
+        assert!(w[1][dead] > w[0][dead] && w[0][dead] > 0.0 && w[1][lost] >= w[1][dead], "{w:?}");
+    }
+    let o = run(&s.0, &["cycle", &path, "--set", "plating.transfer_coefficient=1.5"]);
+    fails_with(&o, &["plating.transfer_coefficient", "1.5"]);
 }

@@ -14,7 +14,6 @@ use cellstudio::models::submodels::{LamModel, SeiModel};
 use cellstudio::models::{ModelBuilder, ModelKind, Submodels};
 use cellstudio::params::{FARADAY, ParameterSet, chen2020};
 use cellstudio::protocol::{Protocol, Step, experiment};
-use cellstudio::simulation::cycling::run_cycles;
 use cellstudio::simulation::SimOptions;
 
 const CYCLE: [&str; 5] = ["Discharge at 1C until 3.0 V", "Rest for 10 minutes", "Charge at 1C until 4.1 V", "Hold at 4.1 V until C/20", "Rest for 10 minutes"];
@@ -42,9 +41,7 @@ fn params() -> ParameterSet {
 }
 
 fn options() -> SimOptions {
-    let mut opts = SimOptions::for_cell(&params());
-    (opts.solver.rtol, opts.solver.atol) = (1e-8, 1e-8);
-    opts
+    common::tight_options(&params())
 }
 
 fn builder(kind: ModelKind, lam: LamModel, sei: SeiModel) -> ModelBuilder {
@@ -132,7 +129,7 @@ fn lam_spme_matches_pybamm() {
     check(ModelKind::Spme);
 }
 
-/// The per-cycle summaries of [`run_cycles`] (discharge capacity, active material lost,
+/// The per-cycle summaries of `run_cycles` (discharge capacity, active material lost,
 /// lithium lost with it) against PyBaMM's per-cycle discharge capacity, electrode capacities
 /// and losses over the same experiment.
 #[test]
@@ -141,9 +138,7 @@ fn lam_cycle_summaries_match_pybamm() {
     for kind in [ModelKind::Spm, ModelKind::Spme] {
         for (lam, sei, name) in OPTIONS {
             let reference = rows(&format!("{}_{name}_cycles.csv", kind.to_string().to_lowercase()));
-            let mut b = builder(kind, lam, sei);
-            let built = b.build(&p).unwrap();
-            let summaries = run_cycles(built.model.as_ref(), &mut built.workspace, &cycle(), CYCLES, &options(), &mut |_| {}).unwrap();
+            let summaries = common::cycle_summaries(kind, Submodels { lam, sei, ..Default::default() }, &p, &cycle(), CYCLES);
             let capacity0 = [&p.negative, &p.positive].map(|e| e.active_fraction * e.thickness * p.cell.area() * e.max_concentration * FARADAY / 3600.0);
             let (mut dq, mut dam, mut dli) = (0.0f64, 0.0f64, 0.0f64);
             for (s, r) in summaries.iter().zip(&reference) {

@@ -1,6 +1,6 @@
 //! Battery models sharing one state/output interface: SPM, SPMe, DFN and a Thevenin ECM,
 //! with switchable submodels (contact resistance, lumped thermal, SEI growth, loss of active
-//! material).
+//! material, lithium plating).
 
 pub mod builder;
 pub mod dfn;
@@ -81,15 +81,22 @@ pub struct Submodels {
     /// Loss of active material (`lam` parameters) in the SPM and SPMe: four extra states
     /// (volume fraction and lithium lost per electrode); "reaction-driven" needs `sei`.
     pub lam: submodels::LamModel,
+    /// Lithium plating on the negative electrode (`plating` parameters) in the SPM and SPMe:
+    /// two extra states (plated and dead lithium) in the SPM, two per negative x volume in
+    /// the SPMe.
+    pub plating: submodels::PlatingModel,
 }
 
 impl Submodels {
     /// Checks the submodels can be built on `kind`; the error names `model.submodels.NAME`.
     pub fn check(&self, kind: ModelKind) -> Result<(), crate::error::Error> {
-        use submodels::{LamModel, SeiModel};
+        use submodels::{LamModel, PlatingModel, SeiModel};
         let invalid = |name: &str, reason: String| crate::error::Error::InvalidSetting { field: format!("model.submodels.{name}"), reason };
         if kind == ModelKind::Dfn && self.lam != LamModel::None {
             return Err(invalid("lam", format!("{:?} loss of active material is built for the SPM and SPMe only (x-averaged): use model = \"spm\" or \"spme\"", self.lam)));
+        }
+        if kind == ModelKind::Dfn && self.plating != PlatingModel::None {
+            return Err(invalid("plating", format!("{:?} lithium plating is built for the SPM and SPMe only: use model = \"spm\" or \"spme\"", self.plating)));
         }
         if self.lam.reaction() && self.sei == SeiModel::None {
             return Err(invalid("lam", format!("{:?} loss of active material is driven by the SEI reaction: it needs an SEI submodel (e.g. sei = \"reaction limited\")", self.lam)));
@@ -139,6 +146,11 @@ pub trait Model: Send + Sync {
     /// The electrodes' active material (volume fractions, capacities, lithium lost with
     /// it); `None` without a loss-of-active-material submodel.
     fn active_material(&self, _y: &[f64]) -> Option<submodels::lam::ActiveMaterial> {
+        None
+    }
+    /// Lithium plated on the negative electrode, reversible and dead (mol); `None` without a
+    /// plating submodel.
+    fn plated_lithium(&self, _y: &[f64]) -> Option<submodels::plating::PlatedLithium> {
         None
     }
     /// Open-circuit voltage at the particles' average stoichiometries (V).

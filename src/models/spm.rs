@@ -3,14 +3,16 @@
 //!
 //! States: negative shells `c_n` (mol/m^3), positive shells `c_p`, the SEI concentration
 //! (mol/m^3) when an SEI submodel is on, the LAM states when a loss-of-active-material
-//! submodel is on (the shells then hold `eps c`, see [`LamLayer`]), then `T` (K) when the
+//! submodel is on (the shells then hold `eps c`, see [`LamLayer`]), the plated and dead
+//! lithium concentrations (mol/m^3) when a plating submodel is on, then `T` (K) when the
 //! thermal submodel is on.
 
 use std::borrow::Cow;
 
 use super::electrochem::{Electrochem, Side};
 use super::kinetics::{overpotential, particle_factor};
-use super::submodels::{LamLayer, SeiLayer};
+use super::submodels::plating::Site;
+use super::submodels::{LamLayer, PlatingLayer, SeiLayer};
 use super::submodels::thermal::bernardi_heat;
 use super::{Model, PhysicsModel, push_tridiagonal};
 use crate::params::ParameterSet;
@@ -20,6 +22,7 @@ pub struct Spm {
     pub ec: Electrochem,
     sei: SeiLayer,
     lam: LamLayer,
+    plating: PlatingLayer,
     mass: Vec<f64>,
     scale: Vec<f64>,
 }
@@ -29,15 +32,17 @@ impl Spm {
         let (nn, np) = (ec.disc.sphere_n.len(), ec.disc.sphere_p.len());
         let sei = SeiLayer::new(ec.submodels.sei, nn + np, 1);
         let lam = LamLayer::new(ec.submodels.lam, nn + np + sei.len());
-        let n = nn + np + sei.len() + lam.len() + usize::from(ec.submodels.thermal);
+        let plating = PlatingLayer::new(ec.submodels.plating, nn + np + sei.len() + lam.len(), 1);
+        let n = nn + np + sei.len() + lam.len() + plating.len() + usize::from(ec.submodels.thermal);
         let mut scale = vec![lam.shell_scale(&ec, Side::Negative); nn];
         scale.extend(std::iter::repeat_n(lam.shell_scale(&ec, Side::Positive), np));
         scale.extend(sei.indices().map(|_| SeiLayer::initial_concentration(&ec)));
         lam.push_scale(&ec, &mut scale);
+        plating.push_scale(&ec, &mut scale);
         if ec.submodels.thermal {
             scale.push(ec.params.thermal.ambient_temperature);
         }
-        Self { ec, sei, lam, mass: vec![1.0; n], scale }
+        Self { ec, sei, lam, plating, mass: vec![1.0; n], scale }
     }
 
     fn split<'a>(&self, y: &'a [f64]) -> (&'a [f64], &'a [f64]) {
@@ -76,16 +81,19 @@ impl Spm {
         ec.ocp(side, c_s) + overpotential(j, j0, e.charge_transfer_coefficient, temp) + film
     }
 
-    /// Writes the SEI state's rate into `out` and returns the side-reaction current density
-    /// (A/m^2); zero without SEI.
-    fn sei_rhs(&self, y: &[f64], sn: f64, current: f64, out: &mut [f64]) -> f64 {
-        if self.sei.len() == 0 {
-            return 0.0;
+    /// Writes the SEI and plating states' rates into `out` and returns the side-reaction
+    /// current densities (A/m^2) of the SEI and of plating; zeros without them.
+    fn side_rhs(&self, y: &[f64], sn: f64, current: f64, out: &mut [f64]) -> [f64; 2] {
+        if self.sei.len() + self.plating.len() == 0 {
+            return [0.0; 2];
         }
         let delta_phi = self.surface_potential_difference(Side::Negative, sn, y, current);
-        let (ec, side) = (&self.ec, Side::Negative);
+        let (ec, side, temp) = (&self.ec, Side::Negative, self.temperature(y));
         let (j, a) = (self.lam.interfacial_current(ec, side, y, current), self.lam.surface_area_density(ec, side, y));
-        self.sei.rhs(ec, y, std::iter::once(delta_phi), j, a, self.temperature(y), out)
+        let j_sei = self.sei.rhs(ec, y, std::iter::once(delta_phi), j, a, temp, out);
+        let site = Site { delta_phi, electrolyte_concentration: ec.params.electrolyte.initial_concentration, sei_thickness: self.sei.volume_thickness(ec, y, 0, a) };
+        let j_plating = self.plating.rhs(ec, y, std::iter::once(site), self.sei.film(ec, y, j, a), a, temp, out);
+        [j_sei, j_plating]
     }
 }
 
@@ -113,10 +121,13 @@ impl Model for Spm {
         for (start, len) in [(0, nn), (nn, np)] {
             push_tridiagonal(&mut p, start, len);
         }
-        let t = nn + np + self.sei.len() + self.lam.len();
-        // The SEI reads the temperature and the negative volume fraction (its surface area).
+        let t = nn + np + self.sei.len() + self.lam.len() + self.plating.len();
+        // The SEI reads the temperature and the negative volume fraction (its surface area);
+        // plating reads them and the SEI (its film and thickness).
         let sei_reads: Vec<usize> = self.ec.submodels.thermal.then_some(t).into_iter().chain(self.lam.indices().take(1)).collect();
         self.sei.push_pattern(&mut p, [nn - 2, nn - 1], &sei_reads);
+        let plating_reads: Vec<usize> = sei_reads.iter().copied().chain(self.sei.indices()).collect();
+        self.plating.push_pattern(&mut p, [nn - 2, nn - 1], &plating_reads);
         let lam_reads: Vec<usize> = self.sei.indices().chain(self.ec.submodels.thermal.then_some(t)).collect();
         self.lam.push_pattern(&mut p, [0..nn, nn..nn + np], &lam_reads);
         if self.ec.submodels.thermal {
@@ -136,6 +147,7 @@ impl Model for Spm {
         y.extend(std::iter::repeat_n(self.lam.initial_shell(&self.ec, Side::Positive), self.ec.disc.sphere_p.len()));
         self.sei.push_initial(&self.ec, &mut y);
         self.lam.push_initial(&self.ec, &mut y);
+        self.plating.push_initial(&self.ec, &mut y);
         if self.ec.submodels.thermal {
             y.push(p.thermal.initial_temperature);
         }
@@ -149,10 +161,10 @@ impl Model for Spm {
         let temp = self.temperature(y);
         let (cn, cp) = self.particles(y);
         let (sn, _) = ec.single_particle_surfaces(&cn, &cp);
-        let j_sei = self.sei_rhs(y, sn, current, out);
+        let [j_sei, j_plating] = self.side_rhs(y, sn, current, out);
         let a_j_sei = self.lam.surface_area_density(ec, Side::Negative, y) * j_sei;
         let rates = self.lam.rhs(ec, [&cn, &cp], a_j_sei, out);
-        for (side, c, range, side_reaction, rate) in [(Side::Negative, &cn, 0..nn, j_sei, rates[0]), (Side::Positive, &cp, nn..nn + np, 0.0, rates[1])] {
+        for (side, c, range, side_reaction, rate) in [(Side::Negative, &cn, 0..nn, j_sei + j_plating, rates[0]), (Side::Positive, &cp, nn..nn + np, 0.0, rates[1])] {
             let flux = Electrochem::molar_flux(self.lam.interfacial_current(ec, side, y, current) - side_reaction);
             self.lam.particle_rhs(ec, side, y, c, flux, rate, temp, &mut out[range]);
         }
@@ -200,6 +212,10 @@ impl Model for Spm {
 
     fn active_material(&self, y: &[f64]) -> Option<super::submodels::lam::ActiveMaterial> {
         self.lam.summary(&self.ec, y)
+    }
+
+    fn plated_lithium(&self, y: &[f64]) -> Option<super::submodels::plating::PlatedLithium> {
+        self.plating.lithium(&self.ec, y)
     }
 
     fn fields(&self, y: &[f64]) -> Vec<super::Field> {

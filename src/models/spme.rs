@@ -6,14 +6,16 @@
 //! States: negative shells, positive shells (mol/m^3), electrolyte concentration over all x
 //! volumes (mol/m^3), the SEI concentration (mol/m^3) when an SEI submodel is on, the LAM
 //! states when a loss-of-active-material submodel is on (the shells then hold `eps c`, see
-//! [`LamLayer`]), then `T` (K) when the thermal submodel is on.
+//! [`LamLayer`]), the plated then the dead lithium concentration (mol/m^3) of each negative
+//! x volume when a plating submodel is on, then `T` (K) when the thermal submodel is on.
 
 use std::borrow::Cow;
 
 use super::electrochem::{Electrochem, Side};
 use super::electrolyte::ElectrolyteOp;
 use super::kinetics::{electrolyte_factor, log_mean, mean_overpotential};
-use super::submodels::{LamLayer, SeiLayer};
+use super::submodels::plating::Site;
+use super::submodels::{LamLayer, PlatingLayer, SeiLayer};
 use super::submodels::thermal::bernardi_heat;
 use super::{Model, PhysicsModel, push_tridiagonal};
 use crate::params::{FARADAY, GAS_CONSTANT, ParameterSet};
@@ -28,6 +30,7 @@ pub struct Spme {
     consts: VoltageConsts,
     sei: SeiLayer,
     lam: LamLayer,
+    plating: PlatingLayer,
     mass: Vec<f64>,
     scale: Vec<f64>,
 }
@@ -126,18 +129,20 @@ impl Spme {
         let p = &ec.params;
         let sei = SeiLayer::new(ec.submodels.sei, nn + np + nx, ec.disc.x_n.centres.len());
         let lam = LamLayer::new(ec.submodels.lam, nn + np + nx + sei.len());
+        let plating = PlatingLayer::new(ec.submodels.plating, nn + np + nx + sei.len() + lam.len(), ec.disc.x_n.centres.len());
         let mut scale = vec![lam.shell_scale(&ec, Side::Negative); nn];
         scale.extend(std::iter::repeat_n(lam.shell_scale(&ec, Side::Positive), np));
         scale.extend(std::iter::repeat_n(p.electrolyte.initial_concentration, nx));
         scale.extend(sei.indices().map(|_| SeiLayer::initial_concentration(&ec)));
         lam.push_scale(&ec, &mut scale);
+        plating.push_scale(&ec, &mut scale);
         if ec.submodels.thermal {
             scale.push(p.thermal.ambient_temperature);
         }
         let mass = vec![1.0; scale.len()];
         let ionic_current_shape = Self::ionic_current_shape(&ec, &electrolyte);
         let consts = VoltageConsts::new(&ec, &electrolyte);
-        Self { ec, electrolyte, ionic_current_shape, consts, sei, lam, mass, scale }
+        Self { ec, electrolyte, ionic_current_shape, consts, sei, lam, plating, mass, scale }
     }
 
     /// The leading-order ionic current `x/L_n`, 1, `(L - x)/L_p` at the volume centres,
@@ -268,18 +273,24 @@ impl Spme {
         ec.ocp(side, c_s) + mean_overpotential(j, j0, alpha, temp) + film
     }
 
-    /// Writes the SEI states' rates into `out` and returns the x-averaged side-reaction
-    /// current density (A/m^2); zero without SEI. PyBaMM's SPMe does not x-average side
-    /// reactions: each negative volume grows its own SEI with its own `phi_s - phi_e`.
-    fn sei_rhs(&self, y: &[f64], sn: f64, current: f64, temp: f64, out: &mut [f64]) -> f64 {
-        if self.sei.len() == 0 {
-            return 0.0;
+    /// Writes the SEI and plating states' rates into `out` and returns the x-averaged
+    /// side-reaction current densities (A/m^2) of the SEI and of plating; zeros without them.
+    /// PyBaMM's SPMe does not x-average side reactions: each negative volume grows its own
+    /// SEI and plates its own lithium with its own `phi_s - phi_e` (and `c_e`).
+    fn side_rhs(&self, y: &[f64], sn: f64, current: f64, temp: f64, out: &mut [f64]) -> [f64; 2] {
+        if self.sei.len() + self.plating.len() == 0 {
+            return [0.0; 2];
         }
         let (_, _, ce) = self.blocks(y);
         let delta_phi = self.surface_potential_difference(Side::Negative, sn, y, current, temp);
         let (ec, side) = (&self.ec, Side::Negative);
         let (j, a) = (self.lam.interfacial_current(ec, side, y, current), self.lam.surface_area_density(ec, side, y));
-        self.sei.rhs(ec, y, self.negative_potential_profile(delta_phi, ce, current, temp), j, a, temp, out)
+        let j_sei = self.sei.rhs(ec, y, self.negative_potential_profile(delta_phi, ce, current, temp), j, a, temp, out);
+        let sites = self.negative_potential_profile(delta_phi, ce, current, temp).zip(&ce[self.consts.negative.clone()]).enumerate().map(|(i, (delta_phi, &c_e))| {
+            Site { delta_phi, electrolyte_concentration: c_e, sei_thickness: self.sei.volume_thickness(ec, y, i, a) }
+        });
+        let j_plating = self.plating.rhs(ec, y, sites, self.sei.film(ec, y, j, a), a, temp, out);
+        [j_sei, j_plating]
     }
 
     /// Solid-phase ohmic drop between the x-averaged and current-collector potentials (V).
@@ -324,12 +335,15 @@ impl Model for Spme {
         for (start, len) in [(0, nn), (nn, np), (nn + np, nx)] {
             push_tridiagonal(&mut p, start, len);
         }
-        let t = nn + np + nx + self.sei.len() + self.lam.len();
+        let t = nn + np + nx + self.sei.len() + self.lam.len() + self.plating.len();
         // The SEI reads the electrolyte everywhere (through the conductivity at its mean),
         // and the negative volume fraction (its surface area).
         let electrolyte: Vec<usize> = (nn + np..nn + np + nx).chain(self.ec.submodels.thermal.then_some(t)).collect();
         let sei_reads: Vec<usize> = electrolyte.iter().copied().chain(self.lam.indices().take(1)).collect();
         self.sei.push_pattern(&mut p, [nn - 2, nn - 1], &sei_reads);
+        // Plating reads the same and the SEI (its film and thickness).
+        let plating_reads: Vec<usize> = sei_reads.iter().copied().chain(self.sei.indices()).collect();
+        self.plating.push_pattern(&mut p, [nn - 2, nn - 1], &plating_reads);
         // LAM reads the SEI's states and inputs when reaction-driven, else only the temperature.
         let lam_reads: Vec<usize> = if self.ec.submodels.lam.reaction() { self.sei.indices().chain(electrolyte).collect() } else { self.ec.submodels.thermal.then_some(t).into_iter().collect() };
         self.lam.push_pattern(&mut p, [0..nn, nn..nn + np], &lam_reads);
@@ -348,6 +362,7 @@ impl Model for Spme {
         y.extend(std::iter::repeat_n(p.electrolyte.initial_concentration, self.electrolyte.len()));
         self.sei.push_initial(&self.ec, &mut y);
         self.lam.push_initial(&self.ec, &mut y);
+        self.plating.push_initial(&self.ec, &mut y);
         if self.ec.submodels.thermal {
             y.push(p.thermal.initial_temperature);
         }
@@ -363,10 +378,10 @@ impl Model for Spme {
         let (_, _, ce) = self.blocks(y);
         let (cn, cp) = self.particles(y);
         let (sn, _) = ec.single_particle_surfaces(&cn, &cp);
-        let j_sei = self.sei_rhs(y, sn, current, temp, out);
+        let [j_sei, j_plating] = self.side_rhs(y, sn, current, temp, out);
         let a_j_sei = self.lam.surface_area_density(ec, Side::Negative, y) * j_sei;
         let rates = self.lam.rhs(ec, [&cn, &cp], a_j_sei, out);
-        for (side, c, range, side_reaction, rate) in [(Side::Negative, &cn, 0..nn, j_sei, rates[0]), (Side::Positive, &cp, nn..nn + np, 0.0, rates[1])] {
+        for (side, c, range, side_reaction, rate) in [(Side::Negative, &cn, 0..nn, j_sei + j_plating, rates[0]), (Side::Positive, &cp, nn..nn + np, 0.0, rates[1])] {
             let flux = Electrochem::molar_flux(self.lam.interfacial_current(ec, side, y, current) - side_reaction);
             self.lam.particle_rhs(ec, side, y, c, flux, rate, temp, &mut out[range]);
         }
@@ -406,6 +421,10 @@ impl Model for Spme {
 
     fn active_material(&self, y: &[f64]) -> Option<super::submodels::lam::ActiveMaterial> {
         self.lam.summary(&self.ec, y)
+    }
+
+    fn plated_lithium(&self, y: &[f64]) -> Option<super::submodels::plating::PlatedLithium> {
+        self.plating.lithium(&self.ec, y)
     }
 
     fn temperature(&self, y: &[f64]) -> f64 {

@@ -107,5 +107,6 @@ pub fn chen2020() -> ParameterSet {
         },
         sei: super::sei::Sei::default(),
         lam: super::lam::Lam::default(),
+        plating: super::plating::Plating::default(),
     }
 }

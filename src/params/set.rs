@@ -268,6 +268,10 @@ pub struct ParameterSet {
     /// PyBaMM's OKane2022 constants when absent.
     #[serde(default)]
     pub lam: super::lam::Lam,
+    /// Lithium plating (read only when a plating submodel is on); PyBaMM's OKane2022 values
+    /// when absent.
+    #[serde(default)]
+    pub plating: super::plating::Plating,
 }
 
 impl ParameterSet {
@@ -325,7 +329,8 @@ impl ParameterSet {
         positive("thermal.negative_collector_heat_capacity", t.negative_collector_heat_capacity)?;
         positive("thermal.positive_collector_heat_capacity", t.positive_collector_heat_capacity)?;
         self.sei.validate()?;
-        self.lam.validate()
+        self.lam.validate()?;
+        self.plating.validate()
     }
 
     /// Reads a parameter set from a TOML file and validates it: a whole set, or a base set
@@ -442,6 +447,7 @@ impl ParameterSet {
             },
             "sei" => self.sei.field_mut(name).ok_or_else(unknown)?,
             "lam" => self.lam.field_mut(name).ok_or_else(unknown)?,
+            "plating" => self.plating.field_mut(name).ok_or_else(unknown)?,
             _ => return Err(unknown()),
         };
         Ok(slot)

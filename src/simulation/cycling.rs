@@ -38,6 +38,13 @@ pub struct CycleSummary {
     /// Lithium lost with each electrode's active material (negative, positive) since the
     /// start, at the cycle's end (mol); `None` without a loss-of-active-material submodel.
     pub lithium_lost_to_lam_mol: Option<[f64; 2]>,
+    /// Lithium lost to plating since the start, reversible and dead, at the cycle's end
+    /// (mol), PyBaMM's "Loss of lithium to negative lithium plating [mol]"; `None` without a
+    /// plating submodel.
+    pub lithium_lost_to_plating_mol: Option<f64>,
+    /// Dead lithium since the start at the cycle's end (mol), the irreversible part of
+    /// `lithium_lost_to_plating_mol`; `None` without a plating submodel.
+    pub dead_lithium_mol: Option<f64>,
     /// Terminal voltage at the cycle's end (V).
     pub end_voltage_v: f64,
     /// Integrator steps of the cycle.
@@ -62,6 +69,7 @@ pub fn run_cycles(
     let mut y = model.initial_state();
     let (li0, sei0) = (model.solid_lithium(&y), model.sei_lithium(&y));
     let am0 = model.active_material(&y);
+    let plated0 = model.plated_lithium(&y);
     let mut summaries: Vec<CycleSummary> = Vec::with_capacity(n);
     let mut t = 0.0;
     for k in 1..=n {
@@ -88,6 +96,8 @@ pub fn run_cycles(
             sei_thickness_m: model.sei_thickness(&y),
             active_material_lost: am0.zip(model.active_material(&y)).map(|(a0, a)| [0, 1].map(|k| 1.0 - a.fraction[k] / a0.fraction[k])),
             lithium_lost_to_lam_mol: model.active_material(&y).map(|a| a.lithium_lost_mol),
+            lithium_lost_to_plating_mol: plated0.zip(model.plated_lithium(&y)).map(|(p0, p)| p.total_mol() - p0.total_mol()),
+            dead_lithium_mol: plated0.zip(model.plated_lithium(&y)).map(|(p0, p)| p.dead_mol - p0.dead_mol),
             end_voltage_v: sol.final_voltage(),
             steps: sol.stats.steps,
         };

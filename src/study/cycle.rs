@@ -1,5 +1,5 @@
-//! Cycling studies (`cellstudio cycle STUDY.toml`): a cell and model (typically with an SEI
-//! or loss-of-active-material submodel) through `N` repetitions of one cycle's protocol, a progress-bar tick per cycle,
+//! Cycling studies (`cellstudio cycle STUDY.toml`): a cell and model (typically with an SEI,
+//! loss-of-active-material or lithium plating submodel) through `N` repetitions of one cycle's protocol, a progress-bar tick per cycle,
 //! and per-cycle summaries written as `cycles.csv`, `cycles.json` and a retention plot
 //! into a staged output folder (all or nothing).
 //!
@@ -193,22 +193,25 @@ impl CycleStudy {
     }
 }
 
-/// The summaries as CSV, one row per cycle (SI units, thickness in m; the SEI's and LAM's
-/// columns empty without them).
+/// The summaries as CSV, one row per cycle (SI units, thickness in m; the SEI's, LAM's and
+/// plating's columns empty without them; plating's come last, after `steps`).
 fn summary_csv(summaries: &[CycleSummary]) -> String {
     use std::fmt::Write;
     let mut s = String::from(
         "cycle,end_time_s,discharge_capacity_Ah,charge_capacity_Ah,capacity_retention,lithium_lost_to_sei_mol,lithium_inventory_lost,sei_thickness_m,\
-         negative_active_material_lost,positive_active_material_lost,lithium_lost_to_negative_lam_mol,lithium_lost_to_positive_lam_mol,end_voltage_V,steps\n",
+         negative_active_material_lost,positive_active_material_lost,lithium_lost_to_negative_lam_mol,lithium_lost_to_positive_lam_mol,end_voltage_V,steps,\
+         lithium_lost_to_plating_mol,dead_lithium_mol\n",
     );
+    let one = |v: Option<f64>| v.map_or(String::new(), |x| format!("{x:.6e}"));
     let pair = |v: Option<[f64; 2]>| v.map_or([String::new(), String::new()], |v| v.map(|x| format!("{x:.6e}")));
     for c in summaries {
-        let l = c.sei_thickness_m.map_or(String::new(), |l| format!("{l:.6e}"));
+        let l = one(c.sei_thickness_m);
+        let (plated, dead) = (one(c.lithium_lost_to_plating_mol), one(c.dead_lithium_mol));
         let [am_n, am_p] = pair(c.active_material_lost);
         let [li_n, li_p] = pair(c.lithium_lost_to_lam_mol);
         let _ = writeln!(
             s,
-            "{},{},{:.9},{:.9},{:.9},{:.6e},{:.6e},{l},{am_n},{am_p},{li_n},{li_p},{:.6},{}",
+            "{},{},{:.9},{:.9},{:.9},{:.6e},{:.6e},{l},{am_n},{am_p},{li_n},{li_p},{:.6},{},{plated},{dead}",
             c.cycle, c.end_time_s, c.discharge_capacity_ah, c.charge_capacity_ah, c.capacity_retention, c.lithium_lost_to_sei_mol, c.lithium_inventory_lost, c.end_voltage_v, c.steps
         );
     }

@@ -47,6 +47,21 @@ pub fn csv_rows(folder: &str, file: &str) -> Vec<Vec<f64>> {
     text.lines().skip(1).map(|l| l.split(',').map(|x| x.parse().unwrap()).collect()).collect()
 }
 
+/// Options for `p` at rtol = atol = 1e-8, the tolerance of the ageing reference curves.
+pub fn tight_options(p: &ParameterSet) -> SimOptions {
+    let mut opts = SimOptions::for_cell(p);
+    (opts.solver.rtol, opts.solver.atol) = (1e-8, 1e-8);
+    opts
+}
+
+/// The per-cycle summaries of `n` repetitions of `cycle` on `kind` with `submodels` on `p`
+/// (default mesh, [`tight_options`]), as the ageing tests compare them with PyBaMM's.
+pub fn cycle_summaries(kind: ModelKind, submodels: Submodels, p: &ParameterSet, cycle: &Protocol, n: usize) -> Vec<cellstudio::simulation::cycling::CycleSummary> {
+    let mut b = ModelBuilder::new(kind, submodels, MeshSizes::default());
+    let built = b.build(p).expect("build");
+    cellstudio::simulation::cycling::run_cycles(built.model.as_ref(), &mut built.workspace, cycle, n, &tight_options(p), &mut |_| {}).expect("cycles")
+}
+
 /// Differences from a reference over a run of steps.
 pub struct StepGaps {
     /// Voltage differences outside the holds, 20 s and more from each step's ends (mV).

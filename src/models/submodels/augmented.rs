@@ -156,6 +156,10 @@ impl Model for Augmented {
         self.base.active_material(&y[..self.n_base])
     }
 
+    fn plated_lithium(&self, y: &[f64]) -> Option<super::plating::PlatedLithium> {
+        self.base.plated_lithium(&y[..self.n_base])
+    }
+
     fn plating_margin(&self, y: &[f64], current: f64) -> Option<f64> {
         self.base.plating_margin(&y[..self.n_base], current)
     }

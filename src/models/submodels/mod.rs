@@ -1,14 +1,16 @@
 //! Optional physics added to a model: lumped thermal balance (contact resistance is a
 //! single series term applied in each model's voltage), states appended by a wrapper
-//! (series RC element, OCV hysteresis), and SEI growth and loss of active material inside the
-//! single-particle models.
+//! (series RC element, OCV hysteresis), and SEI growth, loss of active material and lithium
+//! plating inside the single-particle models.
 
 pub mod augmented;
 pub mod lam;
+pub mod plating;
 pub mod sei;
 pub mod thermal;
 
 pub use augmented::Augmented;
 pub use lam::{LamLayer, LamModel};
+pub use plating::{PlatingLayer, PlatingModel};
 pub use sei::{SeiLayer, SeiModel};
 pub use thermal::LumpedThermal;

@@ -117,6 +117,13 @@ impl SeiLayer {
         Self::thickness_of(ec, y[k], a)
     }
 
+    /// Thickness (m) of the layer of negative x volume `i` (of the whole electrode when
+    /// x-averaged) on surface area density `a` (1/m); `L_sei_0` when off (PyBaMM's
+    /// "constant" SEI, which its partially reversible plating reads).
+    pub fn volume_thickness(&self, ec: &Electrochem, y: &[f64], i: usize, a: f64) -> f64 {
+        self.start.map_or(ec.params.sei.initial_thickness, |s| Self::thickness_of(ec, y[s + i], a))
+    }
+
     /// Side-reaction current density `j_sei` (A/m^2) of the layer in state `k` (an index
     /// into `y`) at `phi_s - phi_e` = `delta_phi` (V), with the film carrying current density
     /// `j_film` (A/m^2: the total in the single-particle models, the intercalation current in
