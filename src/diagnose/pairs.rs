@@ -4,8 +4,9 @@
 //! at all (or was fitted to a recorded temperature) is refitted together, the second added
 //! to the first's model, and counted and judged as a single candidate is (both effects'
 //! parameters and structural changes count). Every pair is screened with a few iterations
-//! from its first start; the three best by training error continue to convergence from
-//! there, and the three best whose fit is doubtful are refitted from every start.
+//! from no effect (as a single starts); the three best by training error continue to
+//! convergence from there, and the three best whose fit is doubtful are refitted from every
+//! start.
 
 use rayon::prelude::*;
 
@@ -133,7 +134,18 @@ fn fit_pair(a: &CandidateOutcome, b: &CandidateOutcome, round: &Round, start: Pa
     // The first effect's fixed structural parameters count too.
     let structural_a = a.candidate.augment(&round.options.spec, round.base, round.fitted_paths, start_temperature).map_or(0, |x| x.structural_parameters);
     let change = format!("{}; {}", a.change, aug.change);
+    // Both effects start from no effect (the user's parameters at their fitted values, the
+    // candidates' at the set's), as a single does: the first effect's own fit may be a
+    // compromise that stood in for the second (a lost negative capacity for lost lithium)
+    // and would hold the pair in that false minimum.
     let mut warm = next_a.fitted.clone();
+    for p in warm.iter_mut() {
+        let start = match round.baseline.names.iter().position(|n| *n == p.path) {
+            Some(k) => round.baseline.values[k],
+            None => round.base.get(&p.path).unwrap_or(p.initial),
+        };
+        p.initial = start.clamp(p.lower, p.upper);
+    }
     let mut options = round.options.clone();
     let restarts: Option<&[Vec<f64>]> = match start {
         PairStart::Screen(lm) => {
