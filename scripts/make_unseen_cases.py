@@ -890,7 +890,191 @@ def batch_o(root):
                initial_soc=0.6, seed=118, period=2, compare=lion.SPM())
 
 
-BATCHES = {"u": batch_u, "v": batch_v, "w": batch_w, "x": batch_x, "y": batch_y, "z": batch_z, "q": batch_q, "r": batch_r, "s": batch_s, "t": batch_t, "p": batch_p, "o": batch_o}
+def hill_regen_drive(seed, capacity_A_h=5.0):
+    """A regenerative-braking-heavy drive as a 1 s cell current (A, discharge positive), no
+    current step anywhere (ramps between 1 s points): a 10 min climb (accelerations to 2-3C,
+    cruising at 1-1.6C), a 10 min descent held by regeneration (charge at 0.6-1.4C for 30-90 s,
+    braking spikes to 2C charge, coasting on 0.05C of auxiliaries) and 10 min of town
+    stop-and-go (idle on auxiliaries, accelerations to 2-2.5C, cruising at 0.5C, regenerative
+    braking to 1.5C charge)."""
+    rng = np.random.default_rng(seed)
+    c = capacity_A_h
+    cur = [0.0]
+
+    def ramp(to, seconds):
+        start = cur[-1]
+        for k in range(1, seconds + 1):
+            cur.append(start + (to - start) * k / seconds)
+
+    def hold(level, seconds, wobble=0.0):
+        for _ in range(seconds):
+            cur.append(level + (rng.normal(0.0, wobble) if wobble else 0.0))
+
+    while len(cur) < 600:
+        ramp(rng.uniform(2.0, 3.0) * c, int(rng.integers(5, 9)))
+        level = rng.uniform(1.0, 1.6) * c
+        ramp(level, 3)
+        hold(level, int(rng.integers(20, 51)), 0.05 * c)
+        ramp(0.2 * c, 3)
+        hold(0.2 * c, 5)
+    while len(cur) < 1200:
+        level = -rng.uniform(0.6, 1.4) * c
+        ramp(level, 4)
+        hold(level, int(rng.integers(30, 91)), 0.05 * c)
+        ramp(-2.0 * c, 2)
+        hold(-2.0 * c, int(rng.integers(4, 7)))
+        ramp(0.05 * c, 4)
+        hold(0.05 * c, int(rng.integers(10, 21)))
+    while len(cur) < 1800:
+        ramp(0.02 * c, 2)
+        hold(0.02 * c, int(rng.integers(10, 21)))
+        ramp(rng.uniform(2.0, 2.5) * c, 6)
+        ramp(0.5 * c, 3)
+        hold(0.5 * c, int(rng.integers(15, 31)), 0.03 * c)
+        peak = -1.5 * c
+        ramp(peak, int(rng.integers(3, 5)))
+        ramp(0.02 * c, int(rng.integers(2, 5)))
+    cur = cur[:1800] + [0.0] * 2
+    ramp(0.0, 1)
+    i = np.array(cur)
+    i[-3:] = 0.0
+    return np.column_stack([np.arange(len(i), dtype=float), i])
+
+
+def batch_n(root):
+    """Thirteenth batch, made blind (a helper session, judged once on the frozen binary
+    /work/bin/frozen-n, sha256 21b42b6ae80b, before anything else): protocols not used before
+    (a CC-CV charge whose CV tail runs to C/50, a partial-SOC window cycled at 1C, a pulse train
+    at 20 % SOC, a C/20 discharge segment at the end of a 1C discharge, a hill-and-town drive
+    with long regenerative charging and no current step, constant-power steps at 40 degC as a
+    control, a constant-power discharge of a poorly cooled cell, a descending-rate staircase at
+    10 degC); concealed parameters that are not candidates but map onto a family (the positive
+    electrode's electronic conductivity -> an ohmic series resistance; the initial salt
+    concentration of the electrolyte -> electrolyte transport; the cooling surface area ->
+    thermal); two pairs not used before (kinetics + negative diffusivity; positive LAM +
+    lithium loss); DFN data handed to the SPM and to the SPMe; and an SPM control at 40 degC.
+    Lithium and active-material loss are accepted only by their own words, as since batch r.
+    No case hides an effect outside every family.
+
+    First run (2026-11-26, frozen binary /work/bin/frozen-n, sha256 21b42b6ae80b, load average
+    1.2 when the cases were made, 4.0 at the start of the judge, 1.6-6.3 during (5-6.3 through
+    n1, 1.6-4 after), 1.9 after, on 2 cores shared with other sessions): 4 of 8.
+    n2 the pair in round 1 at the truth (rate constants 0.399x / 0.402x, negative diffusivity
+    0.200x, positive 1.000x), 63.30 -> 0.99 mV, 47 s; n6 no missing physics (1.04 mV), 0 s; n7
+    thermal (h 4.48 W/(m2 K) on the full cooling area, the truth's 10 on half of it being 5;
+    ambient fitted 291.62 K) tied with electrolyte properties (diffusivity 2.26x, conductivity
+    1.76x, both faster), 25.28 -> 5.80 mV, then SPMe -> DFN (0.98 mV), 42 s; n8 particle
+    diffusivities (positive 0.250x, negative 0.998x), 76.26 -> 1.00 mV, 16 s. Missed: n1 timed
+    out at 900 s (a DFN candidate on 2.6 h with a 89 min CV tail, 4677 points, at load 5-6;
+    rerun alone afterwards, not counted: 1361 s at load 2-6, a tie, RC 12.17 mOhm / 692 F or
+    series/contact resistance 12.14 mOhm, 26.65 -> 1.90 mV, which the judge would accept, then
+    electrolyte properties 0.83x / 0.87x, 1.54 mV, then unexplained);
+    n3 named series/contact resistance 6.72 mOhm together with an RC (5.44 mOhm, 3284 F,
+    time constant 17.9 s), 20.00 -> 1.50 mV, then kinetics (0.84x / 0.55x, 1.06 mV), 41 s:
+    the SPM's electrolyte candidates are structure switches with nominal properties (SPM ->
+    SPMe 4.94 mV, SPM -> DFN 5.62 mV, only the SOC fitted) and cannot take up the lower salt
+    concentration, while the four-parameter contact + RC pair mimics an electrolyte's ohmic
+    drop and its tens-of-seconds polarisation under 10 s pulses; after it, the switches made
+    things worse (-9 %, -10 % hold-out). n4 "unexplained" (17.42 mV after the initial SOC was
+    fitted to 0.928), 8 s: the best single, positive LAM (fractions 0.936x negative, 0.892x
+    positive, SOC 0.993), cut the training RMSE 20.06 -> 6.26 mV but raised the hold-out 2.58
+    -> 5.87 mV (the held-out points, 2 of 8 equal time blocks, miss the first 1900 s, where 95 %
+    of the baseline's squared error lies, and sit where the SOC-fitted baseline is close); lithium inventory alone
+    fitted the negative concentration at the truth (28021 vs 28074 mol/m3) but left 15.26 mV;
+    no pair was tried, since no single was named. n5 named particle diffusivity (negative
+    0.41x, positive 0.97x), 2.09 -> 1.43 mV, then kinetics (1.03x / 0.95x, 1.25 mV), then
+    unexplained, 346 s: OCV hysteresis was withheld as "not identifiable: needs rests after
+    both charge and discharge (this recording has 1 and 0)" (the drive has no rest, only idle
+    on auxiliaries, and ends on a discharge), and the RC that fitted best (1.00 mV, time
+    constant 762 s, the hysteresis state's slow relaxation) was implausible by its range; the
+    hysteresis is small here (4.1 mV RMS in PyBaMM, 2.1 mV once the SOC is fitted)."""
+    cap = 5.0
+    p = scaled(chen(), "Positive electrode conductivity [S.m-1]", 0.1)
+    write_case(root, "n1_positive_conductivity_cccv_long_tail_dfn", lion.DFN(), p,
+               ["Rest for 10 minutes", "Charge at 1C until 4.2 V", "Hold at 4.2 V until C/50", "Rest for 30 minutes"],
+               {"effect": "contact_resistance", "candidate_model": "dfn", "accept": ["contact", "series resistance"],
+                "note": "electronic conductivity of the positive electrode x0.1 (0.018 S/m instead of 0.18: a degraded carbon-binder "
+                        "network); not a candidate parameter, its physics is an ohmic loss in series with the cell (the contact "
+                        "/ series resistance family). From 20 % SOC: 10 min rest, 1C CC charge to 4.2 V, CV hold to C/50 (a long "
+                        "tail), 30 min rest; sampled every 2 s; DFN data and model"},
+               initial_soc=0.2, seed=121, period=2, compare=lion.DFN())
+    p = chen()
+    for side in ["Negative", "Positive"]:
+        p = scaled(p, f"{side} electrode exchange-current density [A.m-2]", 0.4)
+    p = scaled(p, "Negative particle diffusivity [m2.s-1]", 0.2)
+    window = ["Discharge at 1C for 20 minutes", "Rest for 10 minutes", "Charge at 1C for 20 minutes", "Rest for 10 minutes"]
+    write_case(root, "n2_kinetics_and_diffusivity_soc_window", lion.SPMe(), p, ["Rest for 5 minutes"] + window * 3,
+               {"effect": "kinetics+solid_diffusivity", "candidate_model": "spme", "accept": ["kinetic|charge transfer|exchange", "diffusiv"],
+                "note": "exchange currents x0.4 (both electrodes) and negative particle diffusivity x0.2; a partial-SOC window cycled "
+                        "at 1C from 60 % SOC (3 x (1C discharge for 20 min, 10 min rest, 1C charge for 20 min, 10 min rest): "
+                        "between about 60 and 27 % SOC); sampled every 2 s; SPMe data"},
+               initial_soc=0.6, seed=122, period=2, compare=lion.SPMe())
+    p = chen()
+    p.update({"Initial concentration in electrolyte [mol.m-3]": 700.0})
+    train = ["Discharge at 2C for 10 seconds", "Rest for 30 seconds", "Charge at 1C for 10 seconds", "Rest for 30 seconds"]
+    write_case(root, "n3_salt_depleted_pulse_train_low_soc_dfn_data_spm", lion.DFN(), p, ["Rest for 5 minutes"] + train * 15 + ["Rest for 20 minutes"],
+               {"effect": "electrolyte_transport", "candidate_model": "spm", "accept": ["electrolyte"],
+                "note": "initial salt concentration of the electrolyte 700 mol/m3 instead of 1000 (salt consumed; lower conductivity "
+                        "and faster depletion); not a candidate parameter, its physics is the electrolyte transport family, which "
+                        "the SPM also lacks structurally (DFN data handed to the SPM). From 20 % SOC: 5 min rest, a pulse train of "
+                        "15 x (2C discharge for 10 s, 30 s rest, 1C charge for 10 s, 30 s rest), 20 min rest; sampled every 1 s"},
+               initial_soc=0.2, seed=123, compare=lion.SPM())
+    p = scaled(chen(), "Positive electrode active material volume fraction", 0.92)
+    p = scaled(p, "Initial concentration in negative electrode [mol.m-3]", 0.94)
+    write_case(root, "n4_lam_positive_and_inventory_c20_tail", lion.SPMe(), p,
+               ["Rest for 10 minutes", "Discharge at 1C for 50 minutes or until 2.7 V", "Rest for 30 minutes",
+                "Discharge at C/20 until 2.7 V", "Rest for 30 minutes"],
+               {"effect": "active_material_loss+lithium_inventory_loss", "candidate_model": "spme", "accept": ["active material", "inventory"],
+                "note": "8 % loss of positive active material and 6 % less lithium in the negative electrode (the commonest pair of "
+                        "an aged cell); from full: 10 min rest, 1C for 50 min (or to 2.7 V), 30 min rest, the rest of the capacity "
+                        "at C/20 to 2.7 V (a quasi-OCV segment across the end of discharge), 30 min rest; sampled every 10 s; SPMe data"},
+               seed=124, period=10, compare=lion.SPMe())
+    p = chen()
+    p.update({"Ambient temperature [K]": 308.15, "Initial temperature [K]": 308.15})
+    with_negative_hysteresis(p, 0.010)
+    drive = hill_regen_drive(125, cap)
+    write_case(root, "n5_hysteresis_hill_regen_drive_35C", lion.SPMe(options={"open-circuit potential": ("one-state hysteresis", "single")}), p,
+               ["Rest for 5 minutes", pybamm.step.current(drive), "Rest for 20 minutes"],
+               {"effect": "hysteresis", "candidate_model": "spme", "accept": ["hysteresis"], "ambient_temperature_K": 308.15,
+                "note": "one-state hysteresis of the negative OCP, +-10 mV (decay rate 10, initial state 0), at 35 degC "
+                        "(isothermal); from 60 % SOC: 5 min rest, a 30 min drive (10 min climb to 3C, net discharge; 10 min descent "
+                        "held by regeneration at 0.6-1.4C charge with 2C braking spikes, net charge; 10 min town stop-and-go with "
+                        "regenerative braking; current ramps between 1 s points, no step), 20 min rest; sampled every 1 s; SPMe data"},
+               initial_soc=0.6, seed=125, compare=lion.SPMe())
+    p = chen()
+    p.update({"Ambient temperature [K]": 313.15, "Initial temperature [K]": 313.15})
+    power = ["Rest for 10 minutes", "Discharge at 12 W for 20 minutes", "Rest for 15 minutes", "Discharge at 30 W for 3 minutes",
+             "Rest for 15 minutes", "Charge at 8 W for 25 minutes", "Rest for 15 minutes", "Discharge at 20 W for 10 minutes", "Rest for 20 minutes"]
+    write_case(root, "n6_control_constant_power_40C_spm", lion.SPM(), p, power,
+               {"effect": "none", "candidate_model": "spm", "accept": ["no missing"], "ambient_temperature_K": 313.15,
+                "note": "negative control at 40 degC (isothermal, not recorded): SPM data and model, constant-power steps from 80 % "
+                        "SOC (12 W for 20 min, 30 W for 3 min, 8 W charge for 25 min, 20 W for 10 min, rests of 15-20 min); cycler "
+                        "artefacts (irregular sampling, 3 mA current noise, 0.1 mV resolution)"},
+               initial_soc=0.8, seed=126, cycler=CYCLER, compare=lion.SPM())
+    p = scaled(chen(), "Cell cooling surface area [m2]", 0.5)
+    p.update({"Ambient temperature [K]": 293.15, "Initial temperature [K]": 293.15})
+    write_case(root, "n7_poor_cooling_constant_power_dfn_data_spme", lion.DFN(options={"thermal": "lumped"}), p,
+               ["Rest for 5 minutes", "Discharge at 20 W until 2.7 V", "Rest for 30 minutes"],
+               {"effect": "thermal", "candidate_model": "spme", "accept": ["thermal", "heat"], "ambient_temperature_K": 293.15,
+                "note": "lumped self-heating with half of the cooling surface (a cell packed in a module, half its can cooled): "
+                        "h = 10 W/(m2 K) as set, cooling area x0.5; not a candidate parameter (the set's h is), its physics is the "
+                        "thermal family. At 20 degC: 5 min rest, constant-power 20 W discharge from full to 2.7 V, 30 min rest; "
+                        "temperature recorded (0.05 K noise); sampled every 2 s; DFN data handed to the isothermal SPMe "
+                        "(electrolyte transport beside thermal is right too)"},
+               temperature=True, seed=127, period=2, compare=lion.SPMe())
+    p = scaled(chen(), "Positive particle diffusivity [m2.s-1]", 0.25)
+    p.update({"Ambient temperature [K]": 283.15, "Initial temperature [K]": 283.15})
+    stairs = ["Rest for 5 minutes", "Discharge at 2C for 4 minutes", "Discharge at 1C for 8 minutes", "Discharge at C/2 for 16 minutes",
+              "Discharge at C/5 for 20 minutes", "Rest for 30 minutes", "Discharge at 1C until 2.7 V", "Rest for 30 minutes"]
+    write_case(root, "n8_diffusivity_positive_rate_staircase_10C_dfn", lion.DFN(), p, stairs,
+               {"effect": "solid_diffusivity", "candidate_model": "dfn", "accept": ["diffusiv"], "ambient_temperature_K": 283.15,
+                "note": "positive particle diffusivity x0.25 at 10 degC (isothermal, not recorded); from full: 5 min rest, a "
+                        "descending-rate staircase with no rest between stages (2C for 4 min, 1C for 8 min, C/2 for 16 min, C/5 "
+                        "for 20 min), 30 min rest, 1C to 2.7 V, 30 min rest; sampled every 3 s; DFN data and model"},
+               seed=128, period=3, compare=lion.DFN())
+
+
+BATCHES = {"u": batch_u, "v": batch_v, "w": batch_w, "x": batch_x, "y": batch_y, "z": batch_z, "q": batch_q, "r": batch_r, "s": batch_s, "t": batch_t, "p": batch_p, "o": batch_o, "n": batch_n}
 
 if __name__ == "__main__":
     root = sys.argv[1] if len(sys.argv) > 1 else "out/unseen-cases"
