@@ -492,3 +492,44 @@ fn o6_conductivity_and_self_heating_tie_with_contact_and_self_heating_spme() {
     assert!((value("electrolyte.conductivity_factor") / 0.5 - 1.0).abs() < 0.01, "{}", rounds[0].summary);
     assert!((value("thermal.heat_transfer_coefficient") / 15.0 - 1.0).abs() < 0.01, "{}", rounds[0].summary);
 }
+
+/// The fitted value of `path` in the first round's named candidate.
+fn first_fitted(rounds: &[Diagnosis], path: &str) -> f64 {
+    let fit = rounds[0].best().and_then(|c| c.fit.as_ref()).expect("a named candidate holds its fit");
+    fit.names.iter().position(|n| n == path).map(|i| fit.values[i]).unwrap_or_else(|| panic!("{path} is not fitted: {}", rounds[0].summary))
+}
+
+#[test]
+fn n3_salt_depleted_electrolyte_in_dfn_data_given_to_the_spm() {
+    // Blind batch n (scripts/make_unseen_cases.py n): initial salt 700 instead of 1000 mol/m3.
+    // Missed on its first run (contact + RC named): an SPM's electrolyte candidates brought
+    // the DFN with the set's electrolyte only; the properties candidate now brings it with
+    // its diffusivity and conductivity factors refitted.
+    run_case("diagnosis-extra/n3_salt_depleted_pulse_train_low_soc_dfn_data_spm");
+}
+
+#[test]
+fn n4_positive_active_material_and_lithium_lost_together_spme() {
+    // Blind batch n: 8 % positive LAM with 6 % less lithium, 1C then a C/20 tail. Missed on
+    // its first run ("unexplained"): the pair's fit started from the LAM single's compromise
+    // (a lost negative capacity standing in for the lithium) and stopped there; pairs now
+    // start from no effect.
+    let rounds = run_case("diagnosis-extra/n4_lam_positive_and_inventory_c20_tail");
+    // PyBaMM's truth: positive fraction 0.665 x 0.92 = 0.6118, negative initial
+    // concentration 29866 x 0.94 = 28074 mol/m3.
+    let fraction = first_fitted(&rounds, "positive.active_fraction");
+    let lithium = first_fitted(&rounds, "negative.initial_concentration");
+    assert!((fraction / 0.6118 - 1.0).abs() < 1e-3, "positive fraction {fraction}: {}", rounds[0].summary);
+    assert!((lithium / 28074.0 - 1.0).abs() < 1e-3, "negative initial concentration {lithium}: {}", rounds[0].summary);
+}
+
+#[test]
+fn n5_hysteresis_under_a_drive_with_one_rest_spme() {
+    // Blind batch n: +-10 mV hysteresis of the negative OCP under a hill drive with long
+    // regenerative charging, one rest. Missed on its first run (hysteresis was not tried:
+    // it needed rests after both charge and discharge); a load that swings the hysteresis
+    // state into both branches now makes it identifiable.
+    let rounds = run_case("diagnosis-extra/n5_hysteresis_hill_regen_drive_35C");
+    let half_width = first_fitted(&rounds, "cell.hysteresis_voltage");
+    assert!((half_width / 0.010 - 1.0).abs() < 0.15, "half-width {half_width}: {}", rounds[0].summary);
+}

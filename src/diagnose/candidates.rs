@@ -70,6 +70,20 @@ const AMBIENT_RANGE_K: f64 = 30.0;
 /// discharge is half a swing).
 const MIN_AGEING_CYCLES: f64 = 3.0;
 
+/// Fixed parameters the DFN brings to an SPM: the electrolyte's diffusivity, conductivity,
+/// transference number, thermodynamic factor, initial concentration, porosities and
+/// tortuosity (7), and the two solid conductivities (2); to an SPMe, the latter two.
+const SPM_TO_DFN_FIXED: usize = 9;
+const SPME_TO_DFN_FIXED: usize = 2;
+
+/// The hysteresis candidate's starting decay rate (-): the state moves `1 - e^-1` of the way
+/// to a branch per tenth of the capacity passed.
+const HYSTERESIS_START_RATE: f64 = 10.0;
+
+/// How far into each branch (of ±1) a load must drive the unit hysteresis state for the
+/// recording to show hysteresis without rests after both directions.
+const HYSTERESIS_BRANCH: f64 = 0.5;
+
 /// Charge throughput over twice the largest swing of the discharged charge `capacity` (A h,
 /// cumulative): about the number of full cycles the recording spans.
 fn equivalent_cycles(capacity: &[f64]) -> f64 {
@@ -187,11 +201,24 @@ impl Candidate {
         }
     }
 
-    /// Why the recording cannot identify this candidate, or `None` when it can.
-    pub fn not_identifiable(self, rec: &Recording, f: &Features) -> Option<String> {
+    /// Why the recording cannot identify this candidate, or `None` when it can; `q_nominal`
+    /// is the cell's capacity (A h).
+    pub fn not_identifiable(self, rec: &Recording, f: &Features, q_nominal: f64) -> Option<String> {
         match self {
+            // Hysteresis is an offset whose sign follows the direction of the charge passed:
+            // it is seen at rest after both directions, or, with one rest, when the load
+            // itself drives the hysteresis state (at the candidate's starting rate) well into
+            // both branches (a drive that charges and discharges).
             Candidate::Hysteresis if !(f.rests_after_charge > 0 && f.rests_after_discharge > 0) => {
-                Some(format!("needs rests after both charge and discharge (this recording has {} and {})", f.rests_after_charge, f.rests_after_discharge))
+                let h = Features::hysteresis_state(rec, HYSTERESIS_START_RATE, q_nominal);
+                let (low, high) = h.iter().fold((0.0f64, 0.0f64), |(l, u), v| (l.min(*v), u.max(*v)));
+                let both_branches = low <= -HYSTERESIS_BRANCH && high >= HYSTERESIS_BRANCH;
+                (!(both_branches && f.rests_after_charge + f.rests_after_discharge > 0)).then(|| {
+                    format!(
+                        "needs rests after both charge and discharge, or a rest and a load that passes enough charge both ways to swing the hysteresis state past ±{HYSTERESIS_BRANCH} (this recording has {} and {} rests, the state spans {low:.2} to {high:.2})",
+                        f.rests_after_charge, f.rests_after_discharge
+                    )
+                })
             }
             Candidate::Thermal if rec.temperature.is_none() && f.distinct_rates < 2 => {
                 Some("needs a recorded temperature or loads at two or more rates".into())
@@ -238,10 +265,7 @@ impl Candidate {
                     ModelKind::Spm | ModelKind::Spme => ModelKind::Dfn,
                     ModelKind::Dfn => return None,
                 };
-                // From the SPM it brings the electrolyte's diffusivity, conductivity,
-                // transference number, thermodynamic factor, initial concentration, porosities
-                // and tortuosity (7); from either, the two solid conductivities (2).
-                structural_parameters = if spec.kind == ModelKind::Spm { 9 } else { 2 };
+                structural_parameters = if spec.kind == ModelKind::Spm { SPM_TO_DFN_FIXED } else { SPME_TO_DFN_FIXED };
                 let change = format!("{} -> {next}", spec.kind);
                 spec.kind = next;
                 (Vec::new(), change)
@@ -255,10 +279,17 @@ impl Candidate {
                 (Vec::new(), "SPM -> SPMe".into())
             }
             Candidate::ElectrolyteTransport => {
+                let factors = self.refitted_paths().iter().map(|p| around(p)).collect::<Option<_>>()?;
+                // An SPM has no electrolyte whose properties could be off: the electrolyte
+                // comes in (SPM -> DFN, its 9 fixed parameters counted) with its properties
+                // refitted, one effect (an electrolyte that is not the set's, e.g. salt lost).
                 if spec.kind == ModelKind::Spm {
-                    return None;
+                    structural_parameters = SPM_TO_DFN_FIXED;
+                    spec.kind = ModelKind::Dfn;
+                    (factors, "SPM -> DFN, electrolyte diffusivity and conductivity factors refitted".into())
+                } else {
+                    (factors, "electrolyte diffusivity and conductivity factors refitted".into())
                 }
-                (self.refitted_paths().iter().map(|p| around(p)).collect::<Option<_>>()?, "electrolyte diffusivity and conductivity factors refitted".into())
             }
             Candidate::SeiGrowth => {
                 // Not offered on the DFN: no PyBaMM-made multi-cycle DFN case holds it to
@@ -334,7 +365,7 @@ impl Candidate {
                 (
                     vec![
                         FitParameter::linear("cell.hysteresis_voltage", 5e-3, 0.0, 0.1),
-                        FitParameter::log("cell.hysteresis_rate", 10.0, 0.5, 500.0),
+                        FitParameter::log("cell.hysteresis_rate", HYSTERESIS_START_RATE, 0.5, 500.0),
                         FitParameter::linear("cell.hysteresis_initial", 0.0, -1.0, 1.0),
                     ],
                     "OCV hysteresis submodel on".into(),

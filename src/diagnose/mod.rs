@@ -254,7 +254,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
         .iter()
         .take(options.max_refits)
         .map(|&c| {
-            let aug = match c.not_identifiable(&data, &features) {
+            let aug = match c.not_identifiable(&data, &features, q) {
                 _ if no_room => Err(format!("not refitted: the user's model leaves {} RMS above the noise, less than the {} a named effect must remove", report::mv(room), report::mv(options.margins.size_floor(noise)))),
                 Some(why) => Err(format!("not identifiable from this recording: {why}")),
                 None => c.augment(&options.spec, base, &fitted_paths, data.temperature.as_ref().and_then(|t| t.first().copied())).ok_or_else(|| "not applicable to this model".to_string()),
