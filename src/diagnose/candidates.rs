@@ -201,6 +201,12 @@ impl Candidate {
         }
     }
 
+    /// The candidate that makes this one's structural change with no fitted parameters, on
+    /// a model of `kind`: this one at the set's values is that one.
+    pub fn structural_alias(self, kind: ModelKind) -> Option<Candidate> {
+        (self == Candidate::ElectrolyteTransport && kind == ModelKind::Spm).then_some(Candidate::Electrolyte)
+    }
+
     /// Why the recording cannot identify this candidate, or `None` when it can; `q_nominal`
     /// is the cell's capacity (A h).
     pub fn not_identifiable(self, rec: &Recording, f: &Features, q_nominal: f64) -> Option<String> {

@@ -301,7 +301,13 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
                         // Plausibility of the candidate's own values, not the baseline's.
                         let (names, values): (Vec<String>, Vec<f64>) =
                             f.names.iter().zip(&f.values).filter(|(n, _)| !baseline.names.contains(n)).map(|(n, v)| (n.clone(), *v)).unzip();
-                        out.implausible = c.implausible(&names, &values, base).or_else(|| c.unresolved(&names, &values, &data));
+                        // A candidate that makes another's structural change and keeps the
+                        // set's values is that other candidate: not named twice.
+                        let alias = c.structural_alias(options.spec.kind).filter(|_| keeps_set_values(&f, &names, base));
+                        out.implausible = c
+                            .implausible(&names, &values, base)
+                            .or_else(|| c.unresolved(&names, &values, &data))
+                            .or_else(|| alias.map(|a| format!("its values are the set's: it is {} alone", a.name())));
                         out.named = out.clears_margins && out.implausible.is_none();
                         out.name = c.named_by_values(&f.names, &f.values, base);
                         out.fit = Some(f);
@@ -388,6 +394,17 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
     diagnosis.summary = report::plain_words(&diagnosis);
     diagnosis.seconds = start.elapsed().as_secs_f64();
     Ok(diagnosis)
+}
+
+/// Whether every one of `paths` (at least one) is fitted within two standard errors of its
+/// value in `base`: the candidate changed nothing the recording can see.
+fn keeps_set_values(f: &FitOutcome, paths: &[String], base: &ParameterSet) -> bool {
+    !paths.is_empty()
+        && paths.iter().all(|path| {
+            let k = f.names.iter().position(|n| n == path);
+            let v0 = base.get(path).ok();
+            k.zip(v0).is_some_and(|(k, v0)| (f.values[k] - v0).abs() <= 2.0 * f.std_errors[k])
+        })
 }
 
 /// The outcomes' standings for [`select::verdict`], in their order.

@@ -182,13 +182,7 @@ fn fit_pair(a: &CandidateOutcome, b: &CandidateOutcome, round: &Round, start: Pa
     // A parameter-mismatch partner whose fitted values are the set's own (within two
     // standard errors) adds nothing: the pair is the first effect alone. (A submodel
     // switched on adds its physics whatever its parameters.)
-    let unchanged = b.class == super::Class::ParameterMismatch
-        && !partner.is_empty()
-        && partner.iter().all(|path| {
-            let k = fit.names.iter().position(|n| n == path);
-            let v0 = round.base.get(path).ok();
-            k.zip(v0).is_some_and(|(k, v0)| (fit.values[k] - v0).abs() <= 2.0 * fit.std_errors[k])
-        });
+    let unchanged = b.class == super::Class::ParameterMismatch && super::keeps_set_values(&fit, &partner, round.base);
     let implausible = [a.candidate, b.candidate]
         .iter()
         .find_map(|c| c.implausible(&names, &values, round.base).or_else(|| c.unresolved(&names, &values, round.data)))
