@@ -134,6 +134,12 @@ fn run_case(name: &str) -> Vec<Diagnosis> {
     rounds
 }
 
+/// The fitted value of `path` in the first round's named candidate.
+fn first_fitted(rounds: &[Diagnosis], path: &str) -> f64 {
+    let fit = rounds[0].best().and_then(|c| c.fit.as_ref()).expect("a named candidate holds its fit");
+    fit.names.iter().position(|n| n == path).map(|i| fit.values[i]).unwrap_or_else(|| panic!("{path} is not fitted: {}", rounds[0].summary))
+}
+
 #[test]
 fn b1_contact_resistance_gitt_dfn() {
     run_case("diagnosis-bench/b1_contact_gitt");
@@ -440,8 +446,7 @@ fn p8_hysteresis_two_way_gitt_spme() {
 #[test]
 fn g1_sei_growth_over_12_cycles_spm() {
     let rounds = run_case("diagnosis-ageing/g1_sei_growth_12_cycles_spm");
-    let fit = rounds[0].best().and_then(|c| c.fit.as_ref()).expect("a named candidate holds its fit");
-    let k = fit.names.iter().position(|n| n == "sei.exchange_current").map(|i| fit.values[i]).expect("the SEI's exchange current is fitted");
+    let k = first_fitted(&rounds, "sei.exchange_current");
     // PyBaMM's Chen 2020 SEI exchange current x20.
     assert!((k / 3.0e-6 - 1.0).abs() < 0.05, "SEI exchange current {k:.4e} vs PyBaMM's 3.0e-6");
 }
@@ -464,8 +469,7 @@ fn o2_cold_start_warming_in_its_room_dfn() {
     // the first recorded temperature as the room's and needed h = 0.25 W/(m^2 K)); the
     // candidate now fits the ambient to the recorded temperature.
     let rounds = run_case("diagnosis-extra/o2_cold_start_warming_recorded_dfn");
-    let fit = rounds[0].best().and_then(|c| c.fit.as_ref()).expect("a named candidate holds its fit");
-    let value = |path: &str| fit.names.iter().position(|n| n == path).map(|i| fit.values[i]).expect(path);
+    let value = |path: &str| first_fitted(&rounds, path);
     // PyBaMM's truth: ambient 298.15 K, h = 5 W/(m^2 K).
     assert!((value("thermal.ambient_temperature") - 298.15).abs() < 0.2, "{}", rounds[0].summary);
     assert!((value("thermal.heat_transfer_coefficient") / 5.0 - 1.0).abs() < 0.03, "{}", rounds[0].summary);
@@ -491,12 +495,6 @@ fn o6_conductivity_and_self_heating_tie_with_contact_and_self_heating_spme() {
     // PyBaMM's truth: conductivity x0.5, h = 15 W/(m^2 K).
     assert!((value("electrolyte.conductivity_factor") / 0.5 - 1.0).abs() < 0.01, "{}", rounds[0].summary);
     assert!((value("thermal.heat_transfer_coefficient") / 15.0 - 1.0).abs() < 0.01, "{}", rounds[0].summary);
-}
-
-/// The fitted value of `path` in the first round's named candidate.
-fn first_fitted(rounds: &[Diagnosis], path: &str) -> f64 {
-    let fit = rounds[0].best().and_then(|c| c.fit.as_ref()).expect("a named candidate holds its fit");
-    fit.names.iter().position(|n| n == path).map(|i| fit.values[i]).unwrap_or_else(|| panic!("{path} is not fitted: {}", rounds[0].summary))
 }
 
 #[test]
