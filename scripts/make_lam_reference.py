@@ -79,7 +79,7 @@ def main(root):
             "parameters": extra, "cycle": CYCLE, "cycles": CYCLES, "period_s": 60, "cases": {}}
     for mname, cls in MODELS.items():
         for oname, options in OPTIONS.items():
-            model = cls(options)
+            model = cls(dict(options))  # PyBaMM writes its defaults into the dict it is given
             sim = pybamm.Simulation(model, parameter_values=params.copy(),
                                     experiment=pybamm.Experiment([tuple(CYCLE)] * CYCLES, period="60 seconds"),
                                     solver=pybamm.IDAKLUSolver(rtol=1e-8, atol=1e-8))

@@ -104,17 +104,18 @@ fn compare(kind: ModelKind, lam: LamModel, sei: SeiModel, name: &str) -> Gaps {
     gaps
 }
 
-/// Limits three to five times the largest achieved: voltage RMS / max 1.4e-5-6.9e-5 /
-/// 7.3e-5-4.6e-4 mV (the largest for the SPMe with both laws), hold current RMS / max
-/// 1.6e-4-4.1e-4 / 1.0e-3-1.7e-3 mA, volume fractions within 3.6e-6-9.0e-5 of their change
-/// and lithium lost within 1.5e-6-8.3e-5 of its final value, lithium conserved to
-/// 1.0e-15-2.1e-15.
+/// Limits about four times the largest achieved: voltage RMS / max 6.4e-6-2.5e-5 /
+/// 3.3e-5-1.4e-4 mV, hold current RMS / max 1.5e-4-3.6e-4 / 8.7e-4-1.7e-3 mA, volume
+/// fractions within 4.4e-7-6.0e-5 of their change and lithium lost within 9.9e-8-1.9e-5 of
+/// its final value, lithium conserved to 5.9e-16-2.1e-15. (Before the reference gave each
+/// model its own options dict, the SPMe cases with SEI ran PyBaMM's x-averaged SEI and sat
+/// 4-5x further off: 6.9e-5 / 4.6e-4 mV.)
 fn check(kind: ModelKind) {
     for (lam, sei, name) in OPTIONS {
         let g = compare(kind, lam, sei, name);
-        assert!(g.voltage.0 < 2.5e-4 && g.voltage.1 < 1.5e-3, "{kind} {name}: voltage {:?} mV", g.voltage);
+        assert!(g.voltage.0 < 1e-4 && g.voltage.1 < 6e-4, "{kind} {name}: voltage {:?} mV", g.voltage);
         assert!(g.current.0 < 1.5e-3 && g.current.1 < 6e-3, "{kind} {name}: hold current {:?} mA", g.current);
-        assert!(g.fraction.iter().chain(&g.lithium).all(|d| *d < 4e-4), "{kind} {name}: fractions {:?}, lithium {:?}", g.fraction, g.lithium);
+        assert!(g.fraction.iter().chain(&g.lithium).all(|d| *d < 2.5e-4), "{kind} {name}: fractions {:?}, lithium {:?}", g.fraction, g.lithium);
         assert!(g.conservation < 1e-14, "{kind} {name}: lithium changed by {:e}", g.conservation);
     }
 }
