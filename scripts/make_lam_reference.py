@@ -9,6 +9,10 @@ each with PyBaMM's option "loss of active material" set to
   "Negative electrode reaction-driven LAM factor [m3.mol-1]" = 1e-4 of PyBaMM's LAM notebook
   (docs/source/examples/notebooks/models/loss_of_active_materials.ipynb);
 - "stress and reaction-driven", with both of the above and the SEI;
+- ("stress-driven", "none") with "stress-induced diffusion" = "false": the negative
+  electrode's stress-driven law alone, with plain particle diffusion (the diagnosis's
+  progressive-LAM candidate; OKane2022's positive mechanics without stress-induced diffusion
+  drive the positive fraction below zero within five cycles, so the positive is left out);
 PyBaMM's default mesh (20 volumes per x-domain and per particle, as ours), IDAKLU at
 rtol = atol = 1e-8.
 
@@ -51,6 +55,7 @@ OPTIONS = {
     "stress_driven": {"loss of active material": "stress-driven"},
     "reaction_driven": {"loss of active material": "reaction-driven", "SEI": "reaction limited"},
     "stress_and_reaction_driven": {"loss of active material": "stress and reaction-driven", "SEI": "reaction limited"},
+    "negative_stress_driven_plain_diffusion": {"loss of active material": ("stress-driven", "none"), "stress-induced diffusion": "false"},
 }
 REACTION_FACTOR = 1e-4
 # The largest "LAM constant proportional term [s-1]" of the notebook's sweep (1e-2 per hour,

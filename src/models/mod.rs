@@ -85,6 +85,9 @@ pub struct Submodels {
     /// two extra states (plated and dead lithium) in the SPM, two per negative x volume in
     /// the SPMe.
     pub plating: submodels::PlatingModel,
+    /// PyBaMM's "stress-induced diffusion" under stress-driven LAM: `None` follows PyBaMM (on
+    /// with stress-driven LAM), `Some(false)` keeps the particle diffusivities unstressed.
+    pub stress_induced_diffusion: Option<bool>,
 }
 
 impl Submodels {
@@ -98,10 +101,19 @@ impl Submodels {
         if kind == ModelKind::Dfn && self.plating != PlatingModel::None {
             return Err(invalid("plating", format!("{:?} lithium plating is built for the SPM and SPMe only: use model = \"spm\" or \"spme\"", self.plating)));
         }
+        if self.stress_induced_diffusion == Some(true) && !self.lam.stress() {
+            return Err(invalid("stress_induced_diffusion", format!("true needs a stress-driven loss of active material (lam = \"stress-driven\"), not {:?}", self.lam)));
+        }
         if self.lam.reaction() && self.sei == SeiModel::None {
             return Err(invalid("lam", format!("{:?} loss of active material is driven by the SEI reaction: it needs an SEI submodel (e.g. sei = \"reaction limited\")", self.lam)));
         }
         Ok(())
+    }
+
+    /// Whether the particle diffusivities are stress-induced (`D (1 + theta_M (c - c_0))`):
+    /// stress-driven LAM without `stress_induced_diffusion = false`.
+    pub fn stressed_diffusion(&self) -> bool {
+        self.lam.stress() && self.stress_induced_diffusion != Some(false)
     }
 
     /// Whether a submodel that appends states through [`submodels::Augmented`] is on.

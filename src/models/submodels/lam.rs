@@ -15,7 +15,8 @@
 //!   hydrostatic surface stress `sigma_h = 2 sigma_t / 3` (the radial one is zero at the
 //!   surface), `sigma_t = Omega E (c_av - c_surf) / (3 (1 - nu))`; the particle diffusivity
 //!   becomes `D (1 + theta_M (c - c_0))`, `theta_M = Omega / (R T) 2 Omega E / (9 (1 - nu))`
-//!   (PyBaMM's "stress-induced diffusion", on by default with stress-driven LAM);
+//!   (PyBaMM's "stress-induced diffusion", on by default with stress-driven LAM, off with
+//!   `stress_induced_diffusion = false`);
 //! - reaction-driven (negative electrode, needs an SEI submodel):
 //!   `d eps_n / dt = beta_LAM_sei a j_sei / F` (`j_sei` < 0 while the SEI grows);
 //! - lithium lost: `d Q / dt = -L A c_av d eps / dt` (mol/s);
@@ -38,7 +39,8 @@ pub enum LamModel {
     #[default]
     #[serde(rename = "none")]
     None,
-    /// Driven by the particles' surface stress, both electrodes; with stress-induced diffusion.
+    /// Driven by the particles' surface stress, both electrodes; with stress-induced diffusion
+    /// unless `Submodels::stress_induced_diffusion` is `Some(false)`.
     #[serde(rename = "stress-driven")]
     StressDriven,
     /// Driven by the SEI side reaction, negative electrode (needs an SEI submodel).
@@ -50,7 +52,7 @@ pub enum LamModel {
 }
 
 impl LamModel {
-    /// Whether the surface stress drives it (and stress-induced diffusion is on).
+    /// Whether the surface stress drives it.
     pub fn stress(self) -> bool {
         matches!(self, Self::StressDriven | Self::StressAndReactionDriven)
     }
@@ -218,11 +220,11 @@ impl LamLayer {
 
     /// Writes the particle states' rates of an electrode into `out`: diffusion of the shell
     /// concentrations `c` (mol/m^3) at temperature `temp` (K) with outward molar surface
-    /// flux `flux` (mol/(m^2 s)), stress-induced when stress-driven; then, when on, the
+    /// flux `flux` (mol/(m^2 s)), stress-induced when the submodels say so; then, when on, the
     /// rates of `n = eps c` with `d eps / dt` = `rate` (1/s) at state `y`.
     pub fn particle_rhs(&self, ec: &Electrochem, side: Side, y: &[f64], c: &[f64], flux: f64, rate: f64, temp: f64, out: &mut [f64]) {
         let p = Self::params(ec, side);
-        let stress = self.model.stress().then(|| (p.stress_diffusion_coefficient(temp), p.reference_concentration));
+        let stress = ec.submodels.stressed_diffusion().then(|| (p.stress_diffusion_coefficient(temp), p.reference_concentration));
         ec.sphere(side).stressed_diffusion(c, ec.diffusivity(side, temp), stress, flux, out);
         if let Some(k) = self.fraction_index(side) {
             let eps = y[k];
