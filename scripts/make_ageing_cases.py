@@ -5,7 +5,14 @@ noise): 12 CC-CV cycles of the SPM
   twelve cycles lose about 1 % of the lithium), handed the SPM without SEI: SEI named;
 - g2: a control without ageing: nothing named;
 - g3: 4 % less cyclable lithium from the start and no ageing: a fixed offset that does not
-  drift from cycle to cycle, lithium inventory named, not SEI growth.
+  drift from cycle to cycle, lithium inventory named, not SEI growth;
+- g4: stress-driven loss of active material in the negative electrode (PyBaMM's
+  ("stress-driven", "none") with plain particle diffusion, OKane2022's mechanics, LAM
+  proportional term 10 x 1e-2 per hour): loss of active material named;
+- g5: irreversible lithium plating (OKane2022's plating parameters, its rate constant x0.1)
+  under 1.5C charges: plating named (PyBaMM's irreversible plating and reaction-limited SEI
+  are both cathodic Tafel side reactions on the same potential difference, so a tie of the
+  two is an honest answer).
 
     .venv/bin/python scripts/make_ageing_cases.py tests/data/diagnosis-ageing
 """
@@ -14,6 +21,8 @@ import sys
 
 import pybamm
 
+from make_lam_reference import MECHANICS_KEYS
+from make_plating_submodel_reference import PLATING_KEYS
 from make_unseen_cases import chen, scaled, write_case
 
 CYCLE = ["Discharge at 1C until 3.0 V", "Rest for 10 minutes", "Charge at 1C until 4.1 V", "Hold at 4.1 V until C/20", "Rest for 10 minutes"]
@@ -40,6 +49,26 @@ def main(root):
                 "note": "4 % less lithium in the negative electrode from the start, no ageing (a fixed stoichiometry offset); "
                         "the same 12 CC-CV cycles; 30 s sampling"},
                seed=203, period=PERIOD, compare=lion.SPM())
+    okane = pybamm.ParameterValues("OKane2022")
+    p = chen()
+    p.update({f"{d} electrode {k}": okane[f"{d} electrode {k}"] for d in ["Negative", "Positive"] for k in MECHANICS_KEYS},
+             check_already_exists=False)
+    p.update({"Negative electrode LAM constant proportional term [s-1]": 10 * 1e-2 / 3600})
+    lam = lion.SPM({"loss of active material": ("stress-driven", "none"), "stress-induced diffusion": "false"})
+    write_case(root, "g4_lam_growth_12_cycles_spm", lam, p, steps,
+               {"effect": "active_material_loss", "candidate_model": "spm", "accept": ["active material"],
+                "note": "stress-driven loss of active material in the negative electrode, plain particle diffusion (OKane2022's "
+                        "mechanical constants, LAM proportional term 10 x 1e-2 per hour), the same 12 CC-CV cycles; 30 s sampling"},
+               seed=204, period=PERIOD, compare=lion.SPM())
+    p = chen()
+    p.update({k: okane[k] for k in PLATING_KEYS}, check_already_exists=False)
+    p = scaled(p, "Lithium plating kinetic rate constant [m.s-1]", 0.1)
+    fast = [s.replace("Charge at 1C", "Charge at 1.5C") for s in CYCLE] * CYCLES
+    write_case(root, "g5_plating_12_cycles_spm", lion.SPM({"lithium plating": "irreversible"}), p, fast,
+               {"effect": "lithium_plating", "candidate_model": "spm", "accept": ["plating"],
+                "note": "irreversible lithium plating (OKane2022's plating parameters, rate constant x0.1 = 1e-10 m/s); 12 cycles of "
+                        "1C to 3.0 V, 10 min rest, 1.5C to 4.1 V, hold to C/20, 10 min rest; 30 s sampling"},
+               seed=205, period=PERIOD, compare=lion.SPM())
 
 
 if __name__ == "__main__":
