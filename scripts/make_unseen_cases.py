@@ -1088,7 +1088,25 @@ def batch_m(root):
     and an SPMe control at 5 degC. Lithium and active-material loss are accepted only by their
     own words, as since batch r; in m7 the particle diffusivity is accepted by "particle" (not
     "diffusiv", which "electrolyte diffusivity" alone would match). No case hides an effect
-    outside every family."""
+    outside every family.
+
+    First run (2026-11-26, frozen binary /work/bin/frozen-m, sha256 05a349687035, load average
+    4.6 before, 4.3-7.8 during, 6.8 after, on 2 cores shared with other sessions): 8 of 8, 1102 s
+    in all. m1 a tie: series/contact 2.91 mOhm (truth 2.98 mOhm at a 1C pulse) or electrolyte
+    conductivity 0.58x, 4.00 -> 1.00 mV, 33 s; m2 kinetics (positive rate constant 0.392x,
+    negative 1.010x), 9.00 -> 1.52 mV, 79 s; m3 electrolyte properties (diffusivity 0.878x,
+    conductivity 1.30x) together with kinetics (negative 0.688x, positive 1.13x), 12.77 -> 1.84 mV,
+    then "unexplained" (1.84 mV), 341 s: the electrolyte alone (0.854x / 0.759x, 3.21 mV) ranked
+    4th, behind three kinetics pairs; m4 negative LAM (fraction 0.6974, truth 0.6975), 54.30 ->
+    1.01 mV, 518 s; m5 thermal (h 11.93, ambient 288.14 K), 17.35 -> 1.02 mV, 22 s; m6 no missing
+    physics (1.98 mV, noise 2.07), 1 s; m7 the pair in round 1 at the truth (electrolyte
+    diffusivity 0.7502x, conductivity 1.0016x, negative particle diffusivity 0.300x, positive
+    0.999x), 22.49 -> 1.01 mV, 48 s; m8 passed on the rounds together, not on its first verdict:
+    round 1 named negative LAM (fraction 0.7154, "5 %") together with hysteresis (15.5 mV),
+    30.83 -> 4.06 mV, where lithium inventory alone ranked 2nd (8.64 mV); round 2 named lithium
+    inventory (initial concentrations 25725 / 20403 mol/m3, the truth's 25725 / 20404), 0.97 mV,
+    after which the active fractions were refitted to the set's (0.7500 / 0.6650) and the
+    hysteresis to 12.01 mV (truth 12), yet the conclusion still lists the LAM; 60 s."""
     cap = 5.0
     p = chen()
     p.update({"Initial SEI thickness [m]": 5e-8})
