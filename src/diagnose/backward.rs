@@ -2,11 +2,13 @@
 //! effects named later (a loss of active material mimics a lithium loss plus part of a
 //! resistance). Each earlier effect is taken out of the final model, the rest refitted, and
 //! the effect is reported as superseded when the final model does not beat the reduced one by
-//! the naming margins (ΔBIC and the Laplace evidence).
+//! the naming margins (ΔBIC and the Laplace evidence). A pair named together is taken out
+//! whole, and when the final model needs it, each of its two effects on its own: one may
+//! have stood in for a later effect while the other is needed.
 
 use serde::Serialize;
 
-use super::{Diagnosis, DiagnoseOptions, FitOutcome, describe, refit, select};
+use super::{CandidateOutcome, Diagnosis, DiagnoseOptions, FitOutcome, describe, refit, select};
 use crate::params::ParameterSet;
 use crate::problem::fitting::{FitParameter, ModelSpec};
 
@@ -22,6 +24,8 @@ pub struct Superseded {
     /// RMSE (V) of the final model without it, and with it.
     pub rmse_without: f64,
     pub rmse_with: f64,
+    /// When one effect of a pair is superseded: the other's name, which the round keeps.
+    pub kept: Option<String>,
 }
 
 /// The final model of the rounds: specification, base parameters, fitted parameters, fit.
@@ -36,7 +40,6 @@ pub struct FinalModel<'a> {
 pub fn superseded(rounds: &[Diagnosis], model: &FinalModel, options: &DiagnoseOptions) -> Vec<Superseded> {
     let Some(last) = rounds.last() else { return Vec::new() };
     let named: Vec<usize> = (0..rounds.len()).filter(|&i| rounds[i].found).collect();
-    let n = last.train_points;
     let mut out = Vec::new();
     // Every named effect but the last one named (each has a later round).
     for &i in named.iter().take(named.len().saturating_sub(1)) {
@@ -49,38 +52,71 @@ pub fn superseded(rounds: &[Diagnosis], model: &FinalModel, options: &DiagnoseOp
         if replaced || d.spec.kind != after.spec.kind {
             continue;
         }
-        let mut spec = model.spec;
-        let (b, a) = (d.spec.submodels, after.spec.submodels);
-        if b.contact_resistance != a.contact_resistance {
-            spec.submodels.contact_resistance = b.contact_resistance;
-        }
-        if b.thermal != a.thermal {
-            spec.submodels.thermal = b.thermal;
-        }
-        if b.rc != a.rc {
-            spec.submodels.rc = b.rc;
-        }
-        if b.hysteresis != a.hysteresis {
-            spec.submodels.hysteresis = b.hysteresis;
-        }
-        let fitted: Vec<FitParameter> = model.fitted.iter().filter(|p| !added.contains(&&p.path)).cloned().collect();
-        let start: Vec<f64> = fitted.iter().map(|p| p.initial).collect();
-        let structural = model.fit.parameters - model.fit.names.len();
-        let label = format!("{} without {}", describe(&model.spec), c.name);
-        let Ok(reduced) = refit::fit_and_score(label, spec, model.base.clone(), fitted, structural, &refit::Starts::at(vec![start]), &last.data, &last.split, &options.fit) else {
+        let spec = reverted(model.spec, d.spec.submodels, after.spec.submodels);
+        let whole = take_out(model, spec, &added, &c.name, i, last, options);
+        if whole.is_some() || c.partner.is_none() {
+            out.extend(whole);
             continue;
-        };
-        let cmp = select::compare(&reduced, model.fit, n);
-        if cmp.delta_bic <= options.margins.min_delta_bic || cmp.ln_bayes_factor <= 0.0 {
-            out.push(Superseded {
-                round: i + 1,
-                name: c.name.clone(),
-                delta_bic: cmp.delta_bic,
-                ln_bayes_factor: cmp.ln_bayes_factor,
-                rmse_without: reduced.rmse_all,
-                rmse_with: model.fit.rmse_all,
-            });
         }
+        // A pair the final model needs: is one of its effects not needed?
+        let members = [(c.candidate, c.partner), (c.partner.expect("a pair"), Some(c.candidate))];
+        let start_temperature = last.data.temperature.as_ref().and_then(|t| t.first().copied());
+        let mut parts = members.into_iter().filter_map(|(member, other)| {
+            let aug = member.augment(&d.spec, model.base, &d.baseline.names, start_temperature)?;
+            if aug.spec.kind != d.spec.kind {
+                return None;
+            }
+            let own: Vec<&String> = added.iter().copied().filter(|p| aug.extra.iter().any(|e| &e.path == *p)).collect();
+            let spec = reverted(model.spec, d.spec.submodels, aug.spec.submodels);
+            let mut s = take_out(model, spec, &own, &member.named_by_values(&f.names, &f.values, model.base), i, last, options)?;
+            s.kept = other.map(|o| own_name(c, o, model.base));
+            Some(s)
+        });
+        // At most one: the other then stays named.
+        out.extend(parts.next());
     }
     out
+}
+
+/// `spec` with the submodels that `after` turned on over `before` turned off again.
+fn reverted(mut spec: ModelSpec, before: crate::models::Submodels, after: crate::models::Submodels) -> ModelSpec {
+    if before.contact_resistance != after.contact_resistance {
+        spec.submodels.contact_resistance = before.contact_resistance;
+    }
+    if before.thermal != after.thermal {
+        spec.submodels.thermal = before.thermal;
+    }
+    if before.rc != after.rc {
+        spec.submodels.rc = before.rc;
+    }
+    if before.hysteresis != after.hysteresis {
+        spec.submodels.hysteresis = before.hysteresis;
+    }
+    spec
+}
+
+/// The name of a pair's member `member` by the pair's fitted values.
+fn own_name(c: &CandidateOutcome, member: super::Candidate, base: &ParameterSet) -> String {
+    c.fit.as_ref().map_or(member.name().to_string(), |f| member.named_by_values(&f.names, &f.values, base))
+}
+
+/// The final model refitted with `spec` and without the fitted `paths` (at the set's values),
+/// as a superseded effect `name` of round `round` (from 0) when the final model does not beat
+/// it by the naming margins.
+fn take_out(model: &FinalModel, spec: ModelSpec, paths: &[&String], name: &str, round: usize, last: &Diagnosis, options: &DiagnoseOptions) -> Option<Superseded> {
+    let fitted: Vec<FitParameter> = model.fitted.iter().filter(|p| !paths.contains(&&p.path)).cloned().collect();
+    let start: Vec<f64> = fitted.iter().map(|p| p.initial).collect();
+    let structural = model.fit.parameters - model.fit.names.len();
+    let label = format!("{} without {name}", describe(&model.spec));
+    let reduced = refit::fit_and_score(label, spec, model.base.clone(), fitted, structural, &refit::Starts::at(vec![start]), &last.data, &last.split, &options.fit).ok()?;
+    let cmp = select::compare(&reduced, model.fit, last.train_points);
+    (cmp.delta_bic <= options.margins.min_delta_bic || cmp.ln_bayes_factor <= 0.0).then(|| Superseded {
+        round: round + 1,
+        name: name.to_string(),
+        delta_bic: cmp.delta_bic,
+        ln_bayes_factor: cmp.ln_bayes_factor,
+        rmse_without: reduced.rmse_all,
+        rmse_with: model.fit.rmse_all,
+        kept: None,
+    })
 }

@@ -441,9 +441,10 @@ pub fn diagnose_rounds(data: &Recording, base: &ParameterSet, options: &Diagnose
         let last = rounds.last_mut().expect("two rounds");
         for s in &superseded {
             last.summary.push_str(&format!(
-                " Superseded: {} (round {}) is not needed once the later effects are in the model: without it the RMSE is {:.2} mV (with it {:.2} mV), ΔBIC {:.1}, Laplace ln Bayes factor {:.1}.",
+                " Superseded: {} (round {}{}) is not needed once the later effects are in the model: without it the RMSE is {:.2} mV (with it {:.2} mV), ΔBIC {:.1}, Laplace ln Bayes factor {:.1}.",
                 s.name,
                 s.round,
+                s.kept.as_ref().map_or(String::new(), |k| format!("; its pair's {k} stays")),
                 s.rmse_without * 1e3,
                 s.rmse_with * 1e3,
                 s.delta_bic,

@@ -273,7 +273,14 @@ pub fn conclusion(rounds: &[Diagnosis]) -> String {
         }
         _ => c.name.clone(),
     };
-    let kept: Vec<String> = named.iter().filter(|(k, _)| !last.superseded.iter().any(|s| s.round == *k)).map(|(k, c)| name_of(*k, c)).collect();
+    // A round whose pair lost one effect keeps the other.
+    let kept: Vec<String> = named
+        .iter()
+        .filter_map(|(k, c)| match last.superseded.iter().find(|s| s.round == *k) {
+            None => Some(name_of(*k, c)),
+            Some(s) => s.kept.clone(),
+        })
+        .collect();
     let dropped: Vec<String> = last.superseded.iter().map(|s| format!("{} (round {})", s.name, s.round)).collect();
     let final_rmse = last.best().filter(|_| last.found).and_then(|c| c.fit.as_ref()).map_or(last.baseline.rmse_all, |f| f.rmse_all);
     let rmse = last.superseded.iter().map(|s| s.rmse_without).fold(final_rmse, f64::min);
