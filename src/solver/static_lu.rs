@@ -9,6 +9,7 @@
 //! then reports failure and the caller falls back to a pivoting LU.
 
 use super::ordering::minimum_degree;
+use super::sweep::Sweep;
 
 /// Factors `P A P^T = L U` of a square matrix with a fixed pattern.
 #[derive(Clone)]
@@ -31,48 +32,6 @@ pub struct StaticLu {
     /// Dense work row (zero between uses) and permuted solve vector.
     work: Vec<f64>,
     z: Vec<f64>,
-}
-
-/// Rows of a triangular factor for the solve: row `i` has values `vals[ptr[i]..ptr[i + 1]]`
-/// at columns `cols[..]`, copied after each factorisation from the factor values at `pos[..]`.
-#[derive(Clone)]
-struct Sweep {
-    ptr: Vec<u32>,
-    cols: Vec<u32>,
-    pos: Vec<u32>,
-    vals: Vec<f64>,
-}
-
-impl Sweep {
-    /// The positions `range(i)` of each row `i` of the filled pattern `cols`.
-    fn new(n: usize, cols: &[usize], range: impl Fn(usize) -> std::ops::Range<usize>) -> Self {
-        let mut s = Sweep { ptr: vec![0], cols: Vec::new(), pos: Vec::new(), vals: Vec::new() };
-        for i in 0..n {
-            for p in range(i) {
-                s.cols.push(cols[p] as u32);
-                s.pos.push(p as u32);
-            }
-            s.ptr.push(s.cols.len() as u32);
-        }
-        s.vals = vec![0.0; s.cols.len()];
-        s
-    }
-
-    /// `z[i] -= sum_j row_i[j] z[j]`, for row `i`.
-    ///
-    /// # Safety
-    /// `i < n` and every column is below `z.len()` (as built by `new` from a valid pattern).
-    #[inline(always)]
-    unsafe fn eliminate(&self, i: usize, z: &mut [f64]) {
-        unsafe {
-            let (a, b) = (*self.ptr.get_unchecked(i) as usize, *self.ptr.get_unchecked(i + 1) as usize);
-            let mut s = *z.get_unchecked(i);
-            for p in a..b {
-                s -= self.vals.get_unchecked(p) * z.get_unchecked(*self.cols.get_unchecked(p) as usize);
-            }
-            *z.get_unchecked_mut(i) = s;
-        }
-    }
 }
 
 /// Smallest accepted |pivot| relative to the largest |entry| of its original row.
@@ -191,7 +150,7 @@ impl StaticLu {
         }
         let u = &mut self.upper;
         for (i, &d) in self.inv_diag.iter().enumerate() {
-            for p in u.ptr[i] as usize..u.ptr[i + 1] as usize {
+            for p in u.row_start(i)..u.row_start(i + 1) {
                 u.vals[p] = self.vals[u.pos[p] as usize] * d;
             }
         }
@@ -210,16 +169,12 @@ impl StaticLu {
                 *zi = *b.get_unchecked(p);
             }
             // L z = P b, row by row: each row's columns are earlier rows, already final.
-            for i in 0..self.n {
-                self.lower.eliminate(i, z);
-            }
+            self.lower.forward(z);
             // (D^-1 U) x = D^-1 z, from the last row up.
             for (zi, d) in z.iter_mut().zip(&self.inv_diag) {
                 *zi *= d;
             }
-            for i in (0..self.n).rev() {
-                self.upper.eliminate(i, z);
-            }
+            self.upper.backward(z);
             for (zi, &p) in z.iter().zip(&self.perm) {
                 *b.get_unchecked_mut(p) = *zi;
             }
