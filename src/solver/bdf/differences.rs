@@ -160,3 +160,65 @@ fn compute_r<const K: usize>(factor: f64) -> [[f64; K]; K] {
     }
     m
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn array(n: usize) -> Differences {
+        let y0: Vec<f64> = (0..n).map(|i| 1.0 + i as f64).collect();
+        let mut d = Differences::new(&y0, (0..n).map(|i| 0.1 * i as f64));
+        for (k, row) in d.d.iter_mut().enumerate().skip(2) {
+            row.iter_mut().enumerate().for_each(|(i, v)| *v = 0.01 * (k * i) as f64 - 0.02);
+        }
+        d
+    }
+
+    /// The fused passes give the loop-over-k formulas of their doc comments, exactly.
+    #[test]
+    fn fused_passes_match_the_formulas() {
+        let n = 7;
+        let coeffs = Coefficients::new();
+        for order in 1..=MAX_ORDER {
+            let d = array(n);
+            let mut pred = Prediction::new(n);
+            d.predict(order, &coeffs, &mut pred);
+            for i in 0..n {
+                let (mut y, mut psi) = (d.d[0][i], 0.0);
+                for k in 1..=order {
+                    y += d.d[k][i];
+                    psi += coeffs.gamma[k] / coeffs.alpha[order] * d.d[k][i];
+                }
+                assert_eq!((pred.y[i], pred.psi[i]), (y, psi));
+            }
+            let mut acc = array(n);
+            let dvec: Vec<f64> = (0..n).map(|i| 0.3 - 0.05 * i as f64).collect();
+            acc.accept(order, &dvec);
+            let mut expect = array(n).d;
+            for i in 0..n {
+                expect[order + 2][i] = dvec[i] - expect[order + 1][i];
+                expect[order + 1][i] = dvec[i];
+                for k in (0..=order).rev() {
+                    expect[k][i] += expect[k + 1][i];
+                }
+            }
+            assert_eq!(acc.d, expect);
+        }
+    }
+
+    /// Rescaling by `f` and then by `1 / f` restores the differences (up to round-off).
+    #[test]
+    fn rescale_round_trip() {
+        for order in 1..=MAX_ORDER {
+            let mut d = array(5);
+            d.rescale(order, 0.37);
+            d.rescale(order, 1.0 / 0.37);
+            let orig = array(5);
+            for k in 0..=order {
+                for i in 0..5 {
+                    assert!((d.d[k][i] - orig.d[k][i]).abs() < 1e-12, "order {order} d[{k}][{i}]");
+                }
+            }
+        }
+    }
+}
