@@ -8,6 +8,7 @@ pub mod jacobian;
 pub mod ordering;
 pub mod sparse;
 pub mod static_lu;
+mod sweep;
 mod workspace;
 
 pub use bdf::{Bdf, Dae, DenseOutput, SolverOptions, SolverStats, StepInfo, StopReason, Workspace, integrate};

@@ -50,6 +50,9 @@ pub struct SparseSystem {
     /// Slots in `lu`'s value array of the Jacobian entries and of the diagonal.
     jac_slots: Vec<usize>,
     diag_slots: Vec<usize>,
+    /// Slots that no Jacobian entry writes (fill, and diagonals outside the Jacobian
+    /// pattern): zeroed before each factorisation, the Jacobian slots being overwritten.
+    zero_slots: Vec<usize>,
     /// Pivoting fallback, built on first need.
     fallback: Option<Box<PivotingLu>>,
     /// Which factorisation `solve` uses.
@@ -73,12 +76,16 @@ impl SparseSystem {
         all.extend((0..n).map(|i| (i, i)));
         let (lu, mut slots) = StaticLu::new(n, &all);
         let diag_slots = slots.split_off(entries.len());
+        let mut written = vec![false; lu.nnz()];
+        slots.iter().for_each(|&s| written[s] = true);
+        let zero_slots = (0..lu.nnz()).filter(|&s| !written[s]).collect();
         Ok(Self {
             n,
             entries: entries.to_vec(),
             lu,
             jac_slots: slots,
             diag_slots,
+            zero_slots,
             fallback: None,
             state: Factorised::No,
         })
@@ -89,9 +96,12 @@ impl SparseSystem {
     pub fn factorise(&mut self, mass: &[f64], c: f64, jac: &[f64]) -> Result<(), Error> {
         self.state = Factorised::No;
         let vals = self.lu.values_mut();
-        vals.iter_mut().for_each(|v| *v = 0.0);
+        for &slot in &self.zero_slots {
+            vals[slot] = 0.0;
+        }
+        // Entries are distinct, so each Jacobian slot is written once (as `0 - c J`).
         for (&slot, &j) in self.jac_slots.iter().zip(jac) {
-            vals[slot] -= c * j;
+            vals[slot] = 0.0 - c * j;
         }
         for (&slot, &m) in self.diag_slots.iter().zip(mass) {
             vals[slot] += m;

@@ -1,7 +1,7 @@
 //! Sparse LU with a fixed (fill-reducing, minimum-degree) symmetric ordering and no
 //! pivoting: the symbolic structure, including every fill entry, is computed once, so a
-//! numeric factorisation is a scatter, row-wise Gaussian elimination and a gather into
-//! preallocated storage, and a solve is two sparse triangular sweeps. The elimination order
+//! numeric factorisation is row-wise Gaussian elimination in place, on positions looked up
+//! once (an elimination program), and a solve is two sparse triangular sweeps. The elimination order
 //! is sorted by level in the elimination tree (same fill), so neighbouring rows of a sweep
 //! are independent and the processor overlaps them.
 //!
@@ -9,6 +9,7 @@
 //! then reports failure and the caller falls back to a pivoting LU.
 
 use super::ordering::minimum_degree;
+use super::sweep::Sweep;
 
 /// Factors `P A P^T = L U` of a square matrix with a fixed pattern.
 #[derive(Clone)]
@@ -28,51 +29,13 @@ pub struct StaticLu {
     /// Off-diagonal parts of `L` and of `D^-1 U`, row by row, for the solve.
     lower: Sweep,
     upper: Sweep,
-    /// Dense work row (zero between uses) and permuted solve vector.
-    work: Vec<f64>,
+    /// The elimination program: eliminating with the `L` entry at position `p` subtracts
+    /// `L_p vals[q]` from `vals[t]` for each `(t, q)` in `updates[update_ptr[p]..update_ptr[p + 1]]`
+    /// (`q` in the `U` row of the entry's column, `t` the same column in the entry's row).
+    update_ptr: Vec<u32>,
+    updates: Vec<(u32, u32)>,
+    /// Permuted solve vector.
     z: Vec<f64>,
-}
-
-/// Rows of a triangular factor for the solve: row `i` has values `vals[ptr[i]..ptr[i + 1]]`
-/// at columns `cols[..]`, copied after each factorisation from the factor values at `pos[..]`.
-#[derive(Clone)]
-struct Sweep {
-    ptr: Vec<u32>,
-    cols: Vec<u32>,
-    pos: Vec<u32>,
-    vals: Vec<f64>,
-}
-
-impl Sweep {
-    /// The positions `range(i)` of each row `i` of the filled pattern `cols`.
-    fn new(n: usize, cols: &[usize], range: impl Fn(usize) -> std::ops::Range<usize>) -> Self {
-        let mut s = Sweep { ptr: vec![0], cols: Vec::new(), pos: Vec::new(), vals: Vec::new() };
-        for i in 0..n {
-            for p in range(i) {
-                s.cols.push(cols[p] as u32);
-                s.pos.push(p as u32);
-            }
-            s.ptr.push(s.cols.len() as u32);
-        }
-        s.vals = vec![0.0; s.cols.len()];
-        s
-    }
-
-    /// `z[i] -= sum_j row_i[j] z[j]`, for row `i`.
-    ///
-    /// # Safety
-    /// `i < n` and every column is below `z.len()` (as built by `new` from a valid pattern).
-    #[inline(always)]
-    unsafe fn eliminate(&self, i: usize, z: &mut [f64]) {
-        unsafe {
-            let (a, b) = (*self.ptr.get_unchecked(i) as usize, *self.ptr.get_unchecked(i + 1) as usize);
-            let mut s = *z.get_unchecked(i);
-            for p in a..b {
-                s -= self.vals.get_unchecked(p) * z.get_unchecked(*self.cols.get_unchecked(p) as usize);
-            }
-            *z.get_unchecked_mut(i) = s;
-        }
-    }
 }
 
 /// Smallest accepted |pivot| relative to the largest |entry| of its original row.
@@ -117,6 +80,24 @@ impl StaticLu {
         };
         let slots = entries.iter().map(|&(r, c)| pos(r, c)).collect();
         let nnz = cols.len();
+        // Row i is eliminated with each earlier row k of its L part, in increasing k; row k's
+        // U entries (columns after k) are all in row i's filled pattern.
+        let mut update_ptr = vec![0u32; nnz + 1];
+        let mut updates = Vec::new();
+        for i in 0..n {
+            let row = &cols[row_ptr[i]..row_ptr[i + 1]];
+            for p in row_ptr[i]..diag_pos[i] {
+                let k = cols[p];
+                for q in diag_pos[k] + 1..row_ptr[k + 1] {
+                    let t = row_ptr[i] + row.binary_search(&cols[q]).expect("fill entry in pattern");
+                    updates.push((t as u32, q as u32));
+                }
+                update_ptr[p + 1] = updates.len() as u32;
+            }
+            for p in diag_pos[i]..row_ptr[i + 1] {
+                update_ptr[p + 1] = updates.len() as u32;
+            }
+        }
         let lower = Sweep::new(n, &cols, |i| row_ptr[i]..diag_pos[i]);
         let upper = Sweep::new(n, &cols, |i| diag_pos[i] + 1..row_ptr[i + 1]);
         let lu = Self {
@@ -129,7 +110,8 @@ impl StaticLu {
             inv_diag: vec![0.0; n],
             lower,
             upper,
-            work: vec![0.0; n],
+            update_ptr,
+            updates,
             z: vec![0.0; n],
         };
         (lu, slots)
@@ -149,35 +131,31 @@ impl StaticLu {
     /// Factorises in place the matrix loaded into [`StaticLu::values_mut`]. Returns `false`
     /// when a pivot is tiny relative to its row or not finite (the factors are then invalid).
     pub fn factorise(&mut self) -> bool {
-        let (cols, vals, w) = (&self.cols[..], &mut self.vals[..], &mut self.work[..]);
+        let (cols, vals, updates, update_ptr) = (&self.cols[..], &mut self.vals[..], &self.updates[..], &self.update_ptr[..]);
         let (row_ptr, diag_pos, inv_diag) = (&self.row_ptr[..], &self.diag_pos[..], &mut self.inv_diag[..]);
         // SAFETY: `new` builds `row_ptr` (length n + 1, non-decreasing, ending at
-        // `cols.len() == vals.len()`), `diag_pos[i]` within row i, and every column index
-        // below n (the length of `w` and `inv_diag`); the eliminated rows k < i are earlier
-        // rows of the same structure.
+        // `cols.len() == vals.len()`), `diag_pos[i]` within row i, every column index below n
+        // (the length of `inv_diag`), `update_ptr` (length nnz + 1, non-decreasing, ending at
+        // `updates.len()`) and every update position below nnz; the eliminated rows k < i are
+        // earlier rows of the same structure.
         unsafe {
             for i in 0..self.n {
                 let (start, end, d) = (*row_ptr.get_unchecked(i), *row_ptr.get_unchecked(i + 1), *diag_pos.get_unchecked(i));
                 let mut row_max = 0.0f64;
                 for p in start..end {
-                    let v = *vals.get_unchecked(p);
-                    *w.get_unchecked_mut(*cols.get_unchecked(p)) = v;
-                    row_max = row_max.max(v.abs());
+                    row_max = row_max.max(vals.get_unchecked(p).abs());
                 }
                 for p in start..d {
                     let k = *cols.get_unchecked(p);
-                    let l = *w.get_unchecked(k) * *inv_diag.get_unchecked(k);
-                    *w.get_unchecked_mut(k) = l;
+                    let l = *vals.get_unchecked(p) * *inv_diag.get_unchecked(k);
+                    *vals.get_unchecked_mut(p) = l;
                     if l != 0.0 {
-                        for q in *diag_pos.get_unchecked(k) + 1..*row_ptr.get_unchecked(k + 1) {
-                            *w.get_unchecked_mut(*cols.get_unchecked(q)) -= l * vals.get_unchecked(q);
+                        let (a, b) = (*update_ptr.get_unchecked(p) as usize, *update_ptr.get_unchecked(p + 1) as usize);
+                        for &(t, q) in updates.get_unchecked(a..b) {
+                            let v = l * *vals.get_unchecked(q as usize);
+                            *vals.get_unchecked_mut(t as usize) -= v;
                         }
                     }
-                }
-                for p in start..end {
-                    let c = *cols.get_unchecked(p);
-                    *vals.get_unchecked_mut(p) = *w.get_unchecked(c);
-                    *w.get_unchecked_mut(c) = 0.0;
                 }
                 let pivot = *vals.get_unchecked(d);
                 if !(pivot.abs() > PIVOT_TOL * row_max) || !pivot.is_finite() {
@@ -191,7 +169,7 @@ impl StaticLu {
         }
         let u = &mut self.upper;
         for (i, &d) in self.inv_diag.iter().enumerate() {
-            for p in u.ptr[i] as usize..u.ptr[i + 1] as usize {
+            for p in u.row_start(i)..u.row_start(i + 1) {
                 u.vals[p] = self.vals[u.pos[p] as usize] * d;
             }
         }
@@ -210,16 +188,12 @@ impl StaticLu {
                 *zi = *b.get_unchecked(p);
             }
             // L z = P b, row by row: each row's columns are earlier rows, already final.
-            for i in 0..self.n {
-                self.lower.eliminate(i, z);
-            }
+            self.lower.forward(z);
             // (D^-1 U) x = D^-1 z, from the last row up.
             for (zi, d) in z.iter_mut().zip(&self.inv_diag) {
                 *zi *= d;
             }
-            for i in (0..self.n).rev() {
-                self.upper.eliminate(i, z);
-            }
+            self.upper.backward(z);
             for (zi, &p) in z.iter().zip(&self.perm) {
                 *b.get_unchecked_mut(p) = *zi;
             }

@@ -4,10 +4,9 @@
 
 use super::control::{Coefficients, MAX_ORDER};
 
-/// The backward differences `d[0..MAX_ORDER + 3]` (each of length n) and their work space.
+/// The backward differences `d[0..MAX_ORDER + 3]`, each of length n.
 pub(super) struct Differences {
     pub(super) d: Vec<Vec<f64>>,
-    scratch: Vec<Vec<f64>>,
 }
 
 /// The predicted state of a step and the history term `psi` of its corrector equation.
@@ -31,89 +30,195 @@ impl Differences {
         for (di, v) in d[1].iter_mut().zip(dy) {
             *di = v;
         }
-        Self { d, scratch: vec![vec![0.0; n]; MAX_ORDER + 1] }
+        Self { d }
     }
 
     /// Predictor of a step of `order`: `y = sum d[0..=order]`, and
     /// `psi = sum_k gamma_k / alpha_order d[k]`.
+    ///
+    /// This and [`Differences::accept`] and [`Differences::rescale`] run once per step over
+    /// all `(order + 1) n` differences; each is one pass over the states with the orders
+    /// unrolled (a const parameter), so every difference is loaded and stored once per call
+    /// and the states' loop vectorises. The sums keep the order of a loop over `k`.
     pub(super) fn predict(&self, order: usize, coeffs: &Coefficients, out: &mut Prediction) {
-        out.y.copy_from_slice(&self.d[0]);
-        out.psi.iter_mut().for_each(|v| *v = 0.0);
-        for k in 1..=order {
-            let w = coeffs.gamma[k] / coeffs.alpha[order];
-            for ((yp, ps), dk) in out.y.iter_mut().zip(out.psi.iter_mut()).zip(&self.d[k]) {
-                *yp += dk;
-                *ps += w * dk;
+        match order {
+            1 => self.predict_k::<1>(coeffs, out),
+            2 => self.predict_k::<2>(coeffs, out),
+            3 => self.predict_k::<3>(coeffs, out),
+            4 => self.predict_k::<4>(coeffs, out),
+            5 => self.predict_k::<5>(coeffs, out),
+            _ => unreachable!("order {order} outside 1..={MAX_ORDER}"),
+        }
+    }
+
+    fn predict_k<const K: usize>(&self, coeffs: &Coefficients, out: &mut Prediction) {
+        let n = out.y.len();
+        let w: [f64; K] = std::array::from_fn(|k| coeffs.gamma[k + 1] / coeffs.alpha[K]);
+        let d0 = &self.d[0][..n];
+        let d: [&[f64]; K] = std::array::from_fn(|k| &self.d[k + 1][..n]);
+        let (y, psi) = (&mut out.y[..n], &mut out.psi[..n]);
+        for i in 0..n {
+            let (mut yi, mut pi) = (d0[i], 0.0);
+            for k in 0..K {
+                yi += d[k][i];
+                pi += w[k] * d[k][i];
             }
+            y[i] = yi;
+            psi[i] = pi;
         }
     }
 
     /// Updates the array after an accepted step of `order` whose corrector moved the
-    /// prediction by `dvec`.
+    /// prediction by `dvec`: `d[order + 2] = dvec - d[order + 1]`, `d[order + 1] = dvec`, then
+    /// `d[k] += d[k + 1]` for `k = order` down to 0.
     pub(super) fn accept(&mut self, order: usize, dvec: &[f64]) {
-        let d = &mut self.d;
-        {
-            let (lo, hi) = d.split_at_mut(order + 2);
-            for ((next, last), dv) in hi[0].iter_mut().zip(lo[order + 1].iter_mut()).zip(dvec) {
-                *next = dv - *last;
-                *last = *dv;
-            }
+        match order + 1 {
+            2 => self.accept_k::<2>(dvec),
+            3 => self.accept_k::<3>(dvec),
+            4 => self.accept_k::<4>(dvec),
+            5 => self.accept_k::<5>(dvec),
+            6 => self.accept_k::<6>(dvec),
+            _ => unreachable!("order {order} outside 1..={MAX_ORDER}"),
         }
-        for k in (0..=order).rev() {
-            let (lo, hi) = d.split_at_mut(k + 1);
-            for (a, b) in lo[k].iter_mut().zip(&hi[0]) {
-                *a += b;
+    }
+
+    /// [`Differences::accept`] with `K = order + 1` rows below `d[order + 1]`.
+    fn accept_k<const K: usize>(&mut self, dvec: &[f64]) {
+        let n = dvec.len();
+        let (lo, hi) = self.d.split_at_mut(K);
+        let (last, next) = hi.split_at_mut(1);
+        let (last, next) = (&mut last[0][..n], &mut next[0][..n]);
+        let d: [&mut [f64]; K] = {
+            let mut it = lo.iter_mut().map(|v| &mut v[..n]);
+            std::array::from_fn(|_| it.next().expect("K rows"))
+        };
+        for i in 0..n {
+            let dv = dvec[i];
+            next[i] = dv - last[i];
+            last[i] = dv;
+            let mut above = dv;
+            for k in (0..K).rev() {
+                d[k][i] += above;
+                above = d[k][i];
             }
         }
     }
 
-    /// Rescales the differences up to `order` for a step-size change by `factor`.
+    /// Rescales the differences up to `order` for a step-size change by `factor`:
+    /// `D[..=order] = (R U)^T D[..=order]`.
     pub(super) fn rescale(&mut self, order: usize, factor: f64) {
-        let (d, scratch) = (&mut self.d, &mut self.scratch);
-        let r = compute_r(order, factor);
-        let u = compute_r(order, 1.0);
-        // RU = R * U; D[:order+1] = RU^T D[:order+1]
-        let k = order + 1;
-        let mut ru = [0.0; (MAX_ORDER + 1) * (MAX_ORDER + 1)];
-        for i in 0..k {
-            for j in 0..k {
-                ru[i * k + j] = (0..k).map(|m| r[i * k + m] * u[m * k + j]).sum();
-            }
+        match order + 1 {
+            2 => self.rescale_k::<2>(factor),
+            3 => self.rescale_k::<3>(factor),
+            4 => self.rescale_k::<4>(factor),
+            5 => self.rescale_k::<5>(factor),
+            6 => self.rescale_k::<6>(factor),
+            _ => unreachable!("order {order} outside 1..={MAX_ORDER}"),
         }
-        for (j, row) in scratch.iter_mut().enumerate().take(k) {
-            row.iter_mut().for_each(|v| *v = 0.0);
-            for i in 0..k {
-                let w = ru[i * k + j];
-                if w != 0.0 {
-                    for (a, b) in row.iter_mut().zip(&d[i]) {
-                        *a += w * b;
+    }
+
+    /// [`Differences::rescale`] of the first `K` rows.
+    fn rescale_k<const K: usize>(&mut self, factor: f64) {
+        let r = compute_r::<K>(factor);
+        let u = compute_r::<K>(1.0);
+        // RU = R * U
+        let ru: [[f64; K]; K] = std::array::from_fn(|i| std::array::from_fn(|j| (0..K).map(|m| r[i][m] * u[m][j]).sum()));
+        let n = self.d[0].len();
+        let d: [&mut [f64]; K] = {
+            let mut it = self.d.iter_mut().map(|v| &mut v[..n]);
+            std::array::from_fn(|_| it.next().expect("K rows"))
+        };
+        for e in 0..n {
+            let old: [f64; K] = std::array::from_fn(|i| d[i][e]);
+            for j in 0..K {
+                let mut s = 0.0;
+                for i in 0..K {
+                    if ru[i][j] != 0.0 {
+                        s += ru[i][j] * old[i];
                     }
                 }
+                d[j][e] = s;
             }
-        }
-        for j in 0..k {
-            std::mem::swap(&mut d[j], &mut scratch[j]);
         }
     }
 }
 
-/// The (order + 1)^2 matrix R of Shampine & Reichelt for a step-size ratio `factor`, row-major.
-fn compute_r(order: usize, factor: f64) -> Vec<f64> {
-    let k = order + 1;
-    let mut m = vec![0.0; k * k];
-    for j in 0..k {
-        m[j] = 1.0;
-    }
-    for i in 1..k {
-        for j in 1..k {
-            m[i * k + j] = (i as f64 - 1.0 - factor * j as f64) / i as f64;
+/// The K x K matrix R of Shampine & Reichelt (K = order + 1) for a step-size ratio `factor`.
+fn compute_r<const K: usize>(factor: f64) -> [[f64; K]; K] {
+    let mut m = [[0.0; K]; K];
+    m[0] = [1.0; K];
+    for i in 1..K {
+        for j in 1..K {
+            m[i][j] = (i as f64 - 1.0 - factor * j as f64) / i as f64;
         }
     }
     // cumulative product down the columns
-    for i in 1..k {
-        for j in 0..k {
-            m[i * k + j] *= m[(i - 1) * k + j];
+    for i in 1..K {
+        for j in 0..K {
+            m[i][j] *= m[i - 1][j];
         }
     }
     m
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn array(n: usize) -> Differences {
+        let y0: Vec<f64> = (0..n).map(|i| 1.0 + i as f64).collect();
+        let mut d = Differences::new(&y0, (0..n).map(|i| 0.1 * i as f64));
+        for (k, row) in d.d.iter_mut().enumerate().skip(2) {
+            row.iter_mut().enumerate().for_each(|(i, v)| *v = 0.01 * (k * i) as f64 - 0.02);
+        }
+        d
+    }
+
+    /// The fused passes give the loop-over-k formulas of their doc comments, exactly.
+    #[test]
+    fn fused_passes_match_the_formulas() {
+        let n = 7;
+        let coeffs = Coefficients::new();
+        for order in 1..=MAX_ORDER {
+            let d = array(n);
+            let mut pred = Prediction::new(n);
+            d.predict(order, &coeffs, &mut pred);
+            for i in 0..n {
+                let (mut y, mut psi) = (d.d[0][i], 0.0);
+                for k in 1..=order {
+                    y += d.d[k][i];
+                    psi += coeffs.gamma[k] / coeffs.alpha[order] * d.d[k][i];
+                }
+                assert_eq!((pred.y[i], pred.psi[i]), (y, psi));
+            }
+            let mut acc = array(n);
+            let dvec: Vec<f64> = (0..n).map(|i| 0.3 - 0.05 * i as f64).collect();
+            acc.accept(order, &dvec);
+            let mut expect = array(n).d;
+            for i in 0..n {
+                expect[order + 2][i] = dvec[i] - expect[order + 1][i];
+                expect[order + 1][i] = dvec[i];
+                for k in (0..=order).rev() {
+                    expect[k][i] += expect[k + 1][i];
+                }
+            }
+            assert_eq!(acc.d, expect);
+        }
+    }
+
+    /// Rescaling by `f` and then by `1 / f` restores the differences (up to round-off).
+    #[test]
+    fn rescale_round_trip() {
+        for order in 1..=MAX_ORDER {
+            let mut d = array(5);
+            d.rescale(order, 0.37);
+            d.rescale(order, 1.0 / 0.37);
+            let orig = array(5);
+            for k in 0..=order {
+                for i in 0..5 {
+                    assert!((d.d[k][i] - orig.d[k][i]).abs() < 1e-12, "order {order} d[{k}][{i}]");
+                }
+            }
+        }
+    }
 }

@@ -1,7 +1,6 @@
 //! The modified Newton solve of one BDF/NDF step, `M (psi + d) - c f(t, y_pred + d) = 0`, and
 //! the reuse of its Jacobian and factorised Newton matrix `M - c J` across steps.
 
-use super::control::weighted_rms;
 use super::differences::Prediction;
 use super::{Dae, SolverStats, Workspace};
 use crate::error::Error;
@@ -128,35 +127,53 @@ impl<'a> Newton<'a> {
                 self.lu_c = c;
                 self.rate_memory = None;
             }
-            // Newton iteration on M (psi + d) - c f(y_pred + d) = 0.
-            y_new.copy_from_slice(y_pred);
-            dvec.iter_mut().for_each(|v| *v = 0.0);
+            // Newton iteration on M (psi + d) - c f(y_pred + d) = 0, from d = 0 (the first
+            // iteration reads y_pred and writes y_new and dvec instead of adding to them).
             let mut dy_norm_old: Option<f64> = None;
             let mut converged = false;
             for k in 0..NEWTON_MAXITER {
                 n_iter = k + 1;
-                dae.rhs(t_new, y_new, f);
+                dae.rhs(t_new, if k == 0 { y_pred } else { y_new }, f);
                 stats.rhs_evals += 1;
                 stats.newton_iters += 1;
                 let mut finite = true;
-                for ((((r, fi), m), ps), dv) in rhs.iter_mut().zip(f.iter()).zip(mass).zip(psi).zip(dvec.iter()) {
-                    finite &= fi.is_finite();
-                    *r = c * fi - m * (ps + dv);
+                if k == 0 {
+                    for (((r, fi), m), ps) in rhs.iter_mut().zip(f.iter()).zip(mass).zip(psi) {
+                        finite &= fi.is_finite();
+                        *r = c * fi - m * (ps + 0.0);
+                    }
+                } else {
+                    for ((((r, fi), m), ps), dv) in rhs.iter_mut().zip(f.iter()).zip(mass).zip(psi).zip(dvec.iter()) {
+                        finite &= fi.is_finite();
+                        *r = c * fi - m * (ps + dv);
+                    }
                 }
                 if !finite {
                     break;
                 }
                 ws.system.solve(rhs);
-                let dy_norm = weighted_rms(1.0, rhs, weight);
+                // The norm of the correction, and the corrected state (left unused if the
+                // rate test below stops the iteration).
+                let mut sum = 0.0;
+                if k == 0 {
+                    for ((((yn, dv), r), yp), w) in y_new.iter_mut().zip(dvec.iter_mut()).zip(rhs.iter()).zip(y_pred).zip(weight) {
+                        sum += (r * w) * (r * w);
+                        *yn = yp + r;
+                        *dv = 0.0 + r;
+                    }
+                } else {
+                    for (((yn, dv), r), w) in y_new.iter_mut().zip(dvec.iter_mut()).zip(rhs.iter()).zip(weight) {
+                        sum += (r * w) * (r * w);
+                        *yn += r;
+                        *dv += r;
+                    }
+                }
+                let dy_norm = (sum / rhs.len() as f64).sqrt();
                 let rate = dy_norm_old.map(|old| dy_norm / old);
                 if let Some(r) = rate {
                     if r >= 1.0 || r.powi((NEWTON_MAXITER - k) as i32) / (1.0 - r) * dy_norm > self.tol {
                         break;
                     }
-                }
-                for ((yn, dv), r) in y_new.iter_mut().zip(dvec.iter_mut()).zip(rhs.iter()) {
-                    *yn += r;
-                    *dv += r;
                 }
                 if let Some(r) = rate {
                     self.rate_memory = Some(r);
