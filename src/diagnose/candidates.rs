@@ -7,10 +7,10 @@
 
 use serde::Serialize;
 
+use super::ageing::{self, Load};
 use super::features::Features;
 use crate::data::Recording;
 use crate::models::ModelKind;
-use crate::models::submodels::SeiModel;
 use crate::params::ParameterSet;
 use crate::problem::fitting::{FitParameter, INITIAL_SOC, ModelSpec};
 
@@ -30,6 +30,8 @@ pub enum Candidate {
     RcDynamics,
     Hysteresis,
     SeiGrowth,
+    LithiumPlating,
+    ActiveMaterialGrowth,
 }
 
 /// Missing physics or a parameter the model has but with the wrong value.
@@ -59,16 +61,8 @@ pub struct Augmentation {
 /// Multiplicative range (-) over which a parameter that the model already has is refitted.
 const MISMATCH_RANGE: f64 = 30.0;
 
-/// Multiplicative range (-) of the SEI's exchange current around the set's: a parameter set's
-/// ageing rate is a guess, not a measurement.
-const SEI_RANGE: f64 = 1000.0;
-
 /// How far (K) the fitted ambient may lie from a recording's first temperature.
 const AMBIENT_RANGE_K: f64 = 30.0;
-
-/// Full swings of the charge a recording must span for an ageing candidate (a single
-/// discharge is half a swing).
-const MIN_AGEING_CYCLES: f64 = 3.0;
 
 /// Fixed parameters the DFN brings to an SPM: the electrolyte's diffusivity, conductivity,
 /// transference number, thermodynamic factor, initial concentration, porosities and
@@ -84,16 +78,8 @@ const HYSTERESIS_START_RATE: f64 = 10.0;
 /// recording to show hysteresis without rests after both directions.
 const HYSTERESIS_BRANCH: f64 = 0.5;
 
-/// Charge throughput over twice the largest swing of the discharged charge `capacity` (A h,
-/// cumulative): about the number of full cycles the recording spans.
-fn equivalent_cycles(capacity: &[f64]) -> f64 {
-    let throughput: f64 = capacity.windows(2).map(|w| (w[1] - w[0]).abs()).sum();
-    let (lo, hi) = capacity.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), q| (a.min(*q), b.max(*q)));
-    if hi > lo { throughput / (2.0 * (hi - lo)) } else { 0.0 }
-}
-
 impl Candidate {
-    pub const ALL: [Candidate; 12] = [
+    pub const ALL: [Candidate; 14] = [
         Candidate::SeriesResistance,
         Candidate::Electrolyte,
         Candidate::ElectrolyteComposite,
@@ -106,6 +92,8 @@ impl Candidate {
         Candidate::RcDynamics,
         Candidate::Hysteresis,
         Candidate::SeiGrowth,
+        Candidate::LithiumPlating,
+        Candidate::ActiveMaterialGrowth,
     ];
 
     /// Short name, as the verdict uses it.
@@ -123,6 +111,8 @@ impl Candidate {
             Candidate::RcDynamics => "RC / double-layer dynamics",
             Candidate::Hysteresis => "OCV hysteresis",
             Candidate::SeiGrowth => "SEI growth (lithium lost as the film grows over the cycles)",
+            Candidate::LithiumPlating => "lithium plating (lithium lost to irreversible plating during the charges)",
+            Candidate::ActiveMaterialGrowth => "progressive loss of active material (stress-driven, over the cycles)",
         }
     }
 
@@ -134,7 +124,9 @@ impl Candidate {
             | Candidate::Thermal
             | Candidate::RcDynamics
             | Candidate::Hysteresis
-            | Candidate::SeiGrowth => {
+            | Candidate::SeiGrowth
+            | Candidate::LithiumPlating
+            | Candidate::ActiveMaterialGrowth => {
                 Class::MissingPhysics
             }
             _ => Class::ParameterMismatch,
@@ -156,6 +148,8 @@ impl Candidate {
             Candidate::RcDynamics => "transients of seconds after current steps that settle to an offset under load and decay in rests",
             Candidate::Hysteresis => "an offset at rest whose sign follows the direction of the last current (charge vs discharge), not its size",
             Candidate::SeiGrowth => "capacity and the end-of-discharge knee drift from cycle to cycle as lithium is consumed (a fixed stoichiometry offset does not drift), with a slowly growing film resistance",
+            Candidate::LithiumPlating => "capacity and the knee drift from cycle to cycle as lithium plates while the negative electrode's potential is low (late in fast charges), with no film resistance; grows steeply with the charge rate and at low temperature",
+            Candidate::ActiveMaterialGrowth => "one electrode's OCV features are compressed more from cycle to cycle (its capacity shrinks as it cycles), faster where the current stresses its particles most",
         }
     }
 
@@ -171,6 +165,8 @@ impl Candidate {
             Candidate::RcDynamics => "time constant R C of 1 ms to 30 s (longer is transport, not an interface)",
             Candidate::Hysteresis => "half-width up to 50 mV",
             Candidate::SeiGrowth => "SEI exchange current 0.001 to 1000 times the set's",
+            Candidate::LithiumPlating => "plating rate constant 0.001 to 1000 times the set's",
+            Candidate::ActiveMaterialGrowth => "up to 50 % of an electrode's active material lost over the recording (steady-profile estimate)",
         }
     }
 
@@ -191,6 +187,10 @@ impl Candidate {
             (SeriesResistance, RcDynamics) | (RcDynamics, SeriesResistance) => "sampling faster than 0.1 s around current steps, or an impedance spectrum".into(),
             (LithiumInventory, ActiveMaterial) | (ActiveMaterial, LithiumInventory) => {
                 "a slow (C/20) charge and discharge over the full window, read by differential voltage analysis".into()
+            }
+            (LithiumPlating, SeiGrowth) | (SeiGrowth, LithiumPlating) => "cycles at a second charge rate, or a storage period at high state of charge (both are cathodic side reactions on the same potential difference: plating grows steeply with the charge rate and at low temperature, SEI growth with time at high state of charge)".into(),
+            (ActiveMaterialGrowth, LithiumInventory | SeiGrowth | LithiumPlating | ActiveMaterial) | (LithiumInventory | SeiGrowth | LithiumPlating | ActiveMaterial, ActiveMaterialGrowth) => {
+                "a slow (C/20) cycle at the start and the end, read by differential voltage analysis".into()
             }
             (Thermal, _) | (_, Thermal) => "the same protocol at a second ambient temperature, with the cell temperature recorded".into(),
             _ if has_rates => format!(
@@ -235,22 +235,21 @@ impl Candidate {
             Candidate::SeriesResistance | Candidate::Kinetics | Candidate::RcDynamics if f.steps.is_empty() && f.distinct_rates < 2 => {
                 Some("needs current steps or loads at two or more rates".into())
             }
-            Candidate::SeiGrowth => {
-                let cycles = equivalent_cycles(&f.capacity);
-                (cycles < MIN_AGEING_CYCLES).then(|| format!("needs a recording over {MIN_AGEING_CYCLES} or more cycles (this one spans {cycles:.1} full swings of its charge)"))
-            }
+            Candidate::SeiGrowth | Candidate::LithiumPlating | Candidate::ActiveMaterialGrowth => ageing::too_few_cycles(f),
             _ => None,
         }
     }
 
     /// The model with this candidate added, or `None` when the model already has it or it
     /// cannot be added (e.g. electrolyte transport to a DFN). `fitted` lists the paths the
-    /// user's model already fits; they stay fitted beside the candidate's. `recorded_start`
-    /// is the recording's first temperature (K) when it holds one: the thermal candidate then
-    /// fits the ambient too (a cell need not start at the temperature of its room).
-    pub fn augment(self, spec: &ModelSpec, base: &ParameterSet, fitted: &[String], recorded_start: Option<f64>) -> Option<Augmentation> {
+    /// user's model already fits; they stay fitted beside the candidate's. With a recorded
+    /// first temperature in `load` the thermal candidate fits the ambient too (a cell need not
+    /// start at the temperature of its room); the progressive LAM candidate's range follows
+    /// its RMS current and duration.
+    pub fn augment(self, spec: &ModelSpec, base: &ParameterSet, fitted: &[String], load: &Load) -> Option<Augmentation> {
         let mut spec = *spec;
-        let p = base.clone();
+        let mut p = base.clone();
+        let mut aged = None;
         let around = |path: &str| {
             let v = p.get(path).ok().filter(|v| *v > 0.0)?;
             Some(FitParameter::log(path, v, v / MISMATCH_RANGE, v * MISMATCH_RANGE))
@@ -297,18 +296,10 @@ impl Candidate {
                     (factors, "electrolyte diffusivity and conductivity factors refitted".into())
                 }
             }
-            Candidate::SeiGrowth => {
-                // Not offered on the DFN: no PyBaMM-made multi-cycle DFN case holds it to
-                // account yet.
-                if spec.submodels.sei != SeiModel::None || spec.kind == ModelKind::Dfn {
-                    return None;
-                }
-                spec.submodels.sei = SeiModel::ReactionLimited;
-                // The film's fixed properties: initial thickness, molar volume, resistivity,
-                // equilibrium potential.
-                structural_parameters = 4;
-                let k = p.sei.exchange_current;
-                (vec![FitParameter::log("sei.exchange_current", k, k / SEI_RANGE, k * SEI_RANGE)], "reaction-limited SEI submodel on".into())
+            Candidate::SeiGrowth | Candidate::LithiumPlating | Candidate::ActiveMaterialGrowth => {
+                let (extra, fixed, change, changed_base) = ageing::augment(self, &mut spec, &p, load)?;
+                (structural_parameters, aged) = (fixed, changed_base);
+                (extra, change)
             }
             Candidate::Kinetics => (self.refitted_paths().iter().map(|p| around(p)).collect::<Option<_>>()?, "reaction rate constants of both electrodes refitted".into()),
             Candidate::SolidDiffusion => (self.refitted_paths().iter().map(|p| around(p)).collect::<Option<_>>()?, "particle diffusivities refitted".into()),
@@ -344,7 +335,7 @@ impl Candidate {
                 // Heat capacity, cooling area and the activation energies enter as fixed values.
                 structural_parameters = 3;
                 let mut extra = vec![FitParameter::log("thermal.heat_transfer_coefficient", 10.0, 0.1, 1000.0)];
-                let change = match recorded_start {
+                let change = match load.start_temperature {
                     Some(t0) => {
                         extra.push(FitParameter::linear("thermal.ambient_temperature", t0, t0 - AMBIENT_RANGE_K, t0 + AMBIENT_RANGE_K));
                         "lumped thermal submodel on, ambient fitted to the recorded temperature"
@@ -385,6 +376,9 @@ impl Candidate {
         if extra.is_empty() && self == Candidate::SeriesResistance && fitted.contains(&"cell.contact_resistance".to_string()) {
             return None;
         }
+        if let Some(b) = aged {
+            p = b;
+        }
         Some(Augmentation { spec, base: p, extra, replaces, structural_parameters, change })
     }
 
@@ -408,7 +402,7 @@ impl Candidate {
 
     /// Why fitted `values` of `names` (parameter units) are implausible for this candidate,
     /// relative to the user's set `base`; `None` when they are plausible.
-    pub fn implausible(self, names: &[String], values: &[f64], base: &ParameterSet) -> Option<String> {
+    pub fn implausible(self, names: &[String], values: &[f64], base: &ParameterSet, load: &Load) -> Option<String> {
         let get = |path: &str| names.iter().position(|n| n == path).map(|k| values[k]);
         match self {
             Candidate::SeriesResistance => {
@@ -442,10 +436,7 @@ impl Candidate {
                 let h = get("cell.hysteresis_voltage")?;
                 (h > 0.05).then(|| format!("hysteresis half-width {:.1} mV exceeds 50 mV", h * 1e3))
             }
-            Candidate::SeiGrowth => {
-                let ratio = get("sei.exchange_current")? / base.sei.exchange_current;
-                (!(1.0 / SEI_RANGE..=SEI_RANGE).contains(&ratio)).then(|| format!("SEI exchange current at {ratio:.3e} times the set's is outside 0.001 to 1000"))
-            }
+            Candidate::SeiGrowth | Candidate::LithiumPlating | Candidate::ActiveMaterialGrowth => ageing::implausible(self, get, base, load),
             Candidate::Electrolyte | Candidate::ElectrolyteComposite => None,
         }
     }
@@ -465,7 +456,7 @@ impl Candidate {
 
     /// A more specific name from the fitted values where the candidate has one (which
     /// electrode lost active material, whether lithium was lost or gained).
-    pub fn named_by_values(self, names: &[String], values: &[f64], base: &ParameterSet) -> String {
+    pub fn named_by_values(self, names: &[String], values: &[f64], base: &ParameterSet, load: &Load) -> String {
         let get = |path: &str| names.iter().position(|n| n == path).map(|k| values[k]);
         match self {
             Candidate::ActiveMaterial => {
@@ -473,6 +464,11 @@ impl Candidate {
                 let (n, p) = (loss("negative.active_fraction"), loss("positive.active_fraction"));
                 let (which, l) = if p >= n { ("positive", p) } else { ("negative", n) };
                 format!("loss of active material, {which} electrode ({:.0} % of its capacity)", 100.0 * l)
+            }
+            Candidate::ActiveMaterialGrowth => {
+                let (n, p) = ageing::lam_losses(get, base, load);
+                let (which, l) = if p > n { ("positive", p) } else { ("negative", n) };
+                format!("progressive loss of active material, {which} electrode (about {:.1} % of its capacity over the recording)", 100.0 * l)
             }
             _ => self.name().to_string(),
         }
@@ -490,11 +486,11 @@ mod tests {
         let base = crate::params::chen2020();
         let names: Vec<String> = ["positive.diffusivity", "negative.active_fraction", "positive.active_fraction"].map(String::from).to_vec();
         let values = [0.3 * base.positive.diffusivity, 0.92 * base.negative.active_fraction, base.positive.active_fraction];
-        assert_eq!(Candidate::ActiveMaterial.implausible(&names, &values, &base), None);
-        assert_eq!(Candidate::SolidDiffusion.implausible(&names, &values, &base), None);
+        assert_eq!(Candidate::ActiveMaterial.implausible(&names, &values, &base, &Load::default()), None);
+        assert_eq!(Candidate::SolidDiffusion.implausible(&names, &values, &base, &Load::default()), None);
         // Each still refuses its own implausible values.
         let values = [0.01 * base.positive.diffusivity, 0.4 * base.negative.active_fraction, base.positive.active_fraction];
-        assert!(Candidate::ActiveMaterial.implausible(&names, &values, &base).is_some_and(|why| why.contains("negative.active_fraction")));
-        assert!(Candidate::SolidDiffusion.implausible(&names, &values, &base).is_some_and(|why| why.contains("positive.diffusivity")));
+        assert!(Candidate::ActiveMaterial.implausible(&names, &values, &base, &Load::default()).is_some_and(|why| why.contains("negative.active_fraction")));
+        assert!(Candidate::SolidDiffusion.implausible(&names, &values, &base, &Load::default()).is_some_and(|why| why.contains("positive.diffusivity")));
     }
 }

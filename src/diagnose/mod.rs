@@ -19,6 +19,7 @@
 //!
 //! [`diagnose_rounds`] repeats the diagnosis on the augmented model to find a second effect.
 
+mod ageing;
 pub mod backward;
 mod baseline;
 pub mod candidates;
@@ -34,6 +35,7 @@ pub mod synthetic;
 use rayon::prelude::*;
 use serde::Serialize;
 
+pub use ageing::Load;
 pub use candidates::{Candidate, Class};
 use features::Features;
 pub use locate::ResidualAnalysis;
@@ -245,6 +247,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
     let noise = analysis.noise;
     let fitted_paths: Vec<String> = warm.iter().map(|p| p.path.clone()).collect();
     let n_train = split.train_points();
+    let load = Load::of(&data);
 
     // The most any candidate can remove is what lies above the noise: when that is below
     // the size floor, nothing can be named and no candidate is refitted.
@@ -257,7 +260,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
             let aug = match c.not_identifiable(&data, &features, q) {
                 _ if no_room => Err(format!("not refitted: the user's model leaves {} RMS above the noise, less than the {} a named effect must remove", report::mv(room), report::mv(options.margins.size_floor(noise)))),
                 Some(why) => Err(format!("not identifiable from this recording: {why}")),
-                None => c.augment(&options.spec, base, &fitted_paths, data.temperature.as_ref().and_then(|t| t.first().copied())).ok_or_else(|| "not applicable to this model".to_string()),
+                None => c.augment(&options.spec, base, &fitted_paths, &load).ok_or_else(|| "not applicable to this model".to_string()),
             };
             (c, aug)
         })
@@ -305,11 +308,11 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
                         // set's values is that other candidate: not named twice.
                         let alias = c.structural_alias(options.spec.kind).filter(|_| keeps_set_values(&f, &names, base));
                         out.implausible = c
-                            .implausible(&names, &values, base)
+                            .implausible(&names, &values, base, &load)
                             .or_else(|| c.unresolved(&names, &values, &data))
                             .or_else(|| alias.map(|a| format!("its values are the set's: it is {} alone", a.name())));
                         out.named = out.clears_margins && out.implausible.is_none();
-                        out.name = c.named_by_values(&f.names, &f.values, base);
+                        out.name = c.named_by_values(&f.names, &f.values, base, &load);
                         out.fit = Some(f);
                     }
                 }
@@ -337,7 +340,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
     // No single effect: two may be hiding each other. One effect named that leaves far more
     // than the noise on held-out points may be standing in for two: a pair that beats it by
     // the same margins (against it, not the user's model) replaces it.
-    let round = pairs::Round { options, base, data: &data, split: &split, baseline: &baseline, fitted_paths: &fitted_paths, noise };
+    let round = pairs::Round { options, base, data: &data, split: &split, baseline: &baseline, fitted_paths: &fitted_paths, noise, load };
     let best_single = outcomes.first().filter(|c| c.named).and_then(|c| c.fit.as_ref());
     // A tie between two singles that both leave far more than the noise may be two effects
     // that each explain part of the recording.

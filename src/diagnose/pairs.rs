@@ -24,6 +24,7 @@ pub(super) struct Round<'a> {
     pub baseline: &'a FitOutcome,
     pub fitted_paths: &'a [String],
     pub noise: f64,
+    pub load: super::Load,
 }
 
 /// Every named pair of `singles` (refitted candidates), each as one candidate outcome named
@@ -128,11 +129,10 @@ fn fit_pair(a: &CandidateOutcome, b: &CandidateOutcome, round: &Round, start: Pa
     let n_train = round.split.train_points();
     let next_a = a.next.as_ref()?;
     let paths: Vec<String> = next_a.fitted.iter().map(|p| p.path.clone()).collect();
-    let start_temperature = round.data.temperature.as_ref().and_then(|t| t.first().copied());
-    let mut aug = b.candidate.augment(&next_a.spec, &next_a.base, &paths, start_temperature)?;
+    let mut aug = b.candidate.augment(&next_a.spec, &next_a.base, &paths, &round.load)?;
     let partner: Vec<String> = aug.extra.iter().map(|p| p.path.clone()).collect();
     // The first effect's fixed structural parameters count too.
-    let structural_a = a.candidate.augment(&round.options.spec, round.base, round.fitted_paths, start_temperature).map_or(0, |x| x.structural_parameters);
+    let structural_a = a.candidate.augment(&round.options.spec, round.base, round.fitted_paths, &round.load).map_or(0, |x| x.structural_parameters);
     let change = format!("{}; {}", a.change, aug.change);
     // Both effects start from no effect (the user's parameters at their fitted values, the
     // candidates' at the set's), as a single does: the first effect's own fit may be a
@@ -142,7 +142,9 @@ fn fit_pair(a: &CandidateOutcome, b: &CandidateOutcome, round: &Round, start: Pa
     for p in warm.iter_mut() {
         let start = match round.baseline.names.iter().position(|n| *n == p.path) {
             Some(k) => round.baseline.values[k],
-            None => round.base.get(&p.path).unwrap_or(p.initial),
+            // The first effect's base: the set's values, or no effect where the candidate
+            // sets one (the progressive LAM's terms).
+            None => next_a.base.get(&p.path).unwrap_or(p.initial),
         };
         p.initial = start.clamp(p.lower, p.upper);
     }
@@ -185,11 +187,11 @@ fn fit_pair(a: &CandidateOutcome, b: &CandidateOutcome, round: &Round, start: Pa
     let unchanged = b.class == super::Class::ParameterMismatch && super::keeps_set_values(&fit, &partner, round.base);
     let implausible = [a.candidate, b.candidate]
         .iter()
-        .find_map(|c| c.implausible(&names, &values, round.base).or_else(|| c.unresolved(&names, &values, round.data)))
+        .find_map(|c| c.implausible(&names, &values, round.base, &round.load).or_else(|| c.unresolved(&names, &values, round.data)))
         .or_else(|| undetermined.into_iter().next())
         .or_else(|| unchanged.then(|| format!("{} keeps the set's values: it adds nothing", b.candidate.name())));
     // Named by the pair's own values (e.g. the share of capacity lost).
-    let name = format!("{} together with {}", a.candidate.named_by_values(&fit.names, &fit.values, round.base), b.candidate.named_by_values(&fit.names, &fit.values, round.base));
+    let name = format!("{} together with {}", a.candidate.named_by_values(&fit.names, &fit.values, round.base, &round.load), b.candidate.named_by_values(&fit.names, &fit.values, round.base, &round.load));
     Some(CandidateOutcome {
         candidate: a.candidate,
         partner: Some(b.candidate),
