@@ -60,16 +60,16 @@ pub fn superseded(rounds: &[Diagnosis], model: &FinalModel, options: &DiagnoseOp
         }
         // A pair the final model needs: is one of its effects not needed?
         let members = [(c.candidate, c.partner), (c.partner.expect("a pair"), Some(c.candidate))];
-        let start_temperature = last.data.temperature.as_ref().and_then(|t| t.first().copied());
+        let load = super::ageing::Load::of(&last.data);
         let mut parts = members.into_iter().filter_map(|(member, other)| {
-            let aug = member.augment(&d.spec, model.base, &d.baseline.names, start_temperature)?;
+            let aug = member.augment(&d.spec, model.base, &d.baseline.names, &load)?;
             if aug.spec.kind != d.spec.kind {
                 return None;
             }
             let own: Vec<&String> = added.iter().copied().filter(|p| aug.extra.iter().any(|e| &e.path == *p)).collect();
             let spec = reverted(model.spec, d.spec.submodels, aug.spec.submodels);
-            let mut s = take_out(model, spec, &own, &member.named_by_values(&f.names, &f.values, model.base), i, last, options)?;
-            s.kept = other.map(|o| own_name(c, o, model.base));
+            let mut s = take_out(model, spec, &own, &member.named_by_values(&f.names, &f.values, model.base, &load), i, last, options)?;
+            s.kept = other.map(|o| own_name(c, o, model.base, &load));
             Some(s)
         });
         // At most one: the other then stays named.
@@ -96,8 +96,8 @@ fn reverted(mut spec: ModelSpec, before: crate::models::Submodels, after: crate:
 }
 
 /// The name of a pair's member `member` by the pair's fitted values.
-fn own_name(c: &CandidateOutcome, member: super::Candidate, base: &ParameterSet) -> String {
-    c.fit.as_ref().map_or(member.name().to_string(), |f| member.named_by_values(&f.names, &f.values, base))
+fn own_name(c: &CandidateOutcome, member: super::Candidate, base: &ParameterSet, load: &super::ageing::Load) -> String {
+    c.fit.as_ref().map_or(member.name().to_string(), |f| member.named_by_values(&f.names, &f.values, base, load))
 }
 
 /// The final model refitted with `spec` and without the fitted `paths` (at the set's values),
