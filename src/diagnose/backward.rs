@@ -92,6 +92,16 @@ fn reverted(mut spec: ModelSpec, before: crate::models::Submodels, after: crate:
     if before.hysteresis != after.hysteresis {
         spec.submodels.hysteresis = before.hysteresis;
     }
+    // The ageing candidates' submodels (SEI, plating, progressive LAM with its diffusion).
+    if before.sei != after.sei {
+        spec.submodels.sei = before.sei;
+    }
+    if before.plating != after.plating {
+        spec.submodels.plating = before.plating;
+    }
+    if (before.lam, before.stress_induced_diffusion) != (after.lam, after.stress_induced_diffusion) {
+        (spec.submodels.lam, spec.submodels.stress_induced_diffusion) = (before.lam, before.stress_induced_diffusion);
+    }
     spec
 }
 
