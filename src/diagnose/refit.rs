@@ -142,6 +142,9 @@ pub struct FitOutcome {
     pub std_errors: Vec<f64>,
     /// Which fitted values ended on a search bound.
     pub on_bound: Vec<bool>,
+    /// Which fitted values move the voltage at all (false: no effect on this recording at
+    /// the fitted value, e.g. a rate on its no-effect bound; left out of the evidence).
+    pub informed: Vec<bool>,
     /// Parameters counted in the information criteria: fitted plus the fixed ones a
     /// structural change brings in.
     pub parameters: usize,
@@ -153,9 +156,13 @@ pub struct FitOutcome {
     pub lag1: f64,
     /// Gaussian log-likelihood of the training points (white noise, `σ` at its maximum).
     pub log_likelihood: f64,
-    /// `ln det` of the Fisher information in the search coordinates and `Σ ln(width)` of
-    /// the uniform priors on them, for a Laplace evidence.
+    /// For a Laplace evidence: `ln det` of the Fisher information in the search coordinates
+    /// over the `information_rank` directions the data determine, and the `ln` of the uniform
+    /// prior's volume over as many directions (`Σ ln(width)` of the informed parameters,
+    /// scaled by the rank over their number: a direction the data leave free integrates its
+    /// prior to 1).
     pub ln_det_information: f64,
+    pub information_rank: usize,
     pub ln_prior_volume: f64,
     /// Whether the search converged (false: it stopped on its iteration cap).
     pub converged: bool,
@@ -254,17 +261,21 @@ pub fn fit_and_score(
     let n = split.train_points() as f64;
     let sse: f64 = r.iter().zip(&split.train).map(|(r, w)| w * r * r).sum();
     let sigma2 = (sse / n).max(f64::MIN_POSITIVE);
-    let ln_prior_volume = problem
+    let informed_widths: Vec<f64> = problem
         .parameters
         .iter()
-        .map(|p| if p.log { (p.upper / p.lower).ln() } else { 1.0f64.ln() })
-        .sum();
+        .zip(&fit.informed)
+        .filter(|(_, informed)| **informed)
+        .map(|(p, _)| if p.log { (p.upper / p.lower).ln() } else { 1.0f64.ln() })
+        .collect();
+    let ln_prior_volume = informed_widths.iter().sum::<f64>() * fit.information_rank as f64 / informed_widths.len().max(1) as f64;
     Ok(FitOutcome {
         model: label,
         names: problem.parameters.iter().map(|p| p.path.clone()).collect(),
         values: fit.x.clone(),
         std_errors: fit.std_errors.clone(),
         on_bound: fit.on_bound.clone(),
+        informed: fit.informed.clone(),
         parameters: k + structural,
         rmse_train: sigma2.sqrt(),
         rmse_holdout: weighted_rms(&r, &indicator(r.len(), |i| split.holdout[i])),
@@ -272,6 +283,7 @@ pub fn fit_and_score(
         lag1: lag1(&r, &split.train),
         log_likelihood: -0.5 * n * ((2.0 * std::f64::consts::PI * sigma2).ln() + 1.0),
         ln_det_information: fit.ln_det_information,
+        information_rank: fit.information_rank,
         ln_prior_volume,
         converged: fit.converged,
         simulations,

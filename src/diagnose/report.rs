@@ -6,16 +6,34 @@ use std::fmt::Write;
 use super::{Candidate, CandidateOutcome, Class, Diagnosis, FitOutcome, ResidualAnalysis, Verdict};
 use crate::problem::fitting::INITIAL_SOC;
 
-/// A fitted value with its standard error in readable units.
-pub fn format_parameter(path: &str, value: f64, std_error: f64) -> String {
+/// What a fit says about one value besides the value itself.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Standing {
+    /// Standard error (parameter units; infinite when the data do not determine it).
+    pub std_error: f64,
+    /// The value does not move the voltage of this recording (a rate on its no-effect bound).
+    pub no_effect: bool,
+    /// The value ended on its search bound: the optimum may lie beyond it.
+    pub on_bound: bool,
+}
+
+/// A fitted value with its standard error in readable units, and a note when it sits on its
+/// search bound or has no effect on the recording.
+pub fn format_parameter(path: &str, value: f64, standing: Standing) -> String {
+    let Standing { std_error, no_effect, on_bound } = standing;
     let name = path.rsplit('.').next().unwrap_or(path);
-    let se = |scale: f64, digits: usize| {
-        if std_error.is_finite() { format!(" ± {:.*}", digits, std_error * scale) } else { " (not identifiable)".into() }
+    let bound = if on_bound { ", on its search bound" } else { "" };
+    let spread = |e: String| {
+        if no_effect {
+            format!(" (no effect on this recording{bound})")
+        } else if std_error.is_finite() {
+            format!(" ± {e}{}", if on_bound { " (on its search bound)" } else { "" })
+        } else {
+            format!(" (not identifiable{bound})")
+        }
     };
-    let scientific = |unit: &str| {
-        let e = if std_error.is_finite() { format!(" ± {std_error:.2e}") } else { " (not identifiable)".into() };
-        format!("{path} = {value:.3e}{e}{unit}")
-    };
+    let se = |scale: f64, digits: usize| spread(format!("{:.*}", digits, std_error * scale));
+    let scientific = |unit: &str| format!("{path} = {value:.3e}{}{unit}", spread(format!("{std_error:.2e}")));
     match name {
         "contact_resistance" | "rc_resistance" => format!("{path} = {:.2}{} mOhm", value * 1e3, se(1e3, 2)),
         "hysteresis_voltage" => format!("{path} = {:.2}{} mV", value * 1e3, se(1e3, 2)),
@@ -137,9 +155,9 @@ fn parameters_in_words(f: &FitOutcome, only: &[String]) -> String {
     f.names
         .iter()
         .zip(&f.values)
-        .zip(&f.std_errors)
-        .filter(|((n, _), _)| only.is_empty() || only.contains(n))
-        .map(|((n, v), e)| format_parameter(n, *v, *e))
+        .enumerate()
+        .filter(|(_, (n, _))| only.is_empty() || only.contains(n))
+        .map(|(i, (n, v))| format_parameter(n, *v, Standing { std_error: f.std_errors[i], no_effect: !f.informed[i], on_bound: f.on_bound[i] }))
         .collect::<Vec<_>>()
         .join(", ")
 }

@@ -79,9 +79,10 @@ impl Margins {
 }
 
 /// Laplace log evidence with `n_eff` effective points out of `n`: the log-likelihood scaled
-/// by `n_eff / n`, the Fisher information likewise.
+/// by `n_eff / n`, the Fisher information likewise. A direction the data leave free
+/// integrates its (normalised) prior to 1, so only the determined ones count.
 fn laplace(f: &FitOutcome, n: f64, n_eff: f64) -> f64 {
-    let k = f.names.len() as f64;
+    let k = f.information_rank as f64;
     let scale = n_eff / n;
     scale * f.log_likelihood + 0.5 * k * (2.0 * std::f64::consts::PI).ln() - 0.5 * (f.ln_det_information + k * scale.ln()) - f.ln_prior_volume
 }

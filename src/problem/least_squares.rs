@@ -46,11 +46,19 @@ pub struct LeastSquaresFit {
     /// the weighted points, inflated by `(1 + ρ)/(1 - ρ)` for a lag-1 residual
     /// autocorrelation `ρ > 0`; infinite along directions the data do not determine.
     pub std_errors: Vec<f64>,
+    /// Whether each parameter moves the residuals at all at `x` (false: its Jacobian column
+    /// is negligible, e.g. a rate on its no-effect bound). Uninformed parameters are left out
+    /// of the information matrix, so they neither make it singular nor count in its
+    /// determinant.
+    pub informed: Vec<bool>,
     /// Weighted sum of squared residuals (V²) and the number of weighted points.
     pub sse: f64,
     pub points: usize,
-    /// `ln det(JᵀJ / σ²)` in scaled coordinates, for a Laplace evidence (-inf when singular).
+    /// `ln det(JᵀJ / σ²)` over the directions the data determine (the `information_rank`
+    /// non-null eigenvalues among the informed parameters) in scaled coordinates, for a
+    /// Laplace evidence.
     pub ln_det_information: f64,
+    pub information_rank: usize,
     /// Which fitted values lie on a bound (within 0.1 % of the scaled range).
     pub on_bound: Vec<bool>,
     /// Whether the search stopped on its tolerance (false: on its iteration cap).
@@ -245,7 +253,8 @@ pub fn levenberg_marquardt<P: LeastSquares>(problem: &P, start: &[f64], settings
     let rho = problem.lag1(&outputs).max(0.0).min(0.99);
     let inflation = (1.0 + rho) / (1.0 - rho);
     let (jtj, _) = normal_equations(&jac, &r);
-    let (cov, ln_det) = inverse_and_log_det(&jtj, k)?;
+    let informed = informed_parameters(&jtj, k);
+    let (cov, ln_det, rank) = informed_inverse_and_log_det(&jtj, k, &informed)?;
     let dxdz = scale.dx_dz(&x);
     let std_errors = (0..k).map(|i| (sigma2 * inflation * cov[i * k + i]).sqrt() * dxdz[i]).collect();
     let on_bound = z.iter().zip(&bounds).map(|(v, (lo, hi))| (v - lo).abs() <= 1e-3 * (hi - lo) || (hi - v).abs() <= 1e-3 * (hi - lo)).collect();
@@ -254,7 +263,9 @@ pub fn levenberg_marquardt<P: LeastSquares>(problem: &P, start: &[f64], settings
         std_errors,
         sse: cost,
         points,
-        ln_det_information: ln_det - k as f64 * sigma2.ln(),
+        ln_det_information: ln_det - rank as f64 * sigma2.ln(),
+        information_rank: rank,
+        informed,
         on_bound,
         converged,
         iterations,
@@ -329,20 +340,122 @@ fn solve_symmetric(a: &[f64], b: &[f64], k: usize) -> Result<Vec<f64>, Error> {
 }
 
 /// Inverse (infinite diagonal along null directions) and `ln det` of a symmetric `k × k`.
-fn inverse_and_log_det(a: &[f64], k: usize) -> Result<(Vec<f64>, f64), Error> {
+/// Which of the `k` parameters the residuals depend on: a diagonal of `JᵀJ` above `1e-10`
+/// of the largest (the threshold below which [`inverse_and_log_det`] calls a direction null).
+fn informed_parameters(jtj: &[f64], k: usize) -> Vec<bool> {
+    let top = (0..k).map(|i| jtj[i * k + i]).fold(0.0f64, f64::max);
+    (0..k).map(|i| jtj[i * k + i] > 1e-10 * top).collect()
+}
+
+/// [`inverse_and_log_det`] of the block of `a` the `informed` parameters span, scattered back
+/// into `k x k` with an infinite variance for each uninformed parameter.
+fn informed_inverse_and_log_det(a: &[f64], k: usize, informed: &[bool]) -> Result<(Vec<f64>, f64, usize), Error> {
+    let keep: Vec<usize> = (0..k).filter(|i| informed[*i]).collect();
+    let m = keep.len();
+    let block: Vec<f64> = keep.iter().flat_map(|i| keep.iter().map(move |j| a[i * k + j])).collect();
+    let (inv, ln_det, rank) = if m == 0 { (Vec::new(), 0.0, 0) } else { inverse_and_log_det(&block, m)? };
+    let mut full = vec![0.0; k * k];
+    for i in (0..k).filter(|i| !informed[*i]) {
+        full[i * k + i] = f64::INFINITY;
+    }
+    for (p, i) in keep.iter().enumerate() {
+        for (q, j) in keep.iter().enumerate() {
+            full[i * k + j] = inv[p * m + q];
+        }
+    }
+    Ok((full, ln_det, rank))
+}
+/// The pseudo-inverse of the symmetric positive semi-definite `k x k` matrix `a` (infinite
+/// variance for a parameter along a direction with an eigenvalue below `1e-10` of the
+/// largest), the `ln det` over the other directions, and how many they are.
+fn inverse_and_log_det(a: &[f64], k: usize) -> Result<(Vec<f64>, f64, usize), Error> {
     let (values, vectors) = sym_eigen(a, k)?;
     let top = values.iter().fold(0.0f64, |m, v| m.max(v.abs()));
     let mut inv = vec![0.0; k * k];
     let mut ln_det = 0.0;
+    let mut rank = 0;
     for m in 0..k {
         let null = !(values[m] > 1e-10 * top);
-        ln_det += if null { f64::NEG_INFINITY } else { values[m].ln() };
+        if !null {
+            ln_det += values[m].ln();
+            rank += 1;
+        }
         for i in 0..k {
             for j in 0..k {
                 inv[i * k + j] += if null { if vectors[i * k + m] != 0.0 && i == j { f64::INFINITY } else { 0.0 } } else { vectors[i * k + m] * vectors[j * k + m] / values[m] };
             }
         }
     }
-    Ok((inv, ln_det))
+    Ok((inv, ln_det, rank))
 }
 
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `v = slope(x) t` against a line of slope 2 with ±0.01 alternating noise.
+    struct Line {
+        parameters: Vec<FitParameter>,
+        slope: fn(&[f64]) -> f64,
+        data: Vec<f64>,
+    }
+
+    impl Line {
+        fn new(parameters: Vec<FitParameter>, slope: fn(&[f64]) -> f64) -> Self {
+            let data = (0..50).map(|t| 2.0 * t as f64 + if t % 2 == 0 { 0.01 } else { -0.01 }).collect();
+            Self { parameters, slope, data }
+        }
+    }
+
+    impl LeastSquares for Line {
+        type Run = Vec<f64>;
+        fn parameters(&self) -> &[FitParameter] {
+            &self.parameters
+        }
+        fn run(&self, x: &[f64]) -> Result<Vec<f64>, Error> {
+            Ok((0..self.data.len()).map(|t| (self.slope)(x) * t as f64).collect())
+        }
+        fn weighted_residuals(&self, run: &Vec<f64>) -> Vec<f64> {
+            run.iter().zip(&self.data).map(|(m, d)| m - d).collect()
+        }
+        fn counts(&self, run: &Vec<f64>) -> (usize, usize) {
+            (run.len(), run.len())
+        }
+        fn lag1(&self, _: &Vec<f64>) -> f64 {
+            0.0
+        }
+        fn curve(run: Vec<f64>) -> Vec<f64> {
+            run
+        }
+    }
+
+    #[test]
+    fn a_parameter_without_effect_is_left_out_of_the_information() {
+        // `b` does not enter the model.
+        let parameters = vec![FitParameter::log("a", 1.0, 0.1, 10.0), FitParameter::log("b", 1e-3, 1e-6, 1.0)];
+        let fit = levenberg_marquardt(&Line::new(parameters, |x| x[0]), &[1.0, 1e-3], LmSettings::default()).unwrap();
+        assert_eq!(fit.informed, vec![true, false]);
+        assert_eq!(fit.information_rank, 1);
+        assert!((fit.x[0] - 2.0).abs() < 1e-4, "{:?}", fit.x);
+        assert!(fit.std_errors[0].is_finite() && fit.std_errors[0] > 0.0, "{:?}", fit.std_errors);
+        assert!(fit.std_errors[1].is_infinite());
+        // The determinant is a's alone, Σ t² a² / σ² in the log coordinate, to the 1 % of its
+        // forward-difference column (step 1e-2 in ln a).
+        let sigma2 = fit.sse / 48.0;
+        let expected = ((0..50).map(|t| (t as f64).powi(2)).sum::<f64>() * fit.x[0].powi(2) / sigma2).ln();
+        assert!((fit.ln_det_information - expected).abs() < 2e-2, "{} vs {expected}", fit.ln_det_information);
+    }
+
+    #[test]
+    fn a_direction_the_data_leave_free_does_not_count_in_the_determinant() {
+        // Only the product `a b` is determined.
+        let parameters = vec![FitParameter::log("a", 1.0, 0.1, 10.0), FitParameter::log("b", 1.0, 0.1, 10.0)];
+        let fit = levenberg_marquardt(&Line::new(parameters, |x| x[0] * x[1]), &[1.0, 1.0], LmSettings::default()).unwrap();
+        assert_eq!(fit.informed, vec![true, true]);
+        assert_eq!(fit.information_rank, 1);
+        assert!(fit.ln_det_information.is_finite(), "{}", fit.ln_det_information);
+        assert!(fit.std_errors.iter().all(|e| e.is_infinite()), "{:?}", fit.std_errors);
+        assert!((fit.x[0] * fit.x[1] - 2.0).abs() < 1e-4, "{:?}", fit.x);
+    }
+}
