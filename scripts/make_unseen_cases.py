@@ -57,19 +57,22 @@ def cycler_sampling(t, i, v, dense=60.0, short=300.0, load_period=30.0, rest_per
 
 
 def write_case(root, name, model, params, steps, truth, initial_soc=None, temperature=False, seed=0, noise=NOISE_V, period=1,
-               cycler=None, compare=None):
+               cycler=None, compare=None, leak_A=0.0, compare_steps=None):
     """`cycler` (a dict) writes what a cycler measures instead of the simulation's own points:
     `current_noise_A` (Gaussian, on the set current), `quantum_V` / `quantum_A` / `quantum_K`
     (resolution) and `irregular` (True: `cycler_sampling` from a 1 s simulation). `compare`
     (a model) adds `candidate_rmse_mV`: that model with the set's nominal parameters
     (`compare_params`, default Chen 2020 at the case's ambient), same protocol and initial
-    state, against the recording, and `effect_rmse_mV` (the same against the noise-free voltage)."""
+    state, against the recording, and `effect_rmse_mV` (the same against the noise-free voltage).
+    `leak_A` (discharge positive) is a current the cell draws inside itself that the cycler does
+    not see: `steps` carry it, the recorded current is the simulated one less it, and the
+    comparison runs `compare_steps` (the protocol as the cycler set it)."""
     experiment = pybamm.Experiment(steps, period=f"{period} seconds")
     solver = pybamm.IDAKLUSolver(rtol=1e-8, atol=1e-8)
     sim = pybamm.Simulation(model, parameter_values=params, experiment=experiment, solver=solver)
     sol = sim.solve(initial_soc=initial_soc)
     t = sol["Time [s]"].entries
-    i = sol["Current [A]"].entries
+    i = sol["Current [A]"].entries - leak_A
     v = sol["Voltage [V]"].entries
     temp = sol["X-averaged cell temperature [K]"].entries if temperature else None
     rng = np.random.default_rng(seed)
@@ -103,7 +106,8 @@ def write_case(root, name, model, params, steps, truth, initial_soc=None, temper
         amb = truth.get("ambient_temperature_K", 298.15)
         p0 = truth.pop("compare_params", None) or chen()
         p0.update({"Ambient temperature [K]": amb, "Initial temperature [K]": amb})
-        ref = pybamm.Simulation(compare, parameter_values=p0, experiment=experiment, solver=pybamm.IDAKLUSolver(rtol=1e-8, atol=1e-8)).solve(initial_soc=initial_soc)
+        ref_experiment = pybamm.Experiment(compare_steps, period=f"{period} seconds") if compare_steps is not None else experiment
+        ref = pybamm.Simulation(compare, parameter_values=p0, experiment=ref_experiment, solver=pybamm.IDAKLUSolver(rtol=1e-8, atol=1e-8)).solve(initial_soc=initial_soc)
         tr, vr = ref["Time [s]"].entries, ref["Voltage [V]"].entries
         single = np.ones(len(t), dtype=bool)
         single[1:] &= t[1:] - t[:-1] > 1e-6
@@ -1203,7 +1207,169 @@ def batch_m(root):
                initial_soc=0.9, seed=138, period=20, compare=lion.SPMe())
 
 
-BATCHES = {"u": batch_u, "v": batch_v, "w": batch_w, "x": batch_x, "y": batch_y, "z": batch_z, "q": batch_q, "r": batch_r, "s": batch_s, "t": batch_t, "p": batch_p, "o": batch_o, "n": batch_n, "m": batch_m}
+def with_okane2022(p, keys):
+    """Copies the named OKane2022 parameters (plating, particle mechanics and LAM constants)
+    into a Chen 2020 set, which has none of them (same LG M50 cell)."""
+    o = pybamm.ParameterValues("OKane2022")
+    for key in keys:
+        p.update({key: o[key]}, check_already_exists=False)
+    return p
+
+
+PLATING_KEYS = ["Dead lithium decay constant [s-1]", "Dead lithium decay rate [s-1]", "Exchange-current density for plating [A.m-2]",
+                "Exchange-current density for stripping [A.m-2]", "Initial plated lithium concentration [mol.m-3]",
+                "Lithium metal partial molar volume [m3.mol-1]", "Lithium plating kinetic rate constant [m.s-1]",
+                "Lithium plating transfer coefficient", "Typical plated lithium concentration [mol.m-3]"]
+
+
+def batch_l(root):
+    """Fifteenth batch, made blind (a helper session that did not read the diagnosis code,
+    judged once on the frozen binary /work/bin/frozen-l, sha256 91b776e7a12b, built from main at
+    eb244f4, before anything else). Three ageing recordings of 6-10 cycles (solvent-diffusion
+    limited SEI at 45 degC; partially reversible plating in 1.5C charges at 5 degC, logged by a
+    cycler; stress-driven cracking of the positive, with PyBaMM's stress-induced diffusion, at
+    1C/1C), two effects outside the candidate list (a 20 mA internal leak the cycler does not
+    see, under a CC-CV charge and long rests, DFN; the positive OCP 10 mV lower, a GITT at 35
+    degC, SPM), self-heating of a poorly cooled cell in a drive at 0 degC (temperature
+    recorded), a tab resistance in three CC-CV cycles at 15 degC (constant, not ageing), and a
+    control of three cycles with HPPC pulses at 10 degC, 2 mV noise and cycler artefacts.
+    Lithium and active-material loss are accepted only by their own words, as since batch r;
+    the leak and the OCP offset by the words an engineer would accept (for the OCP offset also
+    a stoichiometry / inventory stand-in, which is how an OCP offset is usually absorbed). The
+    judge fails an "unexplained" verdict on any case with an effect. l6 starts at 70 % SOC and
+    l8's first pulse pair comes after 30 min of C/2, both set before the judge so that no charge
+    pulse overshoots 4.2 V by more than 15 mV (a first draft went to 4.44 V).
+
+    First run (2026-11-26, frozen binary /work/bin/frozen-l, sha256 91b776e7a12b, load average
+    5.0 before, 4.2-8.1 during, 5.8 after, on 2 cores shared with other sessions): 5 of 8.
+    l2 lithium plating (irreversible law, rate constant 7.74e-11 m/s against the truth's 1e-9
+    partially reversible), 11.72 -> 2.18 mV, then no missing physics, 113 s; l5 positive LAM
+    (1 %) together with lithium inventory (negative / positive initial concentrations 30363 /
+    16750 mol/m3, the set's 29866 / 17038), 3.02 -> 2.63 mV, then no missing physics (2.6x the
+    noise), 38 s; l6 thermal (h 5.957, truth 6; ambient 273.06 K), 16.31 -> 1.01 mV, 51 s; l7
+    series/contact 8.00 mOhm (truth 8), 23.70 -> 0.98 mV, 50 s; l8 no missing physics (2.02 mV,
+    noise 2.09), 1 s. Missed: l1 timed out at 900 s, nothing written (rerun afterwards, not counted: also timed out at 1500 s, load 5.9-7.1); l3
+    "unexplained" (73.76 mV): positive rate constant and positive diffusivity ran to 30x, the
+    progressive positive LAM candidate stayed at its start (0.0 %); PyBaMM's stress-induced
+    diffusion, on by default with stress-driven LAM, moves a 1C discharge by 67 mV RMS against
+    the plain SPM by itself, more than the LAM does, 35 s; l4 a tie of negative LAM (6 %,
+    fraction 0.7043) and OCV hysteresis (8.66 mV), 9.55 -> 5.20 mV, then "unexplained" (closest
+    negative diffusivity 29.4x), 190 s."""
+    cap = 5.0
+    # l1: SEI, solvent-diffusion limited, 10 CC-CV cycles at 45 degC (an accelerated ageing test)
+    p = chen()
+    p.update({"Ambient temperature [K]": 318.15, "Initial temperature [K]": 318.15})
+    p = scaled(p, "SEI solvent diffusivity [m2.s-1]", 1500.0)
+    cycle = ("Discharge at 1C until 2.7 V", "Rest for 10 minutes", "Charge at 1C until 4.2 V", "Hold at 4.2 V until C/10", "Rest for 10 minutes")
+    write_case(root, "l1_sei_solvent_diffusion_10_cccv_cycles_45C_spme", lion.SPMe(options={"SEI": "solvent-diffusion limited"}), p,
+               [("Rest for 10 minutes",)] + [cycle] * 10,
+               {"effect": "sei_growth", "candidate_model": "spme", "accept": ["SEI"], "ambient_temperature_K": 318.15,
+                "note": "SEI growth limited by solvent diffusion (PyBaMM 'solvent-diffusion limited', distributed film resistance), "
+                        "solvent diffusivity 3.75e-19 m2/s (1500x Chen 2020's 2.5e-22: an accelerated test at 45 degC; isothermal, "
+                        "not recorded): 3.4 % of the cyclable lithium lost over 10 cycles (0.0063 mol), the capacity falls with "
+                        "the square root of time. From full: 10 min rest, 10 x (1C to 2.7 V, 10 min rest, 1C CC-CV to 4.2 V and "
+                        "C/10, 10 min rest), 26 h; sampled every 30 s; SPMe data"},
+               initial_soc=1.0, seed=151, period=30, compare=lion.SPMe())
+    # l2: partially reversible plating in 1.5C charges at 5 degC, cycler-logged
+    p = with_okane2022(chen(), PLATING_KEYS)
+    p.update({"Ambient temperature [K]": 278.15, "Initial temperature [K]": 278.15, "Dead lithium decay constant [s-1]": 5e-5})
+    cycle = ("Discharge at 1C until 2.8 V", "Rest for 30 minutes", "Charge at 1.5C until 4.2 V", "Hold at 4.2 V until C/20", "Rest for 30 minutes")
+    write_case(root, "l2_plating_partially_reversible_1p5C_charge_5C_cycler_spme",
+               lion.SPMe(options={"lithium plating": "partially reversible"}), p, [("Rest for 10 minutes",)] + [cycle] * 4,
+               {"effect": "lithium_plating", "candidate_model": "spme", "accept": ["plating"], "ambient_temperature_K": 278.15,
+                "note": "partially reversible lithium plating (PyBaMM 'partially reversible', OKane2022's plating parameters: "
+                        "rate constant 1e-9 m/s, transfer coefficient 0.65; dead-lithium decay constant 5e-5 1/s instead of 1e-6) "
+                        "in 1.5C CC-CV charges at 5 degC (isothermal, not recorded): about 0.005 mol plated at the end of each "
+                        "charge, most of it stripped in the rest that follows (the stripping plateau), part of it turning dead. "
+                        "From full: 10 min rest, 4 x (1C to 2.8 V, 30 min rest, 1.5C CC-CV to 4.2 V and C/20, 30 min rest), "
+                        "14.6 h; SPMe data; cycler artefacts (irregular sampling, 3 mA current noise, 0.1 mV resolution)"},
+               initial_soc=1.0, seed=152, cycler=CYCLER, compare=lion.SPMe())
+    # l3: stress-driven LAM of the positive (particle cracking), 6 cycles 1C/1C
+    p = with_okane2022(chen(), [k for k in pybamm.ParameterValues("OKane2022").keys()
+                                if k.startswith(("Positive electrode", "Negative electrode")) and k not in chen().keys()])
+    p.update({"Positive electrode LAM constant proportional term [s-1]": 3.5e-4, "Negative electrode LAM constant proportional term [s-1]": 0.0})
+    cycle = ("Discharge at 1C until 2.7 V", "Rest for 15 minutes", "Charge at 1C until 4.2 V", "Hold at 4.2 V until C/20", "Rest for 15 minutes")
+    write_case(root, "l3_lam_positive_stress_driven_6_cycles_spm", lion.SPM(options={"loss of active material": ("none", "stress-driven")}), p,
+               [("Rest for 10 minutes",)] + [cycle] * 6,
+               {"effect": "active_material_loss", "candidate_model": "spm", "accept": ["active material"],
+                "note": "progressive loss of positive active material driven by particle stress (PyBaMM ('none', 'stress-driven'), "
+                        "with its defaults 'swelling only' mechanics and stress-induced diffusion; OKane2022's mechanical "
+                        "constants; positive proportional term 3.5e-4 1/s, 1260x OKane2022's, negative none): positive fraction "
+                        "0.665 -> about 0.62 over 6 cycles, about 1.2 % a cycle. At 25 degC: from full, 10 min rest, 6 x (1C to "
+                        "2.7 V, 15 min rest, 1C CC-CV to 4.2 V and C/20, 15 min rest), 16 h; sampled every 20 s; SPM data"},
+               initial_soc=1.0, seed=153, period=20, compare=lion.SPM())
+    # l4: an internal leak (soft short) of 20 mA that the cycler does not see; DFN
+    leak = 0.02
+    seen = ["Rest for 30 minutes", "Charge at C/3 until 4.1 V", "Hold at 4.1 V until C/20", "Rest for 3 hours",
+            "Discharge at C/3 for 2 hours", "Rest for 3 hours"]
+    inside = [f"Discharge at {leak} A for 30 minutes", f"Charge at {cap / 3 - leak:.4f} A until 4.1 V", f"Hold at 4.1 V until {1000 * (cap / 20 - leak):.0f} mA",
+              f"Discharge at {leak} A for 3 hours", f"Discharge at {cap / 3 + leak:.4f} A for 2 hours", f"Discharge at {leak} A for 3 hours"]
+    write_case(root, "l4_internal_leak_20mA_cccv_long_rests_dfn", lion.DFN(), chen(), inside,
+               {"effect": "self_discharge", "candidate_model": "dfn",
+                "accept": ["self-discharge", "self discharge", "leak", "short circuit", "internal short", "soft short", "current offset", "current bias"],
+                "note": "a 20 mA internal leak (a soft short of about 190 Ohm) that the cycler does not measure: the electrodes "
+                        "carry the recorded current plus 20 mA of discharge all the time, so the cell drifts down 0.02 A h an hour "
+                        "(0.4 % SOC) at rest and the CV hold ends at C/20 as the cycler sees it. Not a candidate of any family; an "
+                        "engineer would call it self-discharge, a leak or a current offset. From 50 % SOC: 30 min rest, C/3 CC-CV "
+                        "to 4.1 V and C/20, 3 h rest, C/3 for 2 h, 3 h rest (about 10 h); sampled every 20 s; DFN data and model"},
+               initial_soc=0.5, seed=154, period=20, compare=lion.DFN(), leak_A=leak, compare_steps=seen)
+    # l5: positive OCP 10 mV lower everywhere; GITT at 35 degC; SPM
+    p = chen()
+    ocp = p["Positive electrode OCP [V]"]
+    p.update({"Positive electrode OCP [V]": lambda sto, f=ocp: f(sto) - 0.010,
+              "Ambient temperature [K]": 308.15, "Initial temperature [K]": 308.15})
+    gitt = ["Rest for 20 minutes"] + ["Discharge at C/2 for 8 minutes", "Rest for 30 minutes"] * 12 + ["Charge at C/2 for 1 hour", "Rest for 1 hour"]
+    write_case(root, "l5_positive_ocp_offset_gitt_35C_spm", lion.SPM(), p, gitt,
+               {"effect": "ocp_offset", "candidate_model": "spm",
+                "accept": ["open-circuit potential", "OCP", "electrode balance", "inventory", "stoichiometr"], "ambient_temperature_K": 308.15,
+                "note": "the positive electrode's OCP 10 mV lower at every stoichiometry (a cathode lot or blend whose OCP differs "
+                        "from the set's curve); not a candidate parameter; on the NMC curve a 10 mV shift is close to a small "
+                        "stoichiometry shift, so an electrode-balance / lithium-inventory stand-in is accepted beside the OCP "
+                        "itself. At 35 degC (isothermal, not recorded): from full, 20 min rest, GITT of 12 x (C/2 for 8 min, 30 "
+                        "min rest) to about 20 % SOC, C/2 charge for 1 h, 1 h rest (9.6 h); sampled every 10 s; SPM data"},
+               initial_soc=1.0, seed=155, period=10, compare=lion.SPM())
+    # l6: self-heating of a poorly cooled cell in a drive at 0 degC, temperature recorded
+    p = chen()
+    p.update({"Ambient temperature [K]": 273.15, "Initial temperature [K]": 273.15, "Total heat transfer coefficient [W.m-2.K-1]": 6.0})
+    drive = ["Rest for 5 minutes"] + urban_drive(156, 40) + ["Rest for 30 minutes"]
+    write_case(root, "l6_thermal_drive_0C_poor_cooling_spme", lion.SPMe(options={"thermal": "lumped"}), p, drive,
+               {"effect": "thermal", "candidate_model": "spme", "accept": ["thermal", "heat"], "ambient_temperature_K": 273.15,
+                "note": "lumped self-heating with h = 6 W/(m2 K) (a cell in a foam-lined module) at 0 degC: the cell warms during "
+                        "the drive and its resistances fall. From 70 % SOC: 5 min rest, an urban drive of 40 segments (to 3C, "
+                        "regeneration to 1.5C), 30 min rest; temperature recorded (0.05 K noise); sampled every 1 s; SPMe data "
+                        "handed to the isothermal SPMe"},
+               initial_soc=0.7, temperature=True, seed=156, compare=lion.SPMe())
+    # l7: a tab resistance (constant) in three CC-CV cycles at 15 degC; SPM
+    p = chen()
+    p.update({"Ambient temperature [K]": 288.15, "Initial temperature [K]": 288.15})
+    p.update({"Contact resistance [Ohm]": 0.008}, check_already_exists=False)
+    cycle = ("Discharge at 1C until 2.7 V", "Rest for 20 minutes", "Charge at C/2 until 4.2 V", "Hold at 4.2 V until C/20", "Rest for 20 minutes")
+    write_case(root, "l7_tab_resistance_3_cccv_cycles_15C_spm", lion.SPM(options={"contact resistance": "true"}), p,
+               [("Rest for 10 minutes",)] + [cycle] * 3,
+               {"effect": "contact_resistance", "candidate_model": "spm", "accept": ["contact", "series resistance"], "ambient_temperature_K": 288.15,
+                "note": "8 mOhm contact resistance (a poorly welded tab), the same in every cycle (nothing ages), at 15 degC "
+                        "(isothermal, not recorded). From full: 10 min rest, 3 x (1C to 2.7 V, 20 min rest, C/2 CC-CV to 4.2 V and "
+                        "C/20, 20 min rest), 11 h; sampled every 10 s; SPM data"},
+               initial_soc=1.0, seed=157, period=10, compare=lion.SPM())
+    # l8: control: three cycles with HPPC pulses at 10 degC, 2 mV noise, cycler artefacts; SPMe
+    p = chen()
+    p.update({"Ambient temperature [K]": 283.15, "Initial temperature [K]": 283.15})
+    cycle = ("Charge at C/2 until 4.2 V", "Hold at 4.2 V until C/20", "Rest for 30 minutes",
+             "Discharge at C/2 for 30 minutes", "Rest for 30 minutes",
+             "Discharge at 2C for 10 seconds", "Rest for 40 seconds", "Charge at 1.5C for 10 seconds", "Rest for 10 minutes",
+             "Discharge at C/2 for 1 hour", "Rest for 30 minutes",
+             "Discharge at 2C for 10 seconds", "Rest for 40 seconds", "Charge at 1.5C for 10 seconds", "Rest for 10 minutes",
+             "Discharge at 1C until 2.8 V", "Rest for 30 minutes")
+    write_case(root, "l8_control_3_cycles_hppc_10C_cycler_spme", lion.SPMe(), p, [("Rest for 10 minutes",)] + [cycle] * 3,
+               {"effect": "none", "candidate_model": "spme", "accept": ["no missing"], "ambient_temperature_K": 283.15,
+                "note": "negative control at 10 degC (isothermal, not recorded): SPMe data and model, nothing ages. From 20 % SOC: "
+                        "10 min rest, 3 x (C/2 CC-CV to 4.2 V and C/20, 30 min rest, C/2 for 30 min, 30 min rest, HPPC pulse pair (2C 10 s, 40 s rest, 1.5C "
+                        "charge 10 s, 10 min rest), C/2 for 1 h, 30 min rest, the pulse pair again, 1C to 2.8 V, 30 min rest); "
+                        "2 mV noise; cycler artefacts (irregular sampling, 3 mA current noise, 0.1 mV resolution)"},
+               initial_soc=0.2, seed=158, noise=2e-3, cycler=CYCLER, compare=lion.SPMe())
+
+
+BATCHES = {"u": batch_u, "v": batch_v, "w": batch_w, "x": batch_x, "y": batch_y, "z": batch_z, "q": batch_q, "r": batch_r, "s": batch_s, "t": batch_t, "p": batch_p, "o": batch_o, "n": batch_n, "m": batch_m, "l": batch_l}
 
 if __name__ == "__main__":
     root = sys.argv[1] if len(sys.argv) > 1 else "out/unseen-cases"
