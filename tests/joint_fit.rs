@@ -211,3 +211,25 @@ fn an_experiment_protocol_replaces_the_recorded_current() {
     assert!(e.to_string().contains("lasts less than the recording"), "{e}");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// At an upper bound the sensitivities step inwards: a fitted initial state of charge of
+/// exactly 1 (a full cell, a search's bound) has gradients, which agree with a backward
+/// difference of two plain simulations (before, the forward step asked for SOC 1 + 1e-7 and
+/// the fit stopped with an error).
+#[test]
+fn sensitivities_at_a_full_initial_state_of_charge() {
+    let rec = synthetic(5.0, 600.0, None);
+    let parameters = vec![FitParameter::log("negative.diffusivity", D_N, 1e-15, 1e-12), FitParameter::linear(INITIAL_SOC, 1.0, 0.5, 1.0)];
+    let problem = FittingProblem::new(spec(), chen2020(), parameters, rec).unwrap();
+    let s = problem.simulate_with_sensitivities(&[D_N, 1.0]).unwrap();
+    let h = 1e-5;
+    let (full, below) = (problem.simulate(&[D_N, 1.0]).unwrap(), problem.simulate(&[D_N, 1.0 - h]).unwrap());
+    let worst = (0..full.len())
+        .map(|i| {
+            let difference = (full[i] - below[i]) / h;
+            (s.sensitivity[i * s.columns + 1] - difference).abs() / difference.abs().max(1e-3)
+        })
+        .fold(0.0, f64::max);
+    eprintln!("dV/dSOC at SOC 1: worst relative gap to the backward difference {worst:.2e}");
+    assert!(worst < 2e-3, "{worst}");
+}

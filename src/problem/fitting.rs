@@ -395,7 +395,14 @@ impl FittingProblem {
 
     fn run_sensitivities(&self, worker: &mut Worker, x: &[f64], p: &ParameterSet) -> Result<Simulated, Error> {
         let scales: Vec<f64> = x.iter().map(|v| if *v != 0.0 { v.abs() } else { 1.0 }).collect();
-        let steps: Vec<f64> = scales.iter().map(|s| PARAMETER_STEP * s).collect();
+        // A step beyond the upper bound may leave the parameter's domain (an initial state of
+        // charge of 1 + 1e-7): step inwards there.
+        let steps: Vec<f64> = scales
+            .iter()
+            .zip(x)
+            .zip(&self.parameters)
+            .map(|((s, v), p)| if v + PARAMETER_STEP * s > p.upper { -PARAMETER_STEP * s } else { PARAMETER_STEP * s })
+            .collect();
         let (first, rest) = worker.builders.split_at_mut(1);
         let base = first[0].build(p)?;
         let mut perturbed: Vec<&dyn Model> = Vec::with_capacity(rest.len());

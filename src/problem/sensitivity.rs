@@ -19,7 +19,7 @@ pub struct Sensitivities<'a> {
     base: &'a dyn Model,
     /// The model built at `θ_k + δ_k`, one per parameter.
     perturbed: Vec<&'a dyn Model>,
-    /// Parameter scales `p̄_k` and steps `δ_k` (parameter units).
+    /// Parameter scales `p̄_k` and steps `δ_k` (parameter units; negative at an upper bound).
     scales: Vec<f64>,
     steps: Vec<f64>,
     mass: Vec<f64>,
@@ -30,7 +30,8 @@ pub struct Sensitivities<'a> {
 }
 
 impl<'a> Sensitivities<'a> {
-    /// `perturbed[k]` must be `base` rebuilt with parameter `k` raised by `steps[k]`.
+    /// `perturbed[k]` must be `base` rebuilt with parameter `k` moved by `steps[k]` (either
+    /// sign).
     pub fn new(base: &'a dyn Model, perturbed: Vec<&'a dyn Model>, scales: Vec<f64>, steps: Vec<f64>) -> Self {
         let n = base.len();
         let blocks = 1 + perturbed.len();
