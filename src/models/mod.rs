@@ -81,9 +81,8 @@ pub struct Submodels {
     /// Loss of active material (`lam` parameters) in the SPM and SPMe: four extra states
     /// (volume fraction and lithium lost per electrode); "reaction-driven" needs `sei`.
     pub lam: submodels::LamModel,
-    /// Lithium plating on the negative electrode (`plating` parameters) in the SPM and SPMe:
-    /// two extra states (plated and dead lithium) in the SPM, two per negative x volume in
-    /// the SPMe.
+    /// Lithium plating on the negative electrode (`plating` parameters): two extra states
+    /// (plated and dead lithium) in the SPM, two per negative x volume in the SPMe and DFN.
     pub plating: submodels::PlatingModel,
     /// PyBaMM's "stress-induced diffusion" under stress-driven LAM: `None` follows PyBaMM (on
     /// with stress-driven LAM), `Some(false)` keeps the particle diffusivities unstressed.
@@ -93,13 +92,10 @@ pub struct Submodels {
 impl Submodels {
     /// Checks the submodels can be built on `kind`; the error names `model.submodels.NAME`.
     pub fn check(&self, kind: ModelKind) -> Result<(), crate::error::Error> {
-        use submodels::{LamModel, PlatingModel, SeiModel};
+        use submodels::{LamModel, SeiModel};
         let invalid = |name: &str, reason: String| crate::error::Error::InvalidSetting { field: format!("model.submodels.{name}"), reason };
         if kind == ModelKind::Dfn && self.lam != LamModel::None {
             return Err(invalid("lam", format!("{:?} loss of active material is built for the SPM and SPMe only (x-averaged): use model = \"spm\" or \"spme\"", self.lam)));
-        }
-        if kind == ModelKind::Dfn && self.plating != PlatingModel::None {
-            return Err(invalid("plating", format!("{:?} lithium plating is built for the SPM and SPMe only: use model = \"spm\" or \"spme\"", self.plating)));
         }
         if self.stress_induced_diffusion == Some(true) && !self.lam.stress() {
             return Err(invalid("stress_induced_diffusion", format!("true needs a stress-driven loss of active material (lam = \"stress-driven\"), not {:?}", self.lam)));

@@ -4,8 +4,9 @@
 //! electrolyte concentration `c_e` over all x volumes (mol/m^3), then the algebraic
 //! potentials `phi_e` over all x volumes, `phi_s` in the negative and in the positive
 //! electrode (V), with an SEI submodel the SEI concentration (mol/m^3) and the (algebraic)
-//! total interfacial current density `j_tot` (A/m^2) of each negative volume, and `T` (K)
-//! when the thermal submodel is on.
+//! total interfacial current density `j_tot` (A/m^2) of each negative volume, with a plating
+//! submodel the plated and the dead lithium concentration (mol/m^3) of each negative volume,
+//! and `T` (K) when the thermal submodel is on.
 //!
 //! Equations (x through the cell, r in each particle, SI units):
 //! - particles: `dc_s/dt = 1/r^2 d/dr (r^2 D_s dc_s/dr)`, `-D_s dc_s/dr|_R = j / F`;
@@ -19,7 +20,10 @@
 //!   R_sei) / (R T))` into the particle, the side reaction `j_sei` of
 //!   [`crate::models::submodels::SeiLayer`] at `phi_s - phi_e` with the film carrying `j`,
 //!   `0 = j_tot - (j + j_sei)`, and `a j_tot` the source of the electrolyte and the
-//!   potentials (docs/ageing.md, section 1).
+//!   potentials (docs/ageing.md, section 1);
+//! - with lithium plating: in each negative volume the plating current `j_Li` of
+//!   [`crate::models::submodels::PlatingLayer`] at `phi_s - phi_e - j_tot L R_sei` joins the
+//!   sum (docs/ageing.md, section 4.4; [`interface`]).
 //!
 //! Voltage: `phi_s(L) - phi_s(0) - I R_contact`, `phi_s(L)` extrapolated linearly from the
 //! last two volumes as PyBaMM does.
@@ -27,10 +31,13 @@
 use super::electrochem::{Electrochem, Side};
 use super::electrolyte::ElectrolyteOp;
 use super::kinetics::{butler_volmer, exchange_current};
-use super::submodels::SeiLayer;
+use super::submodels::{PlatingLayer, SeiLayer};
 use super::submodels::thermal::bernardi_heat;
 use super::{Model, PhysicsModel, push_tridiagonal};
 use crate::params::ParameterSet;
+
+mod interface;
+use interface::Surface;
 
 #[derive(Clone, Debug)]
 pub struct Dfn {
@@ -39,6 +46,7 @@ pub struct Dfn {
     pub layout: Layout,
     electrolyte: ElectrolyteOp,
     sei: SeiLayer,
+    plating: PlatingLayer,
     /// Effective solid conductivities of the negative and positive electrodes (S/m).
     sigma: [f64; 2],
     mass: Vec<f64>,
@@ -62,6 +70,9 @@ pub struct Layout {
     /// With SEI growth: the SEI concentrations of the negative volumes from here, then their
     /// total interfacial current densities.
     pub sei: Option<usize>,
+    /// With lithium plating: the plated lithium concentrations of the negative volumes from
+    /// here, then their dead lithium concentrations.
+    pub plating: Option<usize>,
     pub temp: Option<usize>,
     pub len: usize,
 }
@@ -78,10 +89,16 @@ impl Layout {
         let phie = ce + nx;
         let phis_n = phie + nx;
         let phis_p = phis_n + nxn;
-        let sei = (ec.submodels.sei != super::submodels::SeiModel::None).then_some(phis_p + nxp);
-        let end = phis_p + nxp + if sei.is_some() { 2 * nxn } else { 0 };
-        let temp = ec.submodels.thermal.then_some(end);
-        Self { nxn, nxs, nxp, nrn, nrp, cs_n, cs_p, ce, phie, phis_n, phis_p, sei, temp, len: end + usize::from(temp.is_some()) }
+        let mut end = phis_p + nxp;
+        let mut block = |on: bool, len: usize| {
+            let start = on.then_some(end);
+            end += if on { len } else { 0 };
+            start
+        };
+        let sei = block(ec.submodels.sei != super::submodels::SeiModel::None, 2 * nxn);
+        let plating = block(ec.submodels.plating != super::submodels::PlatingModel::None, 2 * nxn);
+        let temp = block(ec.submodels.thermal, 1);
+        Self { nxn, nxs, nxp, nrn, nrp, cs_n, cs_p, ce, phie, phis_n, phis_p, sei, plating, temp, len: end }
     }
 
     pub fn nx(&self) -> usize {
@@ -138,9 +155,14 @@ impl Dfn {
             scale[s + n..s + 2 * n].fill(ec.mean_interfacial_current(Side::Negative, p.cell.nominal_capacity).abs());
         }
         let sei = SeiLayer::new(ec.submodels.sei, layout.sei.unwrap_or(0), layout.nxn);
+        let plating = PlatingLayer::new(ec.submodels.plating, layout.plating.unwrap_or(0), layout.nxn);
+        for k in plating.indices() {
+            mass[k] = 1.0;
+            scale[k] = p.plating.typical_concentration;
+        }
         let electrolyte = ElectrolyteOp::new(&ec);
         let sigma = Self::solid_conductivities(&ec);
-        Self { ec, layout, electrolyte, sei, sigma, mass, scale }
+        Self { ec, layout, electrolyte, sei, plating, sigma, mass, scale }
     }
 
     fn temp(&self, y: &[f64]) -> f64 {
@@ -184,11 +206,12 @@ impl Model for Dfn {
                 Some((side, k, start)) => {
                     let nr = l.nr(side);
                     let mut c = vec![start + nr - 2, start + nr - 1, l.ce + i, l.phie + i, l.phis(side, k)];
-                    // The SEI concentration and total current of a negative volume, whose rows
-                    // read the same.
-                    if let (Side::Negative, Some(s)) = (side, l.sei) {
-                        c.extend([s + k, s + l.nxn + k]);
-                        for row in [s + k, s + l.nxn + k] {
+                    // The side states of a negative volume (SEI concentration and total current,
+                    // plated and dead lithium), whose rows read the same.
+                    if side == Side::Negative {
+                        let states = self.side_states(k);
+                        c.extend(&states);
+                        for row in states {
                             p.extend(c.iter().map(|&col| (row, col)));
                         }
                     }
@@ -242,6 +265,9 @@ impl Model for Dfn {
         if let Some(s) = l.sei {
             y[s..s + l.nxn].fill(SeiLayer::initial_concentration(&self.ec));
         }
+        if let Some(s) = l.plating {
+            y[s..s + l.nxn].fill(p.plating.initial_concentration);
+        }
         if let Some(t) = l.temp {
             y[t] = p.thermal.initial_temperature;
         }
@@ -279,15 +305,10 @@ impl Model for Dfn {
                 let j0 = exchange_current(rate, y[l.ce + i], c_e_ref, c_s, e.max_concentration);
                 let delta_phi = y[l.phis(side, k)] - y[l.phie + i];
                 let a = vols[i].a;
-                let j = match (side, l.sei) {
-                    (Side::Negative, Some(s)) => {
-                        let (c_sei, j_tot) = (s + k, s + l.nxn + k);
-                        let film = y[j_tot] * SeiLayer::local_thickness(ec, y, c_sei, a) * ec.params.sei.resistivity;
-                        let j = butler_volmer(j0, delta_phi - ocp - film, e.charge_transfer_coefficient, temp);
-                        let j_sei = self.sei.side_current(ec, y, c_sei, delta_phi, j, a, temp);
-                        out_phis[c_sei - l.phis_n] = SeiLayer::growth_rate(ec, a, j_sei);
-                        out_phis[j_tot - l.phis_n] = y[j_tot] - (j + j_sei);
-                        out_phie[i] = a * (j + j_sei);
+                let j = match side {
+                    Side::Negative if self.side_reactions() => {
+                        let (j, total) = self.negative_interface(y, Surface { k, i, j0, delta_phi, ocp, a, temp }, out_phis);
+                        out_phie[i] = a * total;
                         j
                     }
                     _ => {
@@ -369,6 +390,10 @@ impl Model for Dfn {
 
     fn sei_lithium(&self, y: &[f64]) -> f64 {
         self.sei.lithium(&self.ec, y)
+    }
+
+    fn plated_lithium(&self, y: &[f64]) -> Option<super::submodels::plating::PlatedLithium> {
+        self.plating.lithium(&self.ec, y)
     }
 
     fn sei_thickness(&self, y: &[f64]) -> Option<f64> {
