@@ -48,9 +48,9 @@ impl Dfn {
 
     /// The reactions of negative volume `s`: writes the rates of its SEI and plating states
     /// and the residual of its total current into `out_phis` (the outputs from the negative
-    /// solid potential's first row on), and returns the intercalation current density `j`
-    /// and the sum of all its reactions' current densities (A/m^2).
-    pub(super) fn negative_interface(&self, y: &[f64], s: Surface, out_phis: &mut [f64]) -> (f64, f64) {
+    /// solid potential's first row on), and returns the intercalation current density `j`,
+    /// the SEI's `j_sei` and the sum of all its reactions' current densities (A/m^2).
+    pub(super) fn negative_interface(&self, y: &[f64], s: Surface, out_phis: &mut [f64]) -> (f64, f64, f64) {
         let (l, ec) = (&self.layout, &self.ec);
         let row = |index: usize| index - l.phis_n;
         let sei = l.sei.map(|start| (start + s.k, start + l.nxn + s.k));
@@ -72,7 +72,7 @@ impl Dfn {
         if let Some((_, j_tot)) = sei {
             out_phis[row(j_tot)] = y[j_tot] - total;
         }
-        (j, total)
+        (j, j_sei, total)
     }
 
     /// The side states of negative volume `k` that its reactions read and write: its SEI
