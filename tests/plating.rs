@@ -25,6 +25,7 @@ const OPTIONS: [(PlatingModel, SeiModel, &str); 4] = [
 ];
 
 mod common;
+use common::AgeingLimits;
 
 fn rows(file: &str) -> Vec<Vec<f64>> {
     common::csv_rows("plating-submodel", file)
@@ -79,34 +80,23 @@ fn compare(kind: ModelKind, plating: PlatingModel, sei: SeiModel, name: &str) ->
     gaps
 }
 
-/// Limits on [`Gaps`]: voltage (RMS, max) mV, hold current (RMS, max) mA, plated and dead
-/// lithium (-).
-struct Limits {
-    voltage: (f64, f64),
-    current: (f64, f64),
-    lithium: f64,
-}
-
 /// SPM and SPMe: limits three to five times the largest achieved: voltage RMS / max
 /// 1.3e-5-5.5e-5 / 8.5e-5-3.7e-4 mV (the largest for the SPM with the SEI), hold current RMS
 /// / max 2.0e-4-4.5e-4 / 7.4e-4-2.7e-3 mA, plated and dead lithium within 1.4e-5 of the run's
 /// largest plated lithium (2.5e-6 without the SEI).
-const SPM_LIMITS: Limits = Limits { voltage: (2.5e-4, 1.5e-3), current: (2e-3, 1e-2), lithium: 6e-5 };
+const SPM_LIMITS: AgeingLimits = AgeingLimits { voltage: (2.5e-4, 1.5e-3), current: (2e-3, 1e-2), ageing: 6e-5 };
 
 /// DFN: limits about four times the largest achieved: voltage RMS / max 9.1e-6-1.9e-5 /
 /// 5.4e-5-1.0e-4 mV, hold current RMS / max 6.6e-5-3.4e-4 / 4.6e-4-1.5e-3 mA, plated and
 /// dead lithium within 3.3e-7 of the run's largest plated lithium.
-const DFN_LIMITS: Limits = Limits { voltage: (8e-5, 4e-4), current: (1.4e-3, 6e-3), lithium: 1.3e-6 };
+const DFN_LIMITS: AgeingLimits = AgeingLimits { voltage: (8e-5, 4e-4), current: (1.4e-3, 6e-3), ageing: 1.3e-6 };
 
 /// Every option on `kind` within `limits`; lithium conserved to round-off (achieved
 /// 5.9e-16-1.2e-15, DFN 5.9e-16-7.8e-16).
-fn check(kind: ModelKind, limits: Limits) {
+fn check(kind: ModelKind, limits: AgeingLimits) {
     for (plating, sei, name) in OPTIONS {
         let g = compare(kind, plating, sei, name);
-        assert!(g.voltage.0 < limits.voltage.0 && g.voltage.1 < limits.voltage.1, "{kind} {name}: voltage {:?} mV", g.voltage);
-        assert!(g.current.0 < limits.current.0 && g.current.1 < limits.current.1, "{kind} {name}: hold current {:?} mA", g.current);
-        assert!(g.lithium.iter().all(|d| *d < limits.lithium), "{kind} {name}: plated and dead lithium {:?}", g.lithium);
-        assert!(g.conservation < 1e-14, "{kind} {name}: lithium changed by {:e}", g.conservation);
+        limits.assert(&format!("{kind} {name}"), g.voltage, g.current, "plated and dead lithium", &g.lithium, g.conservation);
     }
 }
 
