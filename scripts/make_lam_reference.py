@@ -1,4 +1,4 @@
-"""PyBaMM reference for loss of active material (tests/lam.rs): SPM and SPMe on Chen 2020,
+"""PyBaMM reference for loss of active material (tests/lam.rs): SPM, SPMe and DFN on Chen 2020,
 each with PyBaMM's option "loss of active material" set to
 - "stress-driven" (PyBaMM then also sets "particle mechanics" = "swelling only" and
   "stress-induced diffusion" = "true"), with the mechanical and LAM parameters of PyBaMM's
@@ -13,8 +13,9 @@ each with PyBaMM's option "loss of active material" set to
   electrode's stress-driven law alone, with plain particle diffusion (the diagnosis's
   progressive-LAM candidate; OKane2022's positive mechanics without stress-induced diffusion
   drive the positive fraction below zero within five cycles, so the positive is left out);
-PyBaMM's default mesh (20 volumes per x-domain and per particle, as ours), IDAKLU at
-rtol = atol = 1e-8.
+x-averaged states in the SPM and SPMe, an active material volume fraction per electrode x
+volume in the DFN (PyBaMM's defaults); PyBaMM's default mesh (20 volumes per x-domain and per
+particle, as ours), IDAKLU at rtol = atol = 1e-8.
 
 Protocol: CYCLES CC-CV cycles of "Discharge at 1C until 3.0 V", "Rest for 10 minutes",
 "Charge at 1C until 4.1 V", "Hold at 4.1 V until C/20", "Rest for 10 minutes" from Chen
@@ -31,7 +32,10 @@ Writes into the folder given (default tests/data/lam):
 - `meta.json`: versions, options, parameters, protocol, timings.
 
     python3.11 -m venv /tmp/pyb && /tmp/pyb/bin/pip install -r scripts/requirements.txt
-    /tmp/pyb/bin/python scripts/make_lam_reference.py tests/data/lam
+    /tmp/pyb/bin/python scripts/make_lam_reference.py tests/data/lam [spm,spme,dfn]
+
+(the optional second argument names the models to (re)make; the other cases stay in
+`meta.json`.)
 """
 
 import json
@@ -61,7 +65,7 @@ REACTION_FACTOR = 1e-4
 # The largest "LAM constant proportional term [s-1]" of the notebook's sweep (1e-2 per hour,
 # 10x OKane2022's): enough to see in a few cycles.
 PROPORTIONAL_TERM = 1e-2 / 3600
-MODELS = {"spm": pybamm.lithium_ion.SPM, "spme": pybamm.lithium_ion.SPMe}
+MODELS = {"spm": pybamm.lithium_ion.SPM, "spme": pybamm.lithium_ion.SPMe, "dfn": pybamm.lithium_ion.DFN}
 
 
 def parameters():
@@ -82,7 +86,11 @@ def main(root):
     params, extra = parameters()
     meta = {"made_by": f"PyBaMM {pybamm.__version__}, Chen2020 + OKane2022 mechanics/LAM constants, IDAKLU rtol=atol=1e-8, default mesh",
             "parameters": extra, "cycle": CYCLE, "cycles": CYCLES, "period_s": 60, "cases": {}}
-    for mname, cls in MODELS.items():
+    models = sys.argv[2].split(",") if len(sys.argv) > 2 else list(MODELS)
+    if os.path.exists(os.path.join(root, "meta.json")):
+        with open(os.path.join(root, "meta.json")) as f:
+            meta["cases"] = json.load(f)["cases"]
+    for mname, cls in ((m, MODELS[m]) for m in models):
         for oname, options in OPTIONS.items():
             model = cls(dict(options))  # PyBaMM writes its defaults into the dict it is given
             sim = pybamm.Simulation(model, parameter_values=params.copy(),

@@ -1,5 +1,5 @@
-"""PyBaMM reference for the lithium plating submodel (tests/plating.rs): SPM and SPMe on Chen
-2020 with the lithium plating parameters of PyBaMM's "OKane2022" set (rate constant 1e-9 m/s,
+"""PyBaMM reference for the lithium plating submodel (tests/plating.rs): SPM, SPMe and DFN on
+Chen 2020 with the lithium plating parameters of PyBaMM's "OKane2022" set (rate constant 1e-9 m/s,
 transfer coefficient 0.65, dead lithium decay constant 1e-6 1/s, its exchange-current and
 dead-lithium decay functions), PyBaMM's option "lithium plating" set to
 - "irreversible", "reversible", "partially reversible" (PyBaMM then sets "SEI" = "constant":
@@ -7,6 +7,8 @@ dead-lithium decay functions), PyBaMM's option "lithium plating" set to
   the decay constant);
 - "partially reversible" with "SEI" = "reaction limited" (Chen 2020's SEI parameters, film
   resistance "distributed"): the film's drop and the SEI's thickness enter plating;
+plating x-averaged in the SPM, per negative x volume in the SPMe and DFN (PyBaMM's defaults),
+"lithium plating porosity change" "false" (PyBaMM's default);
 PyBaMM's default mesh (20 volumes per x-domain and per particle, as ours), IDAKLU at
 rtol = atol = 1e-8.
 
@@ -26,7 +28,10 @@ Writes into the folder given (default tests/data/plating-submodel):
 - `meta.json`: versions, options, parameters, protocol, timings.
 
     python3.11 -m venv /tmp/pyb && /tmp/pyb/bin/pip install -r scripts/requirements.txt
-    /tmp/pyb/bin/python scripts/make_plating_submodel_reference.py tests/data/plating-submodel
+    /tmp/pyb/bin/python scripts/make_plating_submodel_reference.py tests/data/plating-submodel [spm,spme,dfn]
+
+(the optional second argument names the models to (re)make; the other cases stay in
+`meta.json`.)
 """
 
 import json
@@ -53,7 +58,7 @@ OPTIONS = {
     "partially_reversible": {"lithium plating": "partially reversible"},
     "partially_reversible_sei": {"lithium plating": "partially reversible", "SEI": "reaction limited"},
 }
-MODELS = {"spm": pybamm.lithium_ion.SPM, "spme": pybamm.lithium_ion.SPMe}
+MODELS = {"spm": pybamm.lithium_ion.SPM, "spme": pybamm.lithium_ion.SPMe, "dfn": pybamm.lithium_ion.DFN}
 
 
 def parameters():
@@ -71,7 +76,11 @@ def main(root):
     meta = {"made_by": f"PyBaMM {pybamm.__version__}, Chen2020 + OKane2022 plating parameters, IDAKLU rtol=atol=1e-8, default mesh",
             "parameters": constants, "cycle": CYCLE, "cycles": CYCLES, "period_s": 60, "cases": {}}
     volume = params["Negative electrode thickness [m]"] * params["Electrode height [m]"] * params["Electrode width [m]"]
-    for mname, cls in MODELS.items():
+    models = sys.argv[2].split(",") if len(sys.argv) > 2 else list(MODELS)
+    if os.path.exists(os.path.join(root, "meta.json")):
+        with open(os.path.join(root, "meta.json")) as f:
+            meta["cases"] = json.load(f)["cases"]
+    for mname, cls in ((m, MODELS[m]) for m in models):
         for oname, options in OPTIONS.items():
             # PyBaMM's SPM writes "x-average side reactions" = "true" into the options it is
             # given: each model gets its own copy, so that the SPMe keeps its default "false".

@@ -49,7 +49,7 @@ impl ModelBuilder {
             let built = self.last.as_mut().expect("checked above");
             built.model.set_params(params.clone());
         } else {
-            self.submodels.check(self.kind)?;
+            self.submodels.check()?;
             let ec = Electrochem::new(params.clone(), Discretisation::new(geometry), self.submodels);
             let mut model: Box<dyn PhysicsModel> = match self.kind {
                 ModelKind::Spm => Box::new(Spm::new(ec)),

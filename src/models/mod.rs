@@ -78,12 +78,12 @@ pub struct Submodels {
     /// one per negative x volume in the SPMe, two per negative x volume in the DFN (with the
     /// total interfacial current density).
     pub sei: submodels::SeiModel,
-    /// Loss of active material (`lam` parameters) in the SPM and SPMe: four extra states
-    /// (volume fraction and lithium lost per electrode); "reaction-driven" needs `sei`.
+    /// Loss of active material (`lam` parameters): four extra states (volume fraction and
+    /// lithium lost per electrode) in the SPM and SPMe, a volume fraction per electrode x
+    /// volume and the two losses in the DFN; "reaction-driven" needs `sei`.
     pub lam: submodels::LamModel,
-    /// Lithium plating on the negative electrode (`plating` parameters) in the SPM and SPMe:
-    /// two extra states (plated and dead lithium) in the SPM, two per negative x volume in
-    /// the SPMe.
+    /// Lithium plating on the negative electrode (`plating` parameters): two extra states
+    /// (plated and dead lithium) in the SPM, two per negative x volume in the SPMe and DFN.
     pub plating: submodels::PlatingModel,
     /// PyBaMM's "stress-induced diffusion" under stress-driven LAM: `None` follows PyBaMM (on
     /// with stress-driven LAM), `Some(false)` keeps the particle diffusivities unstressed.
@@ -91,16 +91,11 @@ pub struct Submodels {
 }
 
 impl Submodels {
-    /// Checks the submodels can be built on `kind`; the error names `model.submodels.NAME`.
-    pub fn check(&self, kind: ModelKind) -> Result<(), crate::error::Error> {
-        use submodels::{LamModel, PlatingModel, SeiModel};
+    /// Checks the submodels go together; the error names `model.submodels.NAME`. (Every
+    /// submodel is built on the SPM, SPMe and DFN.)
+    pub fn check(&self) -> Result<(), crate::error::Error> {
+        use submodels::SeiModel;
         let invalid = |name: &str, reason: String| crate::error::Error::InvalidSetting { field: format!("model.submodels.{name}"), reason };
-        if kind == ModelKind::Dfn && self.lam != LamModel::None {
-            return Err(invalid("lam", format!("{:?} loss of active material is built for the SPM and SPMe only (x-averaged): use model = \"spm\" or \"spme\"", self.lam)));
-        }
-        if kind == ModelKind::Dfn && self.plating != PlatingModel::None {
-            return Err(invalid("plating", format!("{:?} lithium plating is built for the SPM and SPMe only: use model = \"spm\" or \"spme\"", self.plating)));
-        }
         if self.stress_induced_diffusion == Some(true) && !self.lam.stress() {
             return Err(invalid("stress_induced_diffusion", format!("true needs a stress-driven loss of active material (lam = \"stress-driven\"), not {:?}", self.lam)));
         }

@@ -31,7 +31,7 @@ impl Spm {
     pub fn new(ec: Electrochem) -> Self {
         let (nn, np) = (ec.disc.sphere_n.len(), ec.disc.sphere_p.len());
         let sei = SeiLayer::new(ec.submodels.sei, nn + np, 1);
-        let lam = LamLayer::new(ec.submodels.lam, nn + np + sei.len());
+        let lam = LamLayer::new(ec.submodels.lam, nn + np + sei.len(), [1, 1]);
         let plating = PlatingLayer::new(ec.submodels.plating, nn + np + sei.len() + lam.len(), 1);
         let n = nn + np + sei.len() + lam.len() + plating.len() + usize::from(ec.submodels.thermal);
         let mut scale = vec![lam.shell_scale(&ec, Side::Negative); nn];
@@ -54,7 +54,7 @@ impl Spm {
     /// Shell concentrations (mol/m^3) of the negative and positive particles.
     fn particles<'a>(&self, y: &'a [f64]) -> (Cow<'a, [f64]>, Cow<'a, [f64]>) {
         let (n, p) = self.split(y);
-        (self.lam.concentrations(Side::Negative, y, n), self.lam.concentrations(Side::Positive, y, p))
+        (self.lam.concentrations(Side::Negative, y, n, 0), self.lam.concentrations(Side::Positive, y, p, 0))
     }
 
     /// Surface concentrations (mol/m^3) of the negative and positive particles.
@@ -77,7 +77,7 @@ impl Spm {
         // sqrt(c_e) (2.5e-7 of j0, 1e-5 mV): see docs/pybamm_equations.md, section 1.
         let c_in = c_s.clamp(0.0, e.max_concentration);
         let j0 = ec.rate_constant(side, temp) * ec.params.electrolyte.initial_concentration.sqrt() * particle_factor(c_in, e.max_concentration);
-        let film = if side == Side::Negative { self.sei.film(ec, y, j, self.lam.surface_area_density(ec, side, y)) } else { 0.0 };
+        let film = if side == Side::Negative { self.sei.film(ec, y, j, self.lam.surface_area_density(ec, side, y, 0)) } else { 0.0 };
         ec.ocp(side, c_s) + overpotential(j, j0, e.charge_transfer_coefficient, temp) + film
     }
 
@@ -89,7 +89,7 @@ impl Spm {
         }
         let delta_phi = self.surface_potential_difference(Side::Negative, sn, y, current);
         let (ec, side, temp) = (&self.ec, Side::Negative, self.temperature(y));
-        let (j, a) = (self.lam.interfacial_current(ec, side, y, current), self.lam.surface_area_density(ec, side, y));
+        let (j, a) = (self.lam.interfacial_current(ec, side, y, current), self.lam.surface_area_density(ec, side, y, 0));
         let j_sei = self.sei.rhs(ec, y, std::iter::once(delta_phi), j, a, temp, out);
         let site = Site { delta_phi, electrolyte_concentration: ec.params.electrolyte.initial_concentration, sei_thickness: self.sei.volume_thickness(ec, y, 0, a) };
         let j_plating = self.plating.rhs(ec, y, std::iter::once(site), self.sei.film(ec, y, j, a), a, temp, out);
@@ -162,11 +162,11 @@ impl Model for Spm {
         let (cn, cp) = self.particles(y);
         let (sn, _) = ec.single_particle_surfaces(&cn, &cp);
         let [j_sei, j_plating] = self.side_rhs(y, sn, current, out);
-        let a_j_sei = self.lam.surface_area_density(ec, Side::Negative, y) * j_sei;
+        let a_j_sei = self.lam.surface_area_density(ec, Side::Negative, y, 0) * j_sei;
         let rates = self.lam.rhs(ec, [&cn, &cp], a_j_sei, out);
         for (side, c, range, side_reaction, rate) in [(Side::Negative, &cn, 0..nn, j_sei + j_plating, rates[0]), (Side::Positive, &cp, nn..nn + np, 0.0, rates[1])] {
             let flux = Electrochem::molar_flux(self.lam.interfacial_current(ec, side, y, current) - side_reaction);
-            self.lam.particle_rhs(ec, side, y, c, flux, rate, temp, &mut out[range]);
+            self.lam.particle_rhs(ec, side, 0, y, c, flux, rate, temp, &mut out[range]);
         }
         if ec.submodels.thermal {
             let (sn, sp) = self.surface_concentrations(y);
@@ -199,7 +199,7 @@ impl Model for Spm {
 
     fn solid_lithium(&self, y: &[f64]) -> f64 {
         let (n, p) = self.split(y);
-        self.lam.particle_lithium(&self.ec, Side::Negative, n) + self.lam.particle_lithium(&self.ec, Side::Positive, p)
+        self.lam.particle_lithium(&self.ec, Side::Negative, n, self.ec.params.negative.thickness) + self.lam.particle_lithium(&self.ec, Side::Positive, p, self.ec.params.positive.thickness)
     }
 
     fn sei_lithium(&self, y: &[f64]) -> f64 {
@@ -207,7 +207,7 @@ impl Model for Spm {
     }
 
     fn sei_thickness(&self, y: &[f64]) -> Option<f64> {
-        self.sei.thickness(&self.ec, y, self.lam.surface_area_density(&self.ec, Side::Negative, y))
+        self.sei.thickness(&self.ec, y, self.lam.surface_area_density(&self.ec, Side::Negative, y, 0))
     }
 
     fn active_material(&self, y: &[f64]) -> Option<super::submodels::lam::ActiveMaterial> {

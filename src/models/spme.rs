@@ -128,7 +128,7 @@ impl Spme {
         let (nn, np, nx) = (ec.disc.sphere_n.len(), ec.disc.sphere_p.len(), electrolyte.len());
         let p = &ec.params;
         let sei = SeiLayer::new(ec.submodels.sei, nn + np + nx, ec.disc.x_n.centres.len());
-        let lam = LamLayer::new(ec.submodels.lam, nn + np + nx + sei.len());
+        let lam = LamLayer::new(ec.submodels.lam, nn + np + nx + sei.len(), [1, 1]);
         let plating = PlatingLayer::new(ec.submodels.plating, nn + np + nx + sei.len() + lam.len(), ec.disc.x_n.centres.len());
         let mut scale = vec![lam.shell_scale(&ec, Side::Negative); nn];
         scale.extend(std::iter::repeat_n(lam.shell_scale(&ec, Side::Positive), np));
@@ -269,7 +269,7 @@ impl Spme {
         let c_in = c_s.clamp(0.0, c_max);
         let j0_particle = k * (c_in * (c_max - c_in)).sqrt();
         let j0 = ce[self.consts.electrode(side)].iter().map(|&c| j0_particle * electrolyte_factor(c, c_e_ref));
-        let film = if side == Side::Negative { self.sei.film(ec, y, j, self.lam.surface_area_density(ec, side, y)) } else { 0.0 };
+        let film = if side == Side::Negative { self.sei.film(ec, y, j, self.lam.surface_area_density(ec, side, y, 0)) } else { 0.0 };
         ec.ocp(side, c_s) + mean_overpotential(j, j0, alpha, temp) + film
     }
 
@@ -284,7 +284,7 @@ impl Spme {
         let (_, _, ce) = self.blocks(y);
         let delta_phi = self.surface_potential_difference(Side::Negative, sn, y, current, temp);
         let (ec, side) = (&self.ec, Side::Negative);
-        let (j, a) = (self.lam.interfacial_current(ec, side, y, current), self.lam.surface_area_density(ec, side, y));
+        let (j, a) = (self.lam.interfacial_current(ec, side, y, current), self.lam.surface_area_density(ec, side, y, 0));
         let j_sei = self.sei.rhs(ec, y, self.negative_potential_profile(delta_phi, ce, current, temp), j, a, temp, out);
         let sites = self.negative_potential_profile(delta_phi, ce, current, temp).zip(&ce[self.consts.negative.clone()]).enumerate().map(|(i, (delta_phi, &c_e))| {
             Site { delta_phi, electrolyte_concentration: c_e, sei_thickness: self.sei.volume_thickness(ec, y, i, a) }
@@ -301,7 +301,7 @@ impl Spme {
     /// Shell concentrations (mol/m^3) of the negative and positive particles.
     fn particles<'a>(&self, y: &'a [f64]) -> (Cow<'a, [f64]>, Cow<'a, [f64]>) {
         let (n, p, _) = self.blocks(y);
-        (self.lam.concentrations(Side::Negative, y, n), self.lam.concentrations(Side::Positive, y, p))
+        (self.lam.concentrations(Side::Negative, y, n, 0), self.lam.concentrations(Side::Positive, y, p, 0))
     }
 
     fn surfaces(&self, y: &[f64]) -> (f64, f64) {
@@ -379,11 +379,11 @@ impl Model for Spme {
         let (cn, cp) = self.particles(y);
         let (sn, _) = ec.single_particle_surfaces(&cn, &cp);
         let [j_sei, j_plating] = self.side_rhs(y, sn, current, temp, out);
-        let a_j_sei = self.lam.surface_area_density(ec, Side::Negative, y) * j_sei;
+        let a_j_sei = self.lam.surface_area_density(ec, Side::Negative, y, 0) * j_sei;
         let rates = self.lam.rhs(ec, [&cn, &cp], a_j_sei, out);
         for (side, c, range, side_reaction, rate) in [(Side::Negative, &cn, 0..nn, j_sei + j_plating, rates[0]), (Side::Positive, &cp, nn..nn + np, 0.0, rates[1])] {
             let flux = Electrochem::molar_flux(self.lam.interfacial_current(ec, side, y, current) - side_reaction);
-            self.lam.particle_rhs(ec, side, y, c, flux, rate, temp, &mut out[range]);
+            self.lam.particle_rhs(ec, side, 0, y, c, flux, rate, temp, &mut out[range]);
         }
         let ionic = (self.ionic_current_shape.as_slice(), current / ec.area());
         self.electrolyte.concentration_rhs(ec, ce, self.reaction(current), Some(ionic), temp, &mut out[nn + np..nn + np + nx]);
@@ -416,7 +416,7 @@ impl Model for Spme {
     }
 
     fn sei_thickness(&self, y: &[f64]) -> Option<f64> {
-        self.sei.thickness(&self.ec, y, self.lam.surface_area_density(&self.ec, Side::Negative, y))
+        self.sei.thickness(&self.ec, y, self.lam.surface_area_density(&self.ec, Side::Negative, y, 0))
     }
 
     fn active_material(&self, y: &[f64]) -> Option<super::submodels::lam::ActiveMaterial> {
@@ -433,7 +433,7 @@ impl Model for Spme {
 
     fn solid_lithium(&self, y: &[f64]) -> f64 {
         let (n, p, _) = self.blocks(y);
-        self.lam.particle_lithium(&self.ec, Side::Negative, n) + self.lam.particle_lithium(&self.ec, Side::Positive, p)
+        self.lam.particle_lithium(&self.ec, Side::Negative, n, self.ec.params.negative.thickness) + self.lam.particle_lithium(&self.ec, Side::Positive, p, self.ec.params.positive.thickness)
     }
 
     fn fields(&self, y: &[f64]) -> Vec<super::Field> {

@@ -128,3 +128,23 @@ pub fn rms(x: &[f64]) -> f64 {
 pub fn max_abs(x: &[f64]) -> f64 {
     x.iter().fold(0.0f64, |m, e| m.max(e.abs()))
 }
+
+/// Limits on an ageing run's gaps to PyBaMM: voltage RMS and max outside the holds (mV),
+/// hold current RMS and max (mA), and the ageing quantities' relative differences (-).
+pub struct AgeingLimits {
+    pub voltage: (f64, f64),
+    pub current: (f64, f64),
+    pub ageing: f64,
+}
+
+impl AgeingLimits {
+    /// Asserts that case `label`'s voltage and hold-current gaps (RMS, max), its ageing
+    /// quantities' differences `ageing` (`what` names them) are within the limits, and that
+    /// its lithium changed by less than 1e-14 of the total (`conservation`: round-off).
+    pub fn assert(&self, label: &str, voltage: (f64, f64), current: (f64, f64), what: &str, ageing: &[f64], conservation: f64) {
+        assert!(voltage.0 < self.voltage.0 && voltage.1 < self.voltage.1, "{label}: voltage {voltage:?} mV");
+        assert!(current.0 < self.current.0 && current.1 < self.current.1, "{label}: hold current {current:?} mA");
+        assert!(ageing.iter().all(|d| *d < self.ageing), "{label}: {what} {ageing:?}");
+        assert!(conservation < 1e-14, "{label}: lithium changed by {conservation:e}");
+    }
+}

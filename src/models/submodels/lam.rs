@@ -1,13 +1,15 @@
-//! Loss of active material (LAM) in the single-particle models, as PyBaMM's
-//! `LossActiveMaterial` submodel with x-averaged states (its SPM and SPMe), with the
-//! parameters of [`crate::params::Lam`]. See docs/ageing.md.
+//! Loss of active material (LAM), as PyBaMM's `LossActiveMaterial` submodel: with
+//! x-averaged states in the single-particle models (its SPM and SPMe), one volume fraction
+//! per electrode x volume in the DFN; with the parameters of [`crate::params::Lam`]. See
+//! docs/ageing.md.
 //!
-//! States (when on), after the SEI's: the active material volume fractions `eps_n`, `eps_p`
-//! (-), then the lithium lost with the active material of each electrode (mol), PyBaMM's
-//! "Loss of lithium due to loss of active material in negative/positive electrode [mol]".
-//! The particle states then hold `n_k = eps c_k`, the lithium per unit electrode volume in
-//! shell `k` (mol/m^3), so that particle lithium + lost lithium + SEI lithium is a linear
-//! function of the states: the integrator conserves it to round-off.
+//! States (when on), after the SEI's: the active material volume fractions `eps_n` of each
+//! negative volume and `eps_p` of each positive volume (one each when x-averaged) (-), then
+//! the lithium lost with the active material of each electrode (mol), PyBaMM's "Loss of
+//! lithium due to loss of active material in negative/positive electrode [mol]". The particle
+//! states then hold `n_k = eps c_k`, the lithium per unit electrode volume in shell `k`
+//! (mol/m^3), so that particle lithium + lost lithium + SEI lithium is a linear function of
+//! the states: the integrator conserves it to round-off.
 //!
 //! - surface area density `a = 3 eps / R` (1/m) and total interfacial current density
 //!   `j_tot = I / (a L A)` (A/m^2) follow `eps`;
@@ -19,7 +21,8 @@
 //!   `stress_induced_diffusion = false`);
 //! - reaction-driven (negative electrode, needs an SEI submodel):
 //!   `d eps_n / dt = beta_LAM_sei a j_sei / F` (`j_sei` < 0 while the SEI grows);
-//! - lithium lost: `d Q / dt = -L A c_av d eps / dt` (mol/s);
+//! - lithium lost: `d Q / dt = -A sum_x dx c_av d eps / dt` (mol/s) over the electrode's
+//!   volumes (`-L A c_av d eps / dt` when x-averaged);
 //! - particles: `d n_k / dt = eps (d c_k / dt)_diffusion + c_k d eps / dt` with `c = n / eps`
 //!   and the surface flux `(j_tot - j_side) / F`.
 
@@ -75,14 +78,15 @@ pub struct ActiveMaterial {
     pub lithium_lost_mol: [f64; 2],
 }
 
-/// Number of states when on: two volume fractions, two lithium losses.
-const STATES: usize = 4;
-
-/// The LAM states of a single-particle model: off, or [`STATES`] states from `start`.
+/// The LAM states of a model: off, or from `start` the volume fractions of `counts[0]`
+/// negative and `counts[1]` positive x volumes (one each when x-averaged), then the two
+/// electrodes' lithium losses. Methods taking `k` mean the electrode's x volume `k` (0 when
+/// x-averaged).
 #[derive(Clone, Copy, Debug)]
 pub struct LamLayer {
     model: LamModel,
     start: Option<usize>,
+    counts: [usize; 2],
 }
 
 fn slot(side: Side) -> usize {
@@ -93,24 +97,35 @@ fn slot(side: Side) -> usize {
 }
 
 impl LamLayer {
-    /// The layer for `model`, its states (if on) from `start`.
-    pub fn new(model: LamModel, start: usize) -> Self {
-        Self { model, start: (model != LamModel::None).then_some(start) }
+    /// The layer for `model`, its states (if on) from `start`, with `counts` x volumes in
+    /// the negative and positive electrodes (`[1, 1]` when x-averaged).
+    pub fn new(model: LamModel, start: usize, counts: [usize; 2]) -> Self {
+        Self { model, start: (model != LamModel::None).then_some(start), counts }
     }
 
     /// Number of states it adds.
     pub fn len(&self) -> usize {
-        if self.start.is_some() { STATES } else { 0 }
+        if self.start.is_some() { self.counts[0] + self.counts[1] + 2 } else { 0 }
     }
 
     /// Indices of its states (empty when off).
     pub fn indices(&self) -> Range<usize> {
-        self.start.map_or(0..0, |s| s..s + STATES)
+        self.start.map_or(0..0, |s| s..s + self.len())
     }
 
-    /// Index of an electrode's volume fraction state.
-    fn fraction_index(&self, side: Side) -> Option<usize> {
-        self.start.map(|s| s + slot(side))
+    /// Index of the volume fraction state of an electrode's x volume `k`.
+    pub fn fraction_index(&self, side: Side, k: usize) -> Option<usize> {
+        self.start.map(|s| s + if side == Side::Negative { k } else { self.counts[0] + k })
+    }
+
+    /// Indices of an electrode's volume fraction states (empty when off).
+    pub fn fraction_indices(&self, side: Side) -> Range<usize> {
+        self.fraction_index(side, 0).map_or(0..0, |s| s..s + self.counts[slot(side)])
+    }
+
+    /// Index of the state of the lithium lost with an electrode's active material.
+    pub fn loss_index(&self, side: Side) -> Option<usize> {
+        self.start.map(|s| s + self.counts[0] + self.counts[1] + slot(side))
     }
 
     fn params(ec: &Electrochem, side: Side) -> &LamElectrode {
@@ -120,32 +135,33 @@ impl LamLayer {
         }
     }
 
-    /// Active material volume fraction `eps_s` (-) of an electrode at state `y`.
-    pub fn active_fraction(&self, ec: &Electrochem, side: Side, y: &[f64]) -> f64 {
-        self.fraction_index(side).map_or(ec.electrode(side).active_fraction, |k| y[k])
+    /// Active material volume fraction `eps_s` (-) of an electrode's x volume `k` at state `y`.
+    pub fn active_fraction(&self, ec: &Electrochem, side: Side, y: &[f64], k: usize) -> f64 {
+        self.fraction_index(side, k).map_or(ec.electrode(side).active_fraction, |i| y[i])
     }
 
-    /// Surface area density `a = 3 eps_s / R` (1/m) of an electrode at state `y`.
-    pub fn surface_area_density(&self, ec: &Electrochem, side: Side, y: &[f64]) -> f64 {
-        match self.fraction_index(side) {
+    /// Surface area density `a = 3 eps_s / R` (1/m) of an electrode's x volume `k` at state `y`.
+    pub fn surface_area_density(&self, ec: &Electrochem, side: Side, y: &[f64], k: usize) -> f64 {
+        match self.fraction_index(side, k) {
             None => ec.electrode(side).surface_area_density(),
-            Some(k) => 3.0 * y[k] / ec.electrode(side).particle_radius,
+            Some(i) => 3.0 * y[i] / ec.electrode(side).particle_radius,
         }
     }
 
     /// Electrode-averaged total interfacial current density `I / (a L A)` (A/m^2, positive
-    /// in the negative electrode on discharge) at state `y` and applied current `current` (A).
+    /// in the negative electrode on discharge) of an x-averaged model at state `y` and
+    /// applied current `current` (A).
     pub fn interfacial_current(&self, ec: &Electrochem, side: Side, y: &[f64], current: f64) -> f64 {
         let j = ec.mean_interfacial_current(side, current);
-        self.fraction_index(side).map_or(j, |k| j * ec.electrode(side).active_fraction / y[k])
+        self.fraction_index(side, 0).map_or(j, |i| j * ec.electrode(side).active_fraction / y[i])
     }
 
-    /// Shell concentrations `c_k` (mol/m^3) of an electrode's particle whose states are
-    /// `shells`: the states themselves when off, `n_k / eps` when on.
-    pub fn concentrations<'a>(&self, side: Side, y: &[f64], shells: &'a [f64]) -> Cow<'a, [f64]> {
-        match self.fraction_index(side) {
+    /// Shell concentrations `c_k` (mol/m^3) of the particle of an electrode's x volume `k`
+    /// whose states are `shells`: the states themselves when off, `n_k / eps` when on.
+    pub fn concentrations<'a>(&self, side: Side, y: &[f64], shells: &'a [f64], k: usize) -> Cow<'a, [f64]> {
+        match self.fraction_index(side, k) {
             None => Cow::Borrowed(shells),
-            Some(k) => Cow::Owned(shells.iter().map(|n| n / y[k]).collect()),
+            Some(i) => Cow::Owned(shells.iter().map(|n| n / y[i]).collect()),
         }
     }
 
@@ -161,34 +177,39 @@ impl LamLayer {
         if self.start.is_some() { e.active_fraction * e.max_concentration } else { e.max_concentration }
     }
 
-    /// Lithium (mol) in an electrode's particles whose states are `shells`.
-    pub fn particle_lithium(&self, ec: &Electrochem, side: Side, shells: &[f64]) -> f64 {
-        let e = ec.electrode(side);
+    /// Lithium (mol) in the particles of an electrode's slab of thickness `thickness` (m,
+    /// the electrode's when x-averaged) whose states are `shells`.
+    pub fn particle_lithium(&self, ec: &Electrochem, side: Side, shells: &[f64], thickness: f64) -> f64 {
         match self.start {
-            None => ec.particle_lithium(side, shells, e.thickness),
-            Some(_) => ec.sphere(side).average(shells) * e.thickness * ec.area(),
+            None => ec.particle_lithium(side, shells, thickness),
+            Some(_) => ec.sphere(side).average(shells) * thickness * ec.area(),
         }
     }
 
     /// Lithium lost with the active material of an electrode since the start (mol); zero off.
     pub fn lithium_lost(&self, side: Side, y: &[f64]) -> f64 {
-        self.start.map_or(0.0, |s| y[s + 2 + slot(side)])
+        self.loss_index(side).map_or(0.0, |i| y[i])
     }
 
-    /// The electrodes' active material at state `y`; `None` when off.
+    /// The electrodes' active material at state `y` (the volume fractions averaged over the
+    /// electrode's uniform x volumes, as the initial value plus the mean change, so that an
+    /// electrode that lost nothing reports its initial fraction exactly); `None` when off.
     pub fn summary(&self, ec: &Electrochem, y: &[f64]) -> Option<ActiveMaterial> {
         self.start?;
         let sides = [Side::Negative, Side::Positive];
-        let fraction = sides.map(|side| self.active_fraction(ec, side, y));
+        let fraction = sides.map(|side| {
+            let eps_0 = ec.electrode(side).active_fraction;
+            eps_0 + y[self.fraction_indices(side)].iter().map(|eps| eps - eps_0).sum::<f64>() / self.counts[slot(side)] as f64
+        });
         let capacity_ah = sides.map(|side| {
             let e = ec.electrode(side);
-            self.active_fraction(ec, side, y) * e.thickness * ec.area() * e.max_concentration * FARADAY / 3600.0
+            fraction[slot(side)] * e.thickness * ec.area() * e.max_concentration * FARADAY / 3600.0
         });
         Some(ActiveMaterial { fraction, capacity_ah, lithium_lost_mol: sides.map(|side| self.lithium_lost(side, y)) })
     }
 
-    /// `d eps_s / dt` (1/s) of an electrode with shell concentrations `c` (mol/m^3), and
-    /// x-averaged volumetric SEI current `a_j_sei` (A/m^3, negative while the SEI grows).
+    /// `d eps_s / dt` (1/s) of an electrode's particle with shell concentrations `c`
+    /// (mol/m^3), and volumetric SEI current `a_j_sei` (A/m^3, negative while the SEI grows).
     fn fraction_rate(&self, ec: &Electrochem, side: Side, c: &[f64], a_j_sei: f64) -> f64 {
         let p = Self::params(ec, side);
         let mut rate = 0.0;
@@ -203,53 +224,68 @@ impl LamLayer {
         rate
     }
 
-    /// Writes the rates of its states into `out` from the two electrodes' shell
-    /// concentrations `c` (mol/m^3) and the x-averaged volumetric SEI current `a_j_sei`
-    /// (A/m^3), and returns `d eps_s / dt` of each electrode (zeros when off).
+    /// Writes the rates of the states of an x-averaged model into `out` from the two
+    /// electrodes' shell concentrations `c` (mol/m^3) and the x-averaged volumetric SEI
+    /// current `a_j_sei` (A/m^3), and returns `d eps_s / dt` of each electrode (zeros when
+    /// off).
     pub fn rhs(&self, ec: &Electrochem, c: [&[f64]; 2], a_j_sei: f64, out: &mut [f64]) -> [f64; 2] {
-        let Some(start) = self.start else { return [0.0; 2] };
-        let mut rates = [0.0; 2];
-        for (k, side) in [Side::Negative, Side::Positive].into_iter().enumerate() {
-            let rate = self.fraction_rate(ec, side, c[k], a_j_sei);
-            out[start + k] = rate;
-            out[start + 2 + k] = -ec.electrode(side).thickness * ec.area() * ec.sphere(side).average(c[k]) * rate;
-            rates[k] = rate;
-        }
-        rates
+        [Side::Negative, Side::Positive].map(|side| {
+            let (Some(fraction), Some(loss)) = (self.fraction_index(side, 0), self.loss_index(side)) else { return 0.0 };
+            let (rate, lost) = self.volume_rates(ec, side, c[slot(side)], a_j_sei, ec.electrode(side).thickness);
+            (out[fraction], out[loss]) = (rate, lost);
+            rate
+        })
+    }
+
+    /// `d eps_s / dt` (1/s) of an electrode's x volume of thickness `dx` (m) from its
+    /// particle's shell concentrations `c` (mol/m^3) and its volumetric SEI current `a_j_sei`
+    /// (A/m^3), and the rate (mol/s) at which it loses lithium with its active material,
+    /// `-dx A c_av d eps_s / dt`.
+    pub fn volume_rates(&self, ec: &Electrochem, side: Side, c: &[f64], a_j_sei: f64, dx: f64) -> (f64, f64) {
+        let rate = self.fraction_rate(ec, side, c, a_j_sei);
+        (rate, -dx * ec.area() * ec.sphere(side).average(c) * rate)
     }
 
     /// Writes the particle states' rates of an electrode into `out`: diffusion of the shell
     /// concentrations `c` (mol/m^3) at temperature `temp` (K) with outward molar surface
     /// flux `flux` (mol/(m^2 s)), stress-induced when the submodels say so; then, when on, the
-    /// rates of `n = eps c` with `d eps / dt` = `rate` (1/s) at state `y`.
-    pub fn particle_rhs(&self, ec: &Electrochem, side: Side, y: &[f64], c: &[f64], flux: f64, rate: f64, temp: f64, out: &mut [f64]) {
+    /// rates of `n = eps c` with `d eps / dt` = `rate` (1/s) of x volume `k` at state `y`.
+    #[allow(clippy::too_many_arguments)]
+    pub fn particle_rhs(&self, ec: &Electrochem, side: Side, k: usize, y: &[f64], c: &[f64], flux: f64, rate: f64, temp: f64, out: &mut [f64]) {
         let p = Self::params(ec, side);
         let stress = ec.submodels.stressed_diffusion().then(|| (p.stress_diffusion_coefficient(temp), p.reference_concentration));
         ec.sphere(side).stressed_diffusion(c, ec.diffusivity(side, temp), stress, flux, out);
-        if let Some(k) = self.fraction_index(side) {
-            let eps = y[k];
+        if let Some(i) = self.fraction_index(side, k) {
+            let eps = y[i];
             for (o, c) in out.iter_mut().zip(c) {
                 *o = eps * *o + c * rate;
             }
         }
     }
 
+    /// Its states (when on) in order, from each electrode's `fraction` (the volume fractions)
+    /// and `lithium` (the losses).
+    fn states(&self, ec: &Electrochem, fraction: impl Fn(&crate::params::Electrode) -> f64, lithium: impl Fn(&crate::params::Electrode) -> f64) -> Vec<f64> {
+        if self.start.is_none() {
+            return Vec::new();
+        }
+        let (n, p) = (&ec.params.negative, &ec.params.positive);
+        let mut v = vec![fraction(n); self.counts[0]];
+        v.extend(std::iter::repeat_n(fraction(p), self.counts[1]));
+        v.extend([lithium(n), lithium(p)]);
+        v
+    }
+
     /// Appends its initial states (when on) to `y`: the parameter set's volume fractions and
     /// no lithium lost.
     pub fn push_initial(&self, ec: &Electrochem, y: &mut Vec<f64>) {
-        if self.start.is_some() {
-            y.extend([ec.params.negative.active_fraction, ec.params.positive.active_fraction, 0.0, 0.0]);
-        }
+        y.extend(self.states(ec, |e| e.active_fraction, |_| 0.0));
     }
 
     /// Appends the typical sizes of its states: the volume fractions, and each electrode's
     /// initial particle lithium (mol) for its loss.
     pub fn push_scale(&self, ec: &Electrochem, scale: &mut Vec<f64>) {
-        if self.start.is_some() {
-            let p = &ec.params;
-            let lithium = |e: &crate::params::Electrode| e.active_fraction * e.initial_concentration * e.thickness * ec.area();
-            scale.extend([p.negative.active_fraction, p.positive.active_fraction, lithium(&p.negative), lithium(&p.positive)]);
-        }
+        scale.extend(self.states(ec, |e| e.active_fraction, |e| e.active_fraction * e.initial_concentration * e.thickness * ec.area()));
     }
 
     /// Appends its Jacobian pattern, given each electrode's particle states `shells` and
@@ -258,11 +294,10 @@ impl LamLayer {
     /// electrode's shells, its volume fraction and `extra`. (Leaving out the weak couplings
     /// of `c_k d eps / dt` costs the integrator's exact conservation of lithium: 6e-10.)
     pub fn push_pattern(&self, pattern: &mut Vec<(usize, usize)>, shells: [Range<usize>; 2], extra: &[usize]) {
-        let Some(start) = self.start else { return };
-        for (k, range) in shells.into_iter().enumerate() {
-            let fraction = start + k;
+        for (side, range) in [Side::Negative, Side::Positive].into_iter().zip(shells) {
+            let (Some(fraction), Some(loss)) = (self.fraction_index(side, 0), self.loss_index(side)) else { return };
             let columns: Vec<usize> = range.clone().chain([fraction]).chain(extra.iter().copied()).collect();
-            for row in range.chain([fraction, start + 2 + k]) {
+            for row in range.chain([fraction, loss]) {
                 pattern.extend(columns.iter().map(|&c| (row, c)));
             }
         }

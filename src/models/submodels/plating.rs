@@ -115,6 +115,32 @@ impl PlatingLayer {
         }
     }
 
+    /// The stripping current density `j_Li` (A/m^2) and the rates `[d c_Li / dt, d c_dead /
+    /// dt]` (mol/(m^3 s)) at `site` whose plated lithium concentration is `c_li` (mol/m^3),
+    /// with the SEI film overpotential `film` (V, `j_tot L_sei R_sei`, zero without SEI),
+    /// surface area density `a` (1/m) and temperature `temp` (K).
+    pub fn site_rates(&self, ec: &Electrochem, c_li: f64, site: Site, film: f64, a: f64, temp: f64) -> (f64, [f64; 2]) {
+        let j = self.current(ec, c_li, site.delta_phi - film, site.electrolyte_concentration, temp);
+        let plated = -a * j / FARADAY;
+        let rates = match self.model {
+            PlatingModel::None => [0.0, 0.0],
+            PlatingModel::Irreversible => [0.0, plated],
+            PlatingModel::Reversible => [plated, 0.0],
+            PlatingModel::PartiallyReversible => {
+                let p = &ec.params.plating;
+                let decay = p.dead_lithium_decay_constant * ec.params.sei.initial_thickness / site.sei_thickness * c_li;
+                [plated - decay, decay]
+            }
+        };
+        (j, rates)
+    }
+
+    /// Indices of the plated and the dead lithium state of site `k` (`0..count`), `None`
+    /// when off.
+    pub fn site_indices(&self, k: usize) -> Option<[usize; 2]> {
+        self.start.map(|s| [s + k, s + self.count + k])
+    }
+
     /// Writes the rates of its states into `out` (mol/(m^3 s)), one site per plated-lithium
     /// state, with the SEI film overpotential `film` (V, `j_tot L_sei R_sei`, zero without
     /// SEI), surface area density `a` (1/m) and temperature `temp` (K), and returns the
@@ -122,21 +148,9 @@ impl PlatingLayer {
     /// intercalation current loses; zero when off.
     pub fn rhs(&self, ec: &Electrochem, y: &[f64], sites: impl Iterator<Item = Site>, film: f64, a: f64, temp: f64, out: &mut [f64]) -> f64 {
         let Some(start) = self.start else { return 0.0 };
-        let p = &ec.params.plating;
-        let sei_0 = ec.params.sei.initial_thickness;
         let mut sum = 0.0;
         for (k, site) in (start..start + self.count).zip(sites) {
-            let j = self.current(ec, y[k], site.delta_phi - film, site.electrolyte_concentration, temp);
-            let plated = -a * j / FARADAY;
-            let (d_plated, d_dead) = match self.model {
-                PlatingModel::None => (0.0, 0.0),
-                PlatingModel::Irreversible => (0.0, plated),
-                PlatingModel::Reversible => (plated, 0.0),
-                PlatingModel::PartiallyReversible => {
-                    let decay = p.dead_lithium_decay_constant * sei_0 / site.sei_thickness * y[k];
-                    (plated - decay, decay)
-                }
-            };
+            let (j, [d_plated, d_dead]) = self.site_rates(ec, y[k], site, film, a, temp);
             out[k] = d_plated;
             out[k + self.count] = d_dead;
             sum += j;

@@ -4,8 +4,11 @@
 //! electrolyte concentration `c_e` over all x volumes (mol/m^3), then the algebraic
 //! potentials `phi_e` over all x volumes, `phi_s` in the negative and in the positive
 //! electrode (V), with an SEI submodel the SEI concentration (mol/m^3) and the (algebraic)
-//! total interfacial current density `j_tot` (A/m^2) of each negative volume, and `T` (K)
-//! when the thermal submodel is on.
+//! total interfacial current density `j_tot` (A/m^2) of each negative volume, with a plating
+//! submodel the plated and the dead lithium concentration (mol/m^3) of each negative volume,
+//! with a loss-of-active-material submodel the active material volume fraction of each
+//! electrode volume and the lithium lost with each electrode's (the particle states then hold
+//! `eps c`, see [`LamLayer`]), and `T` (K) when the thermal submodel is on.
 //!
 //! Equations (x through the cell, r in each particle, SI units):
 //! - particles: `dc_s/dt = 1/r^2 d/dr (r^2 D_s dc_s/dr)`, `-D_s dc_s/dr|_R = j / F`;
@@ -19,7 +22,13 @@
 //!   R_sei) / (R T))` into the particle, the side reaction `j_sei` of
 //!   [`crate::models::submodels::SeiLayer`] at `phi_s - phi_e` with the film carrying `j`,
 //!   `0 = j_tot - (j + j_sei)`, and `a j_tot` the source of the electrolyte and the
-//!   potentials (docs/ageing.md, section 1).
+//!   potentials (docs/ageing.md, section 1);
+//! - with lithium plating: in each negative volume the plating current `j_Li` of
+//!   [`crate::models::submodels::PlatingLayer`] at `phi_s - phi_e - j_tot L R_sei` joins the
+//!   sum (docs/ageing.md, section 4.4; [`interface`]);
+//! - with loss of active material: each electrode volume's `eps_s` falls with its particle's
+//!   surface stress or its SEI current, and its surface area density `a = 3 eps_s / R`
+//!   follows (docs/ageing.md, section 2.3; [`active`]).
 //!
 //! Voltage: `phi_s(L) - phi_s(0) - I R_contact`, `phi_s(L)` extrapolated linearly from the
 //! last two volumes as PyBaMM does.
@@ -27,10 +36,16 @@
 use super::electrochem::{Electrochem, Side};
 use super::electrolyte::ElectrolyteOp;
 use super::kinetics::{butler_volmer, exchange_current};
-use super::submodels::SeiLayer;
+use super::submodels::{LamLayer, PlatingLayer, SeiLayer};
 use super::submodels::thermal::bernardi_heat;
 use super::{Model, PhysicsModel, push_tridiagonal};
 use crate::params::ParameterSet;
+
+mod active;
+mod interface;
+mod layout;
+use interface::Surface;
+pub use layout::Layout;
 
 #[derive(Clone, Debug)]
 pub struct Dfn {
@@ -39,81 +54,12 @@ pub struct Dfn {
     pub layout: Layout,
     electrolyte: ElectrolyteOp,
     sei: SeiLayer,
+    plating: PlatingLayer,
+    lam: LamLayer,
     /// Effective solid conductivities of the negative and positive electrodes (S/m).
     sigma: [f64; 2],
     mass: Vec<f64>,
     scale: Vec<f64>,
-}
-
-/// Where each block of the DFN state vector starts.
-#[derive(Clone, Copy, Debug)]
-pub struct Layout {
-    pub nxn: usize,
-    pub nxs: usize,
-    pub nxp: usize,
-    pub nrn: usize,
-    pub nrp: usize,
-    pub cs_n: usize,
-    pub cs_p: usize,
-    pub ce: usize,
-    pub phie: usize,
-    pub phis_n: usize,
-    pub phis_p: usize,
-    /// With SEI growth: the SEI concentrations of the negative volumes from here, then their
-    /// total interfacial current densities.
-    pub sei: Option<usize>,
-    pub temp: Option<usize>,
-    pub len: usize,
-}
-
-impl Layout {
-    fn new(ec: &Electrochem) -> Self {
-        let d = &ec.disc;
-        let (nxn, nxs, nxp) = (d.x_n.len(), d.x_s.len(), d.x_p.len());
-        let (nrn, nrp) = (d.sphere_n.len(), d.sphere_p.len());
-        let nx = nxn + nxs + nxp;
-        let cs_n = 0;
-        let cs_p = cs_n + nxn * nrn;
-        let ce = cs_p + nxp * nrp;
-        let phie = ce + nx;
-        let phis_n = phie + nx;
-        let phis_p = phis_n + nxn;
-        let sei = (ec.submodels.sei != super::submodels::SeiModel::None).then_some(phis_p + nxp);
-        let end = phis_p + nxp + if sei.is_some() { 2 * nxn } else { 0 };
-        let temp = ec.submodels.thermal.then_some(end);
-        Self { nxn, nxs, nxp, nrn, nrp, cs_n, cs_p, ce, phie, phis_n, phis_p, sei, temp, len: end + usize::from(temp.is_some()) }
-    }
-
-    pub fn nx(&self) -> usize {
-        self.nxn + self.nxs + self.nxp
-    }
-
-    /// For x volume `i`: the electrode it lies in, its index within that electrode, and the
-    /// start of its particle shells.
-    pub fn electrode_of(&self, i: usize) -> Option<(Side, usize, usize)> {
-        if i < self.nxn {
-            Some((Side::Negative, i, self.cs_n + i * self.nrn))
-        } else if i >= self.nxn + self.nxs {
-            let k = i - self.nxn - self.nxs;
-            Some((Side::Positive, k, self.cs_p + k * self.nrp))
-        } else {
-            None
-        }
-    }
-
-    fn nr(&self, side: Side) -> usize {
-        match side {
-            Side::Negative => self.nrn,
-            Side::Positive => self.nrp,
-        }
-    }
-
-    fn phis(&self, side: Side, k: usize) -> usize {
-        match side {
-            Side::Negative => self.phis_n + k,
-            Side::Positive => self.phis_p + k,
-        }
-    }
 }
 
 impl Dfn {
@@ -123,8 +69,6 @@ impl Dfn {
         mass[..layout.phie].iter_mut().for_each(|m| *m = 1.0);
         let p = &ec.params;
         let mut scale = vec![0.0; layout.len];
-        scale[layout.cs_n..layout.cs_p].iter_mut().for_each(|s| *s = p.negative.max_concentration);
-        scale[layout.cs_p..layout.ce].iter_mut().for_each(|s| *s = p.positive.max_concentration);
         scale[layout.ce..layout.phie].iter_mut().for_each(|s| *s = p.electrolyte.initial_concentration);
         scale[layout.phie..layout.phis_p + layout.nxp].iter_mut().for_each(|s| *s = 1.0);
         if let Some(t) = layout.temp {
@@ -138,9 +82,21 @@ impl Dfn {
             scale[s + n..s + 2 * n].fill(ec.mean_interfacial_current(Side::Negative, p.cell.nominal_capacity).abs());
         }
         let sei = SeiLayer::new(ec.submodels.sei, layout.sei.unwrap_or(0), layout.nxn);
+        let plating = PlatingLayer::new(ec.submodels.plating, layout.plating.unwrap_or(0), layout.nxn);
+        for k in plating.indices() {
+            mass[k] = 1.0;
+            scale[k] = p.plating.typical_concentration;
+        }
+        let lam = LamLayer::new(ec.submodels.lam, layout.lam.unwrap_or(0), [layout.nxn, layout.nxp]);
+        mass[lam.indices()].fill(1.0);
+        let mut lam_scale = Vec::new();
+        lam.push_scale(&ec, &mut lam_scale);
+        scale[lam.indices()].copy_from_slice(&lam_scale);
+        scale[layout.cs_n..layout.cs_p].fill(lam.shell_scale(&ec, Side::Negative));
+        scale[layout.cs_p..layout.ce].fill(lam.shell_scale(&ec, Side::Positive));
         let electrolyte = ElectrolyteOp::new(&ec);
         let sigma = Self::solid_conductivities(&ec);
-        Self { ec, layout, electrolyte, sei, sigma, mass, scale }
+        Self { ec, layout, electrolyte, sei, plating, lam, sigma, mass, scale }
     }
 
     fn temp(&self, y: &[f64]) -> f64 {
@@ -184,14 +140,18 @@ impl Model for Dfn {
                 Some((side, k, start)) => {
                     let nr = l.nr(side);
                     let mut c = vec![start + nr - 2, start + nr - 1, l.ce + i, l.phie + i, l.phis(side, k)];
-                    // The SEI concentration and total current of a negative volume, whose rows
-                    // read the same.
-                    if let (Side::Negative, Some(s)) = (side, l.sei) {
-                        c.extend([s + k, s + l.nxn + k]);
-                        for row in [s + k, s + l.nxn + k] {
+                    // The volume fraction under loss of active material (through `a` and `n / eps`).
+                    c.extend(self.lam.fraction_index(side, k));
+                    // The side states of a negative volume (SEI concentration and total current,
+                    // plated and dead lithium), whose rows read the same.
+                    if side == Side::Negative {
+                        let states = self.side_states(k);
+                        c.extend(&states);
+                        for row in states {
                             p.extend(c.iter().map(|&col| (row, col)));
                         }
                     }
+                    self.push_lam_pattern(&mut p, side, k, start, &c);
                     c
                 }
                 None => Vec::new(),
@@ -231,8 +191,8 @@ impl Model for Dfn {
         let l = &self.layout;
         let p = &self.ec.params;
         let mut y = vec![0.0; l.len];
-        y[l.cs_n..l.cs_p].iter_mut().for_each(|v| *v = p.negative.initial_concentration);
-        y[l.cs_p..l.ce].iter_mut().for_each(|v| *v = p.positive.initial_concentration);
+        y[l.cs_n..l.cs_p].fill(self.lam.initial_shell(&self.ec, Side::Negative));
+        y[l.cs_p..l.ce].fill(self.lam.initial_shell(&self.ec, Side::Positive));
         y[l.ce..l.phie].iter_mut().for_each(|v| *v = p.electrolyte.initial_concentration);
         // Potentials at open circuit: phi_s_n = 0, phi_e = -U_n, phi_s_p = U_p - U_n.
         let un = self.ec.ocp(Side::Negative, p.negative.initial_concentration);
@@ -242,6 +202,12 @@ impl Model for Dfn {
         if let Some(s) = l.sei {
             y[s..s + l.nxn].fill(SeiLayer::initial_concentration(&self.ec));
         }
+        if let Some(s) = l.plating {
+            y[s..s + l.nxn].fill(p.plating.initial_concentration);
+        }
+        let mut lam = Vec::new();
+        self.lam.push_initial(&self.ec, &mut lam);
+        y[self.lam.indices()].copy_from_slice(&lam);
         if let Some(t) = l.temp {
             y[t] = p.thermal.initial_temperature;
         }
@@ -264,6 +230,7 @@ impl Model for Dfn {
         out_phie[l.nxn..l.nxn + l.nxs].fill(0.0);
         // sum over each electrode's volumes of the surface OCP (V), for the heat source
         let mut sum_ocp = [0.0; 2];
+        self.clear_lam_losses(out_phis);
         for (slot, side, first, n, cs) in [(0, Side::Negative, 0, l.nxn, l.cs_n), (1, Side::Positive, l.nxn + l.nxs, l.nxp, l.cs_p)] {
             let e = ec.electrode(side);
             let sphere = ec.sphere(side);
@@ -273,30 +240,31 @@ impl Model for Dfn {
             for k in 0..n {
                 let (i, start) = (first + k, cs + k * nr);
                 let shells = &y[start..start + nr];
-                let c_s = sphere.surface(shells);
+                let c = self.lam.concentrations(side, y, shells, k);
+                let c_s = sphere.surface(&c);
                 let ocp = ec.ocp(side, c_s);
                 sum_ocp[slot] += ocp;
                 let j0 = exchange_current(rate, y[l.ce + i], c_e_ref, c_s, e.max_concentration);
                 let delta_phi = y[l.phis(side, k)] - y[l.phie + i];
-                let a = vols[i].a;
-                let j = match (side, l.sei) {
-                    (Side::Negative, Some(s)) => {
-                        let (c_sei, j_tot) = (s + k, s + l.nxn + k);
-                        let film = y[j_tot] * SeiLayer::local_thickness(ec, y, c_sei, a) * ec.params.sei.resistivity;
-                        let j = butler_volmer(j0, delta_phi - ocp - film, e.charge_transfer_coefficient, temp);
-                        let j_sei = self.sei.side_current(ec, y, c_sei, delta_phi, j, a, temp);
-                        out_phis[c_sei - l.phis_n] = SeiLayer::growth_rate(ec, a, j_sei);
-                        out_phis[j_tot - l.phis_n] = y[j_tot] - (j + j_sei);
-                        out_phie[i] = a * (j + j_sei);
-                        j
+                let a = self.lam.fraction_index(side, k).map_or(vols[i].a, |_| self.lam.surface_area_density(ec, side, y, k));
+                let (j, j_sei) = match side {
+                    Side::Negative if self.side_reactions() => {
+                        let (j, j_sei, total) = self.negative_interface(y, Surface { k, i, j0, delta_phi, ocp, a, temp }, out_phis);
+                        out_phie[i] = a * total;
+                        (j, j_sei)
                     }
                     _ => {
                         let j = butler_volmer(j0, delta_phi - ocp, e.charge_transfer_coefficient, temp);
                         out_phie[i] = a * j;
-                        j
+                        (j, 0.0)
                     }
                 };
-                sphere.diffusion(shells, diff, Electrochem::molar_flux(j), &mut out_cs[start..start + nr]);
+                let flux = Electrochem::molar_flux(j);
+                let out_particle = &mut out_cs[start..start + nr];
+                match self.lam.fraction_index(side, k) {
+                    None => sphere.diffusion(shells, diff, flux, out_particle),
+                    Some(_) => self.lose_active_material(y, (side, k, i), &c, flux, a * j_sei, temp, (out_particle, out_phis)),
+                }
             }
         }
         let aj: &[f64] = out_phie;
@@ -361,7 +329,7 @@ impl Model for Dfn {
         for i in 0..l.nx() {
             if let Some((side, _, start)) = l.electrode_of(i) {
                 let c = &y[start..start + l.nr(side)];
-                total += self.ec.particle_lithium(side, c, self.electrolyte.vols[i].dx);
+                total += self.lam.particle_lithium(&self.ec, side, c, self.electrolyte.vols[i].dx);
             }
         }
         total
@@ -371,8 +339,19 @@ impl Model for Dfn {
         self.sei.lithium(&self.ec, y)
     }
 
+    fn plated_lithium(&self, y: &[f64]) -> Option<super::submodels::plating::PlatedLithium> {
+        self.plating.lithium(&self.ec, y)
+    }
+
     fn sei_thickness(&self, y: &[f64]) -> Option<f64> {
-        self.sei.thickness(&self.ec, y, self.ec.params.negative.surface_area_density())
+        let l = &self.layout;
+        l.sei?;
+        let a = |k| self.lam.surface_area_density(&self.ec, Side::Negative, y, k);
+        Some((0..l.nxn).map(|k| self.sei.volume_thickness(&self.ec, y, k, a(k))).sum::<f64>() / l.nxn as f64)
+    }
+
+    fn active_material(&self, y: &[f64]) -> Option<super::submodels::lam::ActiveMaterial> {
+        self.lam.summary(&self.ec, y)
     }
 
     fn fields(&self, y: &[f64]) -> Vec<super::Field> {
@@ -383,7 +362,7 @@ impl Model for Dfn {
             (0..l.nx())
                 .filter_map(|i| l.electrode_of(i))
                 .filter(|&(s, _, _)| s == side)
-                .map(|(_, _, start)| self.ec.sphere(side).surface(&y[start..start + l.nr(side)]))
+                .map(|(_, k, start)| self.ec.sphere(side).surface(&self.lam.concentrations(side, y, &y[start..start + l.nr(side)], k)))
                 .collect()
         };
         let (xn, xp) = (self.ec.electrode_x_centres(Side::Negative), self.ec.electrode_x_centres(Side::Positive));
@@ -406,8 +385,8 @@ impl Model for Dfn {
         let l = &self.layout;
         let mut mean = [0.0; 2];
         for i in 0..l.nx() {
-            if let Some((side, _, start)) = l.electrode_of(i) {
-                let c = self.ec.sphere(side).average(&y[start..start + l.nr(side)]);
+            if let Some((side, k, start)) = l.electrode_of(i) {
+                let c = self.ec.sphere(side).average(&self.lam.concentrations(side, y, &y[start..start + l.nr(side)], k));
                 let (slot, n) = if side == Side::Negative { (0, l.nxn) } else { (1, l.nxp) };
                 mean[slot] += c / n as f64;
             }
