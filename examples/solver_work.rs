@@ -6,29 +6,20 @@
 //! `cargo run --release --example solver_work -- MODEL CASE RTOL REPEATS`
 //! (MODEL spm|spme|dfn, CASE 0.5C|1C|2C|pulse; rtol = atol = RTOL).
 
-use cellstudio::geometry::MeshSizes;
-use cellstudio::models::{ModelBuilder, ModelKind, Submodels};
-use cellstudio::params::chen2020;
-use cellstudio::protocol::Protocol;
-use cellstudio::simulation::{SimOptions, simulate};
+#[path = "common/solver_case.rs"]
+mod solver_case;
+
+use cellstudio::simulation::simulate;
+use solver_case::SolverCase;
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let [model, case, rtol, repeats] = args.as_slice() else {
         panic!("usage: solver_work MODEL CASE RTOL REPEATS");
     };
-    let kind: ModelKind = model.parse().expect("model");
-    let rtol: f64 = rtol.parse().expect("rtol");
-    let repeats: usize = repeats.parse().expect("repeats");
-    let protocol = match case.as_str() {
-        "pulse" => toml::from_str(&std::fs::read_to_string("protocols/pulse_1C.toml").expect("protocol")).expect("protocol"),
-        c => Protocol::discharge(c.trim_end_matches('C').parse().expect("C-rate")),
-    };
-    let p = chen2020();
-    let mut b = ModelBuilder::new(kind, Submodels::default(), MeshSizes::default());
-    let built = b.build(&p).expect("build");
-    let mut opts = SimOptions::for_cell(&p);
-    (opts.solver.rtol, opts.solver.atol) = (rtol, rtol);
+    let SolverCase { protocol, options: opts, params: p, mut builder, repeats } = SolverCase::new(model, case, rtol, repeats);
+    let rtol = opts.solver.rtol;
+    let built = builder.build(&p).expect("build");
     if std::env::var("SHOW_LU").is_ok() {
         println!("states {} factor entries {} colours {}", built.model.len(), built.workspace.factor_nnz(), built.workspace.n_colours());
     }

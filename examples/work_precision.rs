@@ -7,32 +7,22 @@
 
 use std::time::Instant;
 
+#[path = "common/solver_case.rs"]
+mod solver_case;
+
 use cellstudio::data::Recording;
-use cellstudio::geometry::MeshSizes;
-use cellstudio::models::ModelBuilder;
-use cellstudio::models::{ModelKind, Submodels};
-use cellstudio::params::chen2020;
-use cellstudio::protocol::Protocol;
 use cellstudio::simulation::{SimOptions, simulate};
+use solver_case::SolverCase;
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let [model, case, rtol, repeats, reference] = args.as_slice() else {
         panic!("usage: work_precision MODEL CASE RTOL REPEATS REF_CSV");
     };
-    let kind: ModelKind = model.parse().expect("model");
-    let rtol: f64 = rtol.parse().expect("rtol");
-    let repeats: usize = repeats.parse().expect("repeats");
-    let protocol = match case.as_str() {
-        "pulse" => toml::from_str(&std::fs::read_to_string("protocols/pulse_1C.toml").expect("protocol")).expect("protocol"),
-        c => Protocol::discharge(c.trim_end_matches('C').parse().expect("C-rate")),
-    };
+    let SolverCase { protocol, options: opts, params: p, mut builder, repeats } = SolverCase::new(model, case, rtol, repeats);
+    let rtol = opts.solver.rtol;
     let rec = Recording::from_csv(reference.as_ref()).expect("reference");
-    let p = chen2020();
-    let mut b = ModelBuilder::new(kind, Submodels::default(), MeshSizes::default());
-    let built = b.build(&p).expect("build");
-    let mut opts = SimOptions::for_cell(&p);
-    (opts.solver.rtol, opts.solver.atol) = (rtol, rtol);
+    let built = builder.build(&p).expect("build");
     let mut times = Vec::new();
     let mut sol = None;
     for k in 0..=repeats {
