@@ -32,6 +32,7 @@ pub enum Candidate {
     SeiGrowth,
     LithiumPlating,
     ActiveMaterialGrowth,
+    Leak,
 }
 
 /// Missing physics or a parameter the model has but with the wrong value.
@@ -70,6 +71,11 @@ const AMBIENT_RANGE_K: f64 = 30.0;
 const SPM_TO_DFN_FIXED: usize = 9;
 const SPME_TO_DFN_FIXED: usize = 2;
 
+/// The leak candidate's search range and plausible size, as C-rates (1/h): a sensor offset
+/// or a soft short beyond C/100 would be seen on any cycler.
+const LEAK_SEARCH_C_RATE: f64 = 0.02;
+const LEAK_PLAUSIBLE_C_RATE: f64 = 0.01;
+
 /// The hysteresis candidate's starting decay rate (-): the state moves `1 - e^-1` of the way
 /// to a branch per tenth of the capacity passed.
 const HYSTERESIS_START_RATE: f64 = 10.0;
@@ -79,7 +85,7 @@ const HYSTERESIS_START_RATE: f64 = 10.0;
 const HYSTERESIS_BRANCH: f64 = 0.5;
 
 impl Candidate {
-    pub const ALL: [Candidate; 14] = [
+    pub const ALL: [Candidate; 15] = [
         Candidate::SeriesResistance,
         Candidate::Electrolyte,
         Candidate::ElectrolyteComposite,
@@ -94,6 +100,7 @@ impl Candidate {
         Candidate::SeiGrowth,
         Candidate::LithiumPlating,
         Candidate::ActiveMaterialGrowth,
+        Candidate::Leak,
     ];
 
     /// Short name, as the verdict uses it.
@@ -113,6 +120,7 @@ impl Candidate {
             Candidate::SeiGrowth => "SEI growth (lithium lost as the film grows over the cycles)",
             Candidate::LithiumPlating => "lithium plating (lithium lost to irreversible plating during the charges)",
             Candidate::ActiveMaterialGrowth => "progressive loss of active material (stress-driven, over the cycles)",
+            Candidate::Leak => "self-discharge or current offset (a leak current the cycler does not record: soft short or sensor bias)",
         }
     }
 
@@ -126,7 +134,8 @@ impl Candidate {
             | Candidate::Hysteresis
             | Candidate::SeiGrowth
             | Candidate::LithiumPlating
-            | Candidate::ActiveMaterialGrowth => {
+            | Candidate::ActiveMaterialGrowth
+            | Candidate::Leak => {
                 Class::MissingPhysics
             }
             _ => Class::ParameterMismatch,
@@ -150,6 +159,7 @@ impl Candidate {
             Candidate::SeiGrowth => "capacity and the end-of-discharge knee drift from cycle to cycle as lithium is consumed (a fixed stoichiometry offset does not drift), with a slowly growing film resistance",
             Candidate::LithiumPlating => "capacity and the knee drift from cycle to cycle as lithium plates while the negative electrode's potential is low (late in fast charges), with no film resistance; grows steeply with the charge rate and at low temperature",
             Candidate::ActiveMaterialGrowth => "one electrode's OCV features are compressed more from cycle to cycle (its capacity shrinks as it cycles), faster where the current stresses its particles most",
+            Candidate::Leak => "the state of charge drifts at a constant rate whatever the load: the voltage keeps sliding in rests instead of settling, and the charge put back differs from the charge taken out by the leak times the time",
         }
     }
 
@@ -167,6 +177,7 @@ impl Candidate {
             Candidate::SeiGrowth => "SEI exchange current 0.001 to 1000 times the set's",
             Candidate::LithiumPlating => "plating rate constant 0.001 to 1000 times the set's",
             Candidate::ActiveMaterialGrowth => "up to 50 % of an electrode's active material lost over the recording (steady-profile estimate)",
+            Candidate::Leak => "up to C/100 either way (a leak or a sensor offset of 1 % of the 1C current)",
         }
     }
 
@@ -192,6 +203,7 @@ impl Candidate {
             (ActiveMaterialGrowth, LithiumInventory | SeiGrowth | LithiumPlating | ActiveMaterial) | (LithiumInventory | SeiGrowth | LithiumPlating | ActiveMaterial, ActiveMaterialGrowth) => {
                 "a slow (C/20) cycle at the start and the end, read by differential voltage analysis".into()
             }
+            (Leak, _) | (_, Leak) => "a rest of several hours at a middle state of charge, then a slow charge and discharge (a leak keeps discharging the cell at rest and the charge balance does not close; lost lithium or material does neither)".into(),
             (Thermal, _) | (_, Thermal) => "the same protocol at a second ambient temperature, with the cell temperature recorded".into(),
             _ if has_rates => format!(
                 "the same cell at a rate well above this recording's highest (its {} load levels did not separate them), with a rest after charge and after discharge",
@@ -236,6 +248,11 @@ impl Candidate {
                 Some("needs current steps or loads at two or more rates".into())
             }
             Candidate::SeiGrowth | Candidate::LithiumPlating | Candidate::ActiveMaterialGrowth => ageing::too_few_cycles(f),
+            // In one uninterrupted run a leak only rescales the charge passed (a capacity or
+            // stoichiometry change); a rest, or charge and discharge both, sets it apart.
+            Candidate::Leak if f.rests_after_charge + f.rests_after_discharge == 0 && !(rec.current.iter().any(|i| *i > 0.0) && rec.current.iter().any(|i| *i < 0.0)) => {
+                Some("needs a rest, or both charge and discharge (in one constant-direction run a leak is a change of capacity)".into())
+            }
             _ => None,
         }
     }
@@ -344,6 +361,14 @@ impl Candidate {
                 };
                 (extra, change.into())
             }
+            Candidate::Leak => {
+                if spec.submodels.leak {
+                    return None;
+                }
+                spec.submodels.leak = true;
+                let most = LEAK_SEARCH_C_RATE * p.cell.nominal_capacity;
+                (vec![FitParameter::linear("cell.leakage_current", 0.0, -most, most)], "leak submodel on (a constant current inside the cell)".into())
+            }
             Candidate::RcDynamics => {
                 if spec.submodels.rc {
                     return None;
@@ -437,6 +462,11 @@ impl Candidate {
                 (h > 0.05).then(|| format!("hysteresis half-width {:.1} mV exceeds 50 mV", h * 1e3))
             }
             Candidate::SeiGrowth | Candidate::LithiumPlating | Candidate::ActiveMaterialGrowth => ageing::implausible(self, get, base, load),
+            Candidate::Leak => {
+                let leak = get("cell.leakage_current")?;
+                let most = LEAK_PLAUSIBLE_C_RATE * base.cell.nominal_capacity;
+                (leak.abs() > most).then(|| format!("a leak of {:.1} mA exceeds C/100 ({:.1} mA)", leak * 1e3, most * 1e3))
+            }
             Candidate::Electrolyte | Candidate::ElectrolyteComposite => None,
         }
     }
@@ -470,6 +500,13 @@ impl Candidate {
                 let (which, l) = if p > n { ("positive", p) } else { ("negative", n) };
                 format!("progressive loss of active material, {which} electrode (about {:.1} % of its capacity over the recording)", 100.0 * l)
             }
+            Candidate::Leak => match get("cell.leakage_current") {
+                Some(leak) => {
+                    let way = if leak >= 0.0 { "discharging" } else { "charging" };
+                    format!("{} of {:.1} mA {way} the cell (C/{:.0})", self.name(), leak.abs() * 1e3, base.cell.nominal_capacity / leak.abs().max(1e-12))
+                }
+                None => self.name().to_string(),
+            },
             _ => self.name().to_string(),
         }
     }
@@ -492,5 +529,26 @@ mod tests {
         let values = [0.01 * base.positive.diffusivity, 0.4 * base.negative.active_fraction, base.positive.active_fraction];
         assert!(Candidate::ActiveMaterial.implausible(&names, &values, &base, &Load::default()).is_some_and(|why| why.contains("negative.active_fraction")));
         assert!(Candidate::SolidDiffusion.implausible(&names, &values, &base, &Load::default()).is_some_and(|why| why.contains("positive.diffusivity")));
+    }
+
+    /// A leak only rescales the charge of a run in one direction; a rest or a return
+    /// charge sets it apart. Beyond C/100 it is implausible.
+    #[test]
+    fn a_leak_needs_a_rest_or_both_directions() {
+        let base = crate::params::chen2020();
+        let q = base.cell.nominal_capacity;
+        let rec = |current: Vec<f64>| {
+            let n = current.len();
+            Recording { time: (0..n).map(|k| 60.0 * k as f64).collect(), current, voltage: vec![3.7; n], temperature: None }
+        };
+        let discharge = rec(vec![q; 30]);
+        let with_rest = rec([vec![q; 20], vec![0.0; 10]].concat());
+        let both_ways = rec([vec![q; 15], vec![-q; 15]].concat());
+        let reason = |r: &Recording| Candidate::Leak.not_identifiable(r, &Features::of(r), q);
+        assert!(reason(&discharge).is_some_and(|why| why.contains("rest")));
+        assert_eq!((reason(&with_rest), reason(&both_ways)), (None, None));
+        let names = vec!["cell.leakage_current".to_string()];
+        assert_eq!(Candidate::Leak.implausible(&names, &[0.009 * q], &base, &Load::default()), None);
+        assert!(Candidate::Leak.implausible(&names, &[-0.011 * q], &base, &Load::default()).is_some_and(|why| why.contains("C/100")));
     }
 }

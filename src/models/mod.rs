@@ -74,6 +74,9 @@ pub struct Submodels {
     /// One-state OCV hysteresis (`cell.hysteresis_voltage`, `cell.hysteresis_rate`,
     /// `cell.hysteresis_initial`): one extra state.
     pub hysteresis: bool,
+    /// A leak (`cell.leakage_current`): the model's electrochemistry carries the recorded
+    /// current plus the leak, the cycler sees only the former; no extra state.
+    pub leak: bool,
     /// SEI growth on the negative electrode (`sei` parameters): one extra state in the SPM,
     /// one per negative x volume in the SPMe, two per negative x volume in the DFN (with the
     /// total interfacial current density).
@@ -111,9 +114,9 @@ impl Submodels {
         self.lam.stress() && self.stress_induced_diffusion != Some(false)
     }
 
-    /// Whether a submodel that appends states through [`submodels::Augmented`] is on.
+    /// Whether a submodel that wraps the model in [`submodels::Augmented`] is on.
     pub fn augments(&self) -> bool {
-        self.rc || self.hysteresis
+        self.rc || self.hysteresis || self.leak
     }
 }
 

@@ -201,6 +201,11 @@ pub struct Cell {
     /// Initial hysteresis state `h(0)` in [-1, 1] (-): -1 after a discharge, +1 after a charge.
     #[serde(default)]
     pub hysteresis_initial: f64,
+    /// Current (A, discharge positive) that flows inside the cell but not through the
+    /// cycler: self-discharge through a soft short, or the offset of the current sensor.
+    /// Used when the leak submodel is on.
+    #[serde(default)]
+    pub leakage_current: f64,
 }
 
 /// Default RC capacitance (F): a 10 s time constant at 10 mOhm.
@@ -319,6 +324,7 @@ impl ParameterSet {
         non_negative("cell.hysteresis_voltage", c.hysteresis_voltage)?;
         positive("cell.hysteresis_rate", c.hysteresis_rate)?;
         check("cell.hysteresis_initial", c.hysteresis_initial, c.hysteresis_initial.abs() <= 1.0, "must lie in [-1, 1]")?;
+        check("cell.leakage_current", c.leakage_current, c.leakage_current.is_finite(), "must be a finite current (A)")?;
         let t = &self.thermal;
         temperature("thermal.reference_temperature", t.reference_temperature)?;
         temperature("thermal.ambient_temperature", t.ambient_temperature)?;
@@ -428,6 +434,7 @@ impl ParameterSet {
                 "hysteresis_voltage" => &mut self.cell.hysteresis_voltage,
                 "hysteresis_rate" => &mut self.cell.hysteresis_rate,
                 "hysteresis_initial" => &mut self.cell.hysteresis_initial,
+                "leakage_current" => &mut self.cell.leakage_current,
                 _ => return Err(unknown()),
             },
             "thermal" => match name {

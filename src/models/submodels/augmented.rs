@@ -1,5 +1,5 @@
-//! Submodels that append states to any physics model without touching it: a series RC
-//! element and a one-state OCV hysteresis.
+//! Submodels that wrap any physics model without touching it: a series RC element and a
+//! one-state OCV hysteresis (each an appended state), and a leak.
 //!
 //! [`Augmented`] wraps a built `Box<dyn PhysicsModel>`; the wrapped model sees only its own
 //! states, and the extra states follow them:
@@ -12,6 +12,9 @@
 //!   `dh/dt = k |I| / (3600 Q) (-sign(I) - h)` with `Q` the nominal capacity (A h), i.e.
 //!   `k / (3600 Q) (-I - |I| h)`, and the terminal voltage gains `M h`: discharge
 //!   (`I > 0`) drives `h` to -1 and lowers the voltage, charge raises it; at rest `h` holds.
+//! - Leak (`cell.leakage_current` `I_L` (A), discharge positive): the cell carries
+//!   `I + I_L` where the cycler drives and records `I`, e.g. self-discharge through a soft
+//!   short or a current sensor's offset. Every other submodel sees `I + I_L`.
 
 use crate::models::{Electrochem, Model, PhysicsModel, Submodels};
 use crate::params::ParameterSet;
@@ -26,6 +29,8 @@ pub struct Augmented {
     rc: Option<usize>,
     /// Index of the hysteresis state, when on.
     hysteresis: Option<usize>,
+    /// Whether the leak is on.
+    leak: bool,
     /// Number of states of the wrapped model.
     n_base: usize,
     mass: Vec<f64>,
@@ -49,7 +54,7 @@ impl Augmented {
         };
         let rc = push(submodels.rc, RC_SCALE);
         let hysteresis = push(submodels.hysteresis, 1.0);
-        Self { base, rc, hysteresis, n_base, mass, scale }
+        Self { base, rc, hysteresis, leak: submodels.leak, n_base, mass, scale }
     }
 
     /// The wrapped model.
@@ -59,6 +64,11 @@ impl Augmented {
 
     fn cell(&self) -> &crate::params::Cell {
         &self.base.electrochem().params.cell
+    }
+
+    /// The current (A) the cell carries when the cycler drives `current`: plus the leak.
+    fn inside(&self, current: f64) -> f64 {
+        if self.leak { current + self.cell().leakage_current } else { current }
     }
 
     /// Voltage across the RC element (V), zero when it is off.
@@ -80,6 +90,9 @@ impl Model for Augmented {
         }
         if self.hysteresis.is_some() {
             name.push_str("+hysteresis");
+        }
+        if self.leak {
+            name.push_str("+leak");
         }
         name
     }
@@ -114,6 +127,7 @@ impl Model for Augmented {
     }
 
     fn rhs(&self, y: &[f64], current: f64, out: &mut [f64]) {
+        let current = self.inside(current);
         let nb = self.n_base;
         self.base.rhs(&y[..nb], current, &mut out[..nb]);
         let cell = self.cell();
@@ -128,7 +142,7 @@ impl Model for Augmented {
     }
 
     fn voltage(&self, y: &[f64], current: f64) -> f64 {
-        self.base.voltage(&y[..self.n_base], current) - self.rc_voltage(y)
+        self.base.voltage(&y[..self.n_base], self.inside(current)) - self.rc_voltage(y)
             + self.cell().hysteresis_voltage * self.hysteresis_state(y)
     }
 
@@ -161,7 +175,7 @@ impl Model for Augmented {
     }
 
     fn plating_margin(&self, y: &[f64], current: f64) -> Option<f64> {
-        self.base.plating_margin(&y[..self.n_base], current)
+        self.base.plating_margin(&y[..self.n_base], self.inside(current))
     }
 
     fn fields(&self, y: &[f64]) -> Vec<crate::models::Field> {
@@ -244,6 +258,29 @@ mod tests {
             let got = hyst[k] - plain[k];
             assert!((got - 0.02 * h).abs() < 2e-6, "t = {tk}: offset {got} vs {}", 0.02 * h);
         }
+    }
+
+    /// A rest with a leak `I_L` is the same cell discharged at `I_L` without one (the cycler
+    /// records zero current), and the leak costs no extra state.
+    #[test]
+    fn a_rest_with_a_leak_is_a_discharge_at_the_leak_current() {
+        let mut p = crate::params::chen2020();
+        p.cell.leakage_current = 0.4;
+        let t: Vec<f64> = (0..=12).map(|k| 300.0 * f64::from(k)).collect();
+        let rest = Protocol { steps: vec![Step::Rest { duration: 3600.0 }] };
+        let drawn = Protocol { steps: vec![Step::Current { current: 0.4, duration: 3600.0, until_voltage: None }] };
+        let leaking = run(Submodels { leak: true, ..Default::default() }, &p, &rest, t.clone());
+        let discharged = run(Submodels::default(), &p, &drawn, t.clone());
+        let resting = run(Submodels::default(), &p, &rest, t.clone());
+        for k in 0..t.len() {
+            assert!((leaking[k] - discharged[k]).abs() < 1e-9, "t = {}: {} vs {}", t[k], leaking[k], discharged[k]);
+        }
+        // The leak discharged the cell: 0.4 A h at 4.5 % of the capacity lowers the voltage.
+        assert!(resting[12] - leaking[12] > 0.01, "{} vs {}", resting[12], leaking[12]);
+        let mut builder = ModelBuilder::new(ModelKind::Spm, Submodels { leak: true, ..Default::default() }, MeshSizes::default());
+        let plain = ModelBuilder::new(ModelKind::Spm, Submodels::default(), MeshSizes::default()).build(&p).unwrap().model.len();
+        let built = builder.build(&p).unwrap();
+        assert_eq!((built.model.len(), built.model.name()), (plain, "SPM+leak".to_string()));
     }
 
     /// The wrapper leaves the wrapped model's states, temperature and lithium alone, and the
