@@ -7,8 +7,8 @@ use super::{Candidate, CandidateOutcome, Class, Diagnosis, FitOutcome, ResidualA
 use crate::problem::fitting::INITIAL_SOC;
 
 /// What a fit says about one value besides the value itself.
-#[derive(Clone, Copy, Debug, Default)]
-pub struct Standing {
+#[derive(Clone, Copy, Debug)]
+pub struct ValueNote {
     /// Standard error (parameter units; infinite when the data do not determine it).
     pub std_error: f64,
     /// The value does not move the voltage of this recording (a rate on its no-effect bound).
@@ -19,8 +19,8 @@ pub struct Standing {
 
 /// A fitted value with its standard error in readable units, and a note when it sits on its
 /// search bound or has no effect on the recording.
-pub fn format_parameter(path: &str, value: f64, standing: Standing) -> String {
-    let Standing { std_error, no_effect, on_bound } = standing;
+pub fn format_parameter(path: &str, value: f64, note: ValueNote) -> String {
+    let ValueNote { std_error, no_effect, on_bound } = note;
     let name = path.rsplit('.').next().unwrap_or(path);
     let bound = if on_bound { ", on its search bound" } else { "" };
     let spread = |e: String| {
@@ -157,7 +157,7 @@ fn parameters_in_words(f: &FitOutcome, only: &[String]) -> String {
         .zip(&f.values)
         .enumerate()
         .filter(|(_, (n, _))| only.is_empty() || only.contains(n))
-        .map(|(i, (n, v))| format_parameter(n, *v, Standing { std_error: f.std_errors[i], no_effect: !f.informed[i], on_bound: f.on_bound[i] }))
+        .map(|(i, (n, v))| format_parameter(n, *v, ValueNote { std_error: f.std_errors[i], no_effect: !f.informed[i], on_bound: f.on_bound[i] }))
         .collect::<Vec<_>>()
         .join(", ")
 }

@@ -365,9 +365,14 @@ fn informed_inverse_and_log_det(a: &[f64], k: usize, informed: &[bool]) -> Resul
     }
     Ok((full, ln_det, rank))
 }
+/// Share of a unit eigenvector (-) below which a parameter does not lie along it: round-off
+/// in the eigenvectors of a null direction is not a free parameter.
+const NULL_COMPONENT: f64 = 1e-6;
+
 /// The pseudo-inverse of the symmetric positive semi-definite `k x k` matrix `a` (infinite
-/// variance for a parameter along a direction with an eigenvalue below `1e-10` of the
-/// largest), the `ln det` over the other directions, and how many they are.
+/// variance for a parameter with a component above [`NULL_COMPONENT`] along a direction with
+/// an eigenvalue below `1e-10` of the largest), the `ln det` over the other directions, and
+/// how many they are.
 fn inverse_and_log_det(a: &[f64], k: usize) -> Result<(Vec<f64>, f64, usize), Error> {
     let (values, vectors) = sym_eigen(a, k)?;
     let top = values.iter().fold(0.0f64, |m, v| m.max(v.abs()));
@@ -382,7 +387,7 @@ fn inverse_and_log_det(a: &[f64], k: usize) -> Result<(Vec<f64>, f64, usize), Er
         }
         for i in 0..k {
             for j in 0..k {
-                inv[i * k + j] += if null { if vectors[i * k + m] != 0.0 && i == j { f64::INFINITY } else { 0.0 } } else { vectors[i * k + m] * vectors[j * k + m] / values[m] };
+                inv[i * k + j] += if null { if vectors[i * k + m].abs() > NULL_COMPONENT && i == j { f64::INFINITY } else { 0.0 } } else { vectors[i * k + m] * vectors[j * k + m] / values[m] };
             }
         }
     }
@@ -457,5 +462,21 @@ mod tests {
         assert!(fit.ln_det_information.is_finite(), "{}", fit.ln_det_information);
         assert!(fit.std_errors.iter().all(|e| e.is_infinite()), "{:?}", fit.std_errors);
         assert!((fit.x[0] * fit.x[1] - 2.0).abs() < 1e-4, "{:?}", fit.x);
+    }
+
+    #[test]
+    fn round_off_along_a_null_direction_leaves_a_parameter_determined() {
+        // Information 4 along `u` (mostly `x0`) and 2 along `x1 + x2`; the null direction
+        // `x1 - x2` leans 1e-9 towards `x0`, as round-off does: `x0` keeps a finite variance.
+        let (t, s) = (1e-9f64, (1.0 - 1e-18f64).sqrt());
+        let r = 1.0 / 2f64.sqrt();
+        let u = [s, -t * r, t * r];
+        let d = [0.0, r, r];
+        let a: Vec<f64> = (0..9).map(|ij| (ij / 3, ij % 3)).map(|(i, j)| 4.0 * u[i] * u[j] + 2.0 * d[i] * d[j]).collect();
+        let (inv, ln_det, rank) = inverse_and_log_det(&a, 3).unwrap();
+        assert_eq!(rank, 2);
+        assert!((ln_det - 8f64.ln()).abs() < 1e-12, "{ln_det}");
+        assert!((inv[0] - 0.25).abs() < 1e-12, "{}", inv[0]);
+        assert!(inv[4].is_infinite() && inv[8].is_infinite(), "{inv:?}");
     }
 }
