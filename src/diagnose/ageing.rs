@@ -16,6 +16,10 @@ pub(super) const SEI_RANGE: f64 = 1000.0;
 /// Multiplicative range (-) of the plating rate constant around the set's, as the SEI's.
 pub(super) const PLATING_RANGE: f64 = 1000.0;
 
+/// Range of the dead-lithium decay constant (1/s) the partially reversible plating candidate
+/// searches: from a plated layer that stays live for years to one dead within two minutes.
+pub(super) const DEAD_LITHIUM_DECAY: (f64, f64) = (1e-8, 1e-2);
+
 /// Full swings of the charge a recording must span for an ageing candidate (a single
 /// discharge is half a swing).
 pub(super) const MIN_AGEING_CYCLES: f64 = 3.0;
@@ -85,7 +89,8 @@ pub(super) type AgeingChange = (Vec<FitParameter>, usize, String, Option<Paramet
 pub(super) fn augment(c: super::Candidate, spec: &mut ModelSpec, p: &ParameterSet, load: &Load) -> Option<AgeingChange> {
     match c {
         super::Candidate::SeiGrowth => sei(spec, p),
-        super::Candidate::LithiumPlating => plating(spec, p),
+        super::Candidate::LithiumPlating => plating(spec, p, PlatingModel::Irreversible),
+        super::Candidate::LithiumPlatingPartial => plating(spec, p, PlatingModel::PartiallyReversible),
         super::Candidate::ActiveMaterialGrowth => lam_growth(spec, p, load),
         _ => None,
     }
@@ -104,20 +109,28 @@ fn sei(spec: &mut ModelSpec, p: &ParameterSet) -> Option<AgeingChange> {
     Some((vec![FitParameter::log("sei.exchange_current", k, k / SEI_RANGE, k * SEI_RANGE)], 4, "reaction-limited SEI submodel on".into(), None))
 }
 
-/// Irreversible lithium plating (SPM and SPMe only).
-fn plating(spec: &mut ModelSpec, p: &ParameterSet) -> Option<AgeingChange> {
+/// Lithium plating by `law`, irreversible or partially reversible (SPM and SPMe only): the
+/// rate constant fitted, and for the partially reversible law the dead-lithium decay too.
+fn plating(spec: &mut ModelSpec, p: &ParameterSet, law: PlatingModel) -> Option<AgeingChange> {
     if spec.submodels.plating != PlatingModel::None || spec.kind == ModelKind::Dfn {
         return None;
     }
-    spec.submodels.plating = PlatingModel::Irreversible;
+    spec.submodels.plating = law;
     // The one fixed parameter that enters the voltage: the transfer coefficient. (The
     // typical concentration only scales the states, the partial molar volume only the
     // reported layer thickness; the initial plated concentration and the dead-lithium decay
     // do not enter the irreversible law.)
     let k = p.plating.kinetic_rate_constant;
     let k = if k > 0.0 { k } else { crate::params::Plating::default().kinetic_rate_constant };
-    let fit = FitParameter::log("plating.kinetic_rate_constant", k, k / PLATING_RANGE, k * PLATING_RANGE);
-    Some((vec![fit], 1, "irreversible lithium plating submodel on".into(), None))
+    let mut fit = vec![FitParameter::log("plating.kinetic_rate_constant", k, k / PLATING_RANGE, k * PLATING_RANGE)];
+    let change = if law == PlatingModel::PartiallyReversible {
+        let gamma = p.plating.dead_lithium_decay_constant.clamp(DEAD_LITHIUM_DECAY.0, DEAD_LITHIUM_DECAY.1);
+        fit.push(FitParameter::log("plating.dead_lithium_decay_constant", gamma, DEAD_LITHIUM_DECAY.0, DEAD_LITHIUM_DECAY.1));
+        "partially reversible lithium plating submodel on, its dead-lithium decay fitted"
+    } else {
+        "irreversible lithium plating submodel on"
+    };
+    Some((fit, 1, change.into(), None))
 }
 
 /// Stress-driven LAM with plain particle diffusion (SPM and SPMe only), each electrode's
@@ -161,7 +174,7 @@ pub(super) fn implausible(c: super::Candidate, get: impl Fn(&str) -> Option<f64>
             let ratio = get("sei.exchange_current")? / base.sei.exchange_current;
             (!(1.0 / SEI_RANGE..=SEI_RANGE).contains(&ratio)).then(|| format!("SEI exchange current at {ratio:.3e} times the set's is outside 0.001 to 1000"))
         }
-        LithiumPlating => {
+        LithiumPlating | LithiumPlatingPartial => {
             let ratio = get("plating.kinetic_rate_constant")? / base.plating.kinetic_rate_constant;
             (!(1.0 / PLATING_RANGE..=PLATING_RANGE).contains(&ratio)).then(|| format!("plating rate constant at {ratio:.3e} times the set's is outside 0.001 to 1000"))
         }

@@ -31,6 +31,7 @@ pub enum Candidate {
     Hysteresis,
     SeiGrowth,
     LithiumPlating,
+    LithiumPlatingPartial,
     ActiveMaterialGrowth,
     Leak,
 }
@@ -85,7 +86,7 @@ const HYSTERESIS_START_RATE: f64 = 10.0;
 const HYSTERESIS_BRANCH: f64 = 0.5;
 
 impl Candidate {
-    pub const ALL: [Candidate; 15] = [
+    pub const ALL: [Candidate; 16] = [
         Candidate::SeriesResistance,
         Candidate::Electrolyte,
         Candidate::ElectrolyteComposite,
@@ -99,6 +100,7 @@ impl Candidate {
         Candidate::Hysteresis,
         Candidate::SeiGrowth,
         Candidate::LithiumPlating,
+        Candidate::LithiumPlatingPartial,
         Candidate::ActiveMaterialGrowth,
         Candidate::Leak,
     ];
@@ -119,6 +121,7 @@ impl Candidate {
             Candidate::Hysteresis => "OCV hysteresis",
             Candidate::SeiGrowth => "SEI growth (lithium lost as the film grows over the cycles)",
             Candidate::LithiumPlating => "lithium plating (lithium lost to irreversible plating during the charges)",
+            Candidate::LithiumPlatingPartial => "lithium plating, partially reversible (plated lithium strips back after the charges and part of it turns dead)",
             Candidate::ActiveMaterialGrowth => "progressive loss of active material (stress-driven, over the cycles)",
             Candidate::Leak => "self-discharge or current offset (a leak current the cycler does not record: soft short or sensor bias)",
         }
@@ -134,6 +137,7 @@ impl Candidate {
             | Candidate::Hysteresis
             | Candidate::SeiGrowth
             | Candidate::LithiumPlating
+            | Candidate::LithiumPlatingPartial
             | Candidate::ActiveMaterialGrowth
             | Candidate::Leak => {
                 Class::MissingPhysics
@@ -158,6 +162,7 @@ impl Candidate {
             Candidate::Hysteresis => "an offset at rest whose sign follows the direction of the last current (charge vs discharge), not its size",
             Candidate::SeiGrowth => "capacity and the end-of-discharge knee drift from cycle to cycle as lithium is consumed (a fixed stoichiometry offset does not drift), with a slowly growing film resistance",
             Candidate::LithiumPlating => "capacity and the knee drift from cycle to cycle as lithium plates while the negative electrode's potential is low (late in fast charges), with no film resistance; grows steeply with the charge rate and at low temperature",
+            Candidate::LithiumPlatingPartial => "as irreversible plating, but the plated lithium strips back in the rest or discharge after each charge (a voltage plateau there), and only the part that turned dead is lost from cycle to cycle",
             Candidate::ActiveMaterialGrowth => "one electrode's OCV features are compressed more from cycle to cycle (its capacity shrinks as it cycles), faster where the current stresses its particles most",
             Candidate::Leak => "the state of charge drifts at a constant rate whatever the load: the voltage keeps sliding in rests instead of settling, and the charge put back differs from the charge taken out by the leak times the time",
         }
@@ -176,6 +181,7 @@ impl Candidate {
             Candidate::Hysteresis => "half-width up to 50 mV",
             Candidate::SeiGrowth => "SEI exchange current 0.001 to 1000 times the set's",
             Candidate::LithiumPlating => "plating rate constant 0.001 to 1000 times the set's",
+            Candidate::LithiumPlatingPartial => "plating rate constant 0.001 to 1000 times the set's, dead-lithium decay constant 1e-8 to 1e-2 1/s",
             Candidate::ActiveMaterialGrowth => "up to 50 % of an electrode's active material lost over the recording (steady-profile estimate)",
             Candidate::Leak => "up to C/100 either way (a leak or a sensor offset of 1 % of the 1C current)",
         }
@@ -199,8 +205,12 @@ impl Candidate {
             (LithiumInventory, ActiveMaterial) | (ActiveMaterial, LithiumInventory) => {
                 "a slow (C/20) charge and discharge over the full window, read by differential voltage analysis".into()
             }
-            (LithiumPlating, SeiGrowth) | (SeiGrowth, LithiumPlating) => "cycles at a second charge rate, or a storage period at high state of charge (both are cathodic side reactions on the same potential difference: plating grows steeply with the charge rate and at low temperature, SEI growth with time at high state of charge)".into(),
-            (ActiveMaterialGrowth, LithiumInventory | SeiGrowth | LithiumPlating | ActiveMaterial) | (LithiumInventory | SeiGrowth | LithiumPlating | ActiveMaterial, ActiveMaterialGrowth) => {
+            (LithiumPlating, LithiumPlatingPartial) | (LithiumPlatingPartial, LithiumPlating) => {
+                "a rest of an hour after a fast charge, sampled every few seconds (reversible plated lithium strips back there, a voltage plateau irreversible plating lacks)".into()
+            }
+            (LithiumPlating | LithiumPlatingPartial, SeiGrowth) | (SeiGrowth, LithiumPlating | LithiumPlatingPartial) => "cycles at a second charge rate, or a storage period at high state of charge (both are cathodic side reactions on the same potential difference: plating grows steeply with the charge rate and at low temperature, SEI growth with time at high state of charge)".into(),
+            (ActiveMaterialGrowth, LithiumInventory | SeiGrowth | LithiumPlating | LithiumPlatingPartial | ActiveMaterial)
+            | (LithiumInventory | SeiGrowth | LithiumPlating | LithiumPlatingPartial | ActiveMaterial, ActiveMaterialGrowth) => {
                 "a slow (C/20) cycle at the start and the end, read by differential voltage analysis".into()
             }
             (Leak, _) | (_, Leak) => "a rest of several hours at a middle state of charge, then a slow charge and discharge (a leak keeps discharging the cell at rest and the charge balance does not close; lost lithium or material does neither)".into(),
@@ -247,7 +257,7 @@ impl Candidate {
             Candidate::SeriesResistance | Candidate::Kinetics | Candidate::RcDynamics if f.steps.is_empty() && f.distinct_rates < 2 => {
                 Some("needs current steps or loads at two or more rates".into())
             }
-            Candidate::SeiGrowth | Candidate::LithiumPlating | Candidate::ActiveMaterialGrowth => ageing::too_few_cycles(f),
+            Candidate::SeiGrowth | Candidate::LithiumPlating | Candidate::LithiumPlatingPartial | Candidate::ActiveMaterialGrowth => ageing::too_few_cycles(f),
             // In one uninterrupted run a leak only rescales the charge passed (a capacity or
             // stoichiometry change); a rest, or charge and discharge both, sets it apart.
             Candidate::Leak if f.rests_after_charge + f.rests_after_discharge == 0 && !(rec.current.iter().any(|i| *i > 0.0) && rec.current.iter().any(|i| *i < 0.0)) => {
@@ -313,7 +323,7 @@ impl Candidate {
                     (factors, "electrolyte diffusivity and conductivity factors refitted".into())
                 }
             }
-            Candidate::SeiGrowth | Candidate::LithiumPlating | Candidate::ActiveMaterialGrowth => {
+            Candidate::SeiGrowth | Candidate::LithiumPlating | Candidate::LithiumPlatingPartial | Candidate::ActiveMaterialGrowth => {
                 let (extra, fixed, change, changed_base) = ageing::augment(self, &mut spec, &p, load)?;
                 (structural_parameters, aged) = (fixed, changed_base);
                 (extra, change)
@@ -461,7 +471,7 @@ impl Candidate {
                 let h = get("cell.hysteresis_voltage")?;
                 (h > 0.05).then(|| format!("hysteresis half-width {:.1} mV exceeds 50 mV", h * 1e3))
             }
-            Candidate::SeiGrowth | Candidate::LithiumPlating | Candidate::ActiveMaterialGrowth => ageing::implausible(self, get, base, load),
+            Candidate::SeiGrowth | Candidate::LithiumPlating | Candidate::LithiumPlatingPartial | Candidate::ActiveMaterialGrowth => ageing::implausible(self, get, base, load),
             Candidate::Leak => {
                 let leak = get("cell.leakage_current")?;
                 let most = LEAK_PLAUSIBLE_C_RATE * base.cell.nominal_capacity;

@@ -42,7 +42,7 @@ pub(super) fn named_pairs(singles: &[CandidateOutcome], round: &Round) -> Vec<Ca
         .iter()
         .enumerate()
         .flat_map(|(i, a)| useful[i + 1..].iter().map(move |b| (*a, *b)))
-        .filter(|(a, b)| !(electrolyte(a.candidate) && electrolyte(b.candidate)))
+        .filter(|(a, b)| !one_physics(a.candidate, b.candidate))
         .collect();
     // Every pair screened from its first start with a few iterations; the few best by
     // training error that had not converged by then continue from where they stopped; the
@@ -210,8 +210,28 @@ fn fit_pair(a: &CandidateOutcome, b: &CandidateOutcome, round: &Round, start: Pa
     })
 }
 
-/// The electrolyte candidates describe one physics (the electrolyte model and its
-/// properties): a pair of them is one effect, not two.
-fn electrolyte(c: Candidate) -> bool {
-    matches!(c, Candidate::Electrolyte | Candidate::ElectrolyteComposite | Candidate::ElectrolyteTransport)
+/// Whether two candidates describe one physics (the electrolyte model and its properties, or
+/// two laws of lithium plating): a pair of them is one effect, not two.
+fn one_physics(a: Candidate, b: Candidate) -> bool {
+    use Candidate::*;
+    let family = |c: Candidate| match c {
+        Electrolyte | ElectrolyteComposite | ElectrolyteTransport => Some(0),
+        LithiumPlating | LithiumPlatingPartial => Some(1),
+        _ => None,
+    };
+    family(a).is_some() && family(a) == family(b)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn two_laws_of_one_physics_are_not_a_pair() {
+        use Candidate::*;
+        assert!(one_physics(LithiumPlating, LithiumPlatingPartial));
+        assert!(one_physics(Electrolyte, ElectrolyteTransport));
+        assert!(!one_physics(LithiumPlating, SeiGrowth));
+        assert!(!one_physics(SeriesResistance, LithiumInventory));
+    }
 }
