@@ -624,3 +624,13 @@ fn l2_partially_reversible_plating_cold_fast_charges_spme() {
     assert!((first_fitted(&rounds, "plating.kinetic_rate_constant") / 1e-9 - 1.0).abs() < 0.03, "{summary}");
     assert!((first_fitted(&rounds, "plating.dead_lithium_decay_constant") / 5e-5 - 1.0).abs() < 0.05, "{summary}");
 }
+
+#[test]
+fn k3_voltage_channel_offset_gitt_spm() {
+    // Blind batch k: the voltage channel reads 8 mV high through a GITT at 15 degC. Its first
+    // run named lithium inventory (8.12 -> 2.91 mV, noise 1.49), passed only on the accept
+    // word "offset"; the voltage-offset candidate now names it.
+    let rounds = run_case("diagnosis-extra/k3_voltage_channel_offset_8mV_gitt_15C_spm");
+    let offset = first_fitted(&rounds, "cell.voltage_offset");
+    assert!((offset / 0.008 - 1.0).abs() < 0.03, "offset {offset} V: {}", rounds[0].summary);
+}

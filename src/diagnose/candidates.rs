@@ -34,6 +34,7 @@ pub enum Candidate {
     LithiumPlatingPartial,
     ActiveMaterialGrowth,
     Leak,
+    VoltageOffset,
 }
 
 /// Missing physics or a parameter the model has but with the wrong value.
@@ -77,6 +78,10 @@ const SPME_TO_DFN_FIXED: usize = 2;
 const LEAK_SEARCH_C_RATE: f64 = 0.02;
 const LEAK_PLAUSIBLE_C_RATE: f64 = 0.01;
 
+/// The voltage-offset candidate's search range and plausible size (V).
+const VOLTAGE_OFFSET_SEARCH: f64 = 0.05;
+const VOLTAGE_OFFSET_PLAUSIBLE: f64 = 0.02;
+
 /// The hysteresis candidate's starting decay rate (-): the state moves `1 - e^-1` of the way
 /// to a branch per tenth of the capacity passed.
 const HYSTERESIS_START_RATE: f64 = 10.0;
@@ -86,7 +91,7 @@ const HYSTERESIS_START_RATE: f64 = 10.0;
 const HYSTERESIS_BRANCH: f64 = 0.5;
 
 impl Candidate {
-    pub const ALL: [Candidate; 16] = [
+    pub const ALL: [Candidate; 17] = [
         Candidate::SeriesResistance,
         Candidate::Electrolyte,
         Candidate::ElectrolyteComposite,
@@ -103,6 +108,7 @@ impl Candidate {
         Candidate::LithiumPlatingPartial,
         Candidate::ActiveMaterialGrowth,
         Candidate::Leak,
+        Candidate::VoltageOffset,
     ];
 
     /// Short name, as the verdict uses it.
@@ -124,6 +130,7 @@ impl Candidate {
             Candidate::LithiumPlatingPartial => "lithium plating, partially reversible (plated lithium strips back after the charges and part of it turns dead)",
             Candidate::ActiveMaterialGrowth => "progressive loss of active material (stress-driven, over the cycles)",
             Candidate::Leak => "self-discharge or current offset (a leak current the cycler does not record: soft short or sensor bias)",
+            Candidate::VoltageOffset => "voltage offset (the voltage channel's calibration, or an open-circuit potential shifted against the set's)",
         }
     }
 
@@ -139,7 +146,8 @@ impl Candidate {
             | Candidate::LithiumPlating
             | Candidate::LithiumPlatingPartial
             | Candidate::ActiveMaterialGrowth
-            | Candidate::Leak => {
+            | Candidate::Leak
+            | Candidate::VoltageOffset => {
                 Class::MissingPhysics
             }
             _ => Class::ParameterMismatch,
@@ -164,6 +172,7 @@ impl Candidate {
             Candidate::LithiumPlating => "capacity and the knee drift from cycle to cycle as lithium plates while the negative electrode's potential is low (late in fast charges), with no film resistance; grows steeply with the charge rate and at low temperature",
             Candidate::LithiumPlatingPartial => "as irreversible plating, but the plated lithium strips back in the rest or discharge after each charge (a voltage plateau there), and only the part that turned dead is lost from cycle to cycle",
             Candidate::ActiveMaterialGrowth => "one electrode's OCV features are compressed more from cycle to cycle (its capacity shrinks as it cycles), faster where the current stresses its particles most",
+            Candidate::VoltageOffset => "a constant difference, the same under load and at rest, at every state of charge and current",
             Candidate::Leak => "the state of charge drifts at a constant rate whatever the load: the voltage keeps sliding in rests instead of settling, and the charge put back differs from the charge taken out by the leak times the time",
         }
     }
@@ -184,6 +193,7 @@ impl Candidate {
             Candidate::LithiumPlatingPartial => "plating rate constant 0.001 to 1000 times the set's, dead-lithium decay constant 1e-8 to 1e-2 1/s",
             Candidate::ActiveMaterialGrowth => "up to 50 % of an electrode's active material lost over the recording (steady-profile estimate)",
             Candidate::Leak => "up to C/100 either way (a leak or a sensor offset of 1 % of the 1C current)",
+            Candidate::VoltageOffset => "up to 20 mV either way",
         }
     }
 
@@ -213,6 +223,7 @@ impl Candidate {
             | (LithiumInventory | SeiGrowth | LithiumPlating | LithiumPlatingPartial | ActiveMaterial, ActiveMaterialGrowth) => {
                 "a slow (C/20) cycle at the start and the end, read by differential voltage analysis".into()
             }
+            (VoltageOffset, _) | (_, VoltageOffset) => "a slow (C/20) charge and discharge over the full window with the voltage channel checked against a reference: a shifted stoichiometry moves the OCV's features along the capacity axis, an offset moves the whole curve up or down".into(),
             (Leak, _) | (_, Leak) => "a rest of several hours at a middle state of charge, then a slow charge and discharge (a leak keeps discharging the cell at rest and the charge balance does not close; lost lithium or material does neither)".into(),
             (Thermal, _) | (_, Thermal) => "the same protocol at a second ambient temperature, with the cell temperature recorded".into(),
             _ if has_rates => format!(
@@ -371,6 +382,13 @@ impl Candidate {
                 };
                 (extra, change.into())
             }
+            Candidate::VoltageOffset => {
+                if spec.submodels.voltage_offset {
+                    return None;
+                }
+                spec.submodels.voltage_offset = true;
+                (vec![FitParameter::linear("cell.voltage_offset", 0.0, -VOLTAGE_OFFSET_SEARCH, VOLTAGE_OFFSET_SEARCH)], "voltage-offset submodel on".into())
+            }
             Candidate::Leak => {
                 if spec.submodels.leak {
                     return None;
@@ -472,6 +490,10 @@ impl Candidate {
                 (h > 0.05).then(|| format!("hysteresis half-width {:.1} mV exceeds 50 mV", h * 1e3))
             }
             Candidate::SeiGrowth | Candidate::LithiumPlating | Candidate::LithiumPlatingPartial | Candidate::ActiveMaterialGrowth => ageing::implausible(self, get, base, load),
+            Candidate::VoltageOffset => {
+                let v = get("cell.voltage_offset")?;
+                (v.abs() > VOLTAGE_OFFSET_PLAUSIBLE).then(|| format!("an offset of {:.1} mV exceeds 20 mV", v * 1e3))
+            }
             Candidate::Leak => {
                 let leak = get("cell.leakage_current")?;
                 let most = LEAK_PLAUSIBLE_C_RATE * base.cell.nominal_capacity;
@@ -510,6 +532,10 @@ impl Candidate {
                 let (which, l) = if p > n { ("positive", p) } else { ("negative", n) };
                 format!("progressive loss of active material, {which} electrode (about {:.1} % of its capacity over the recording)", 100.0 * l)
             }
+            Candidate::VoltageOffset => match get("cell.voltage_offset") {
+                Some(v) => format!("{} of {:+.1} mV", self.name(), v * 1e3),
+                None => self.name().to_string(),
+            },
             Candidate::Leak => match get("cell.leakage_current") {
                 Some(leak) => {
                     let way = if leak >= 0.0 { "discharging" } else { "charging" };

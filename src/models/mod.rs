@@ -77,6 +77,8 @@ pub struct Submodels {
     /// A leak (`cell.leakage_current`): the model's electrochemistry carries the recorded
     /// current plus the leak, the cycler sees only the former; no extra state.
     pub leak: bool,
+    /// A constant `cell.voltage_offset` added to the terminal voltage; no extra state.
+    pub voltage_offset: bool,
     /// SEI growth on the negative electrode (`sei` parameters): one extra state in the SPM,
     /// one per negative x volume in the SPMe, two per negative x volume in the DFN (with the
     /// total interfacial current density).
@@ -116,7 +118,7 @@ impl Submodels {
 
     /// Whether a submodel that wraps the model in [`submodels::Augmented`] is on.
     pub fn augments(&self) -> bool {
-        self.rc || self.hysteresis || self.leak
+        self.rc || self.hysteresis || self.leak || self.voltage_offset
     }
 }
 

@@ -33,6 +33,7 @@ pub fn chen2020() -> ParameterSet {
             hysteresis_rate: super::set::DEFAULT_HYSTERESIS_RATE,
             hysteresis_initial: 0.0,
             leakage_current: 0.0,
+            voltage_offset: 0.0,
         },
         negative: Electrode {
             thickness: 85.2e-6,

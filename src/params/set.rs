@@ -206,6 +206,11 @@ pub struct Cell {
     /// Used when the leak submodel is on.
     #[serde(default)]
     pub leakage_current: f64,
+    /// Constant added to the terminal voltage (V): the voltage channel's calibration offset,
+    /// or an open-circuit potential shifted against the set's. Used when the voltage-offset
+    /// submodel is on.
+    #[serde(default)]
+    pub voltage_offset: f64,
 }
 
 /// Default RC capacitance (F): a 10 s time constant at 10 mOhm.
@@ -325,6 +330,7 @@ impl ParameterSet {
         positive("cell.hysteresis_rate", c.hysteresis_rate)?;
         check("cell.hysteresis_initial", c.hysteresis_initial, c.hysteresis_initial.abs() <= 1.0, "must lie in [-1, 1]")?;
         check("cell.leakage_current", c.leakage_current, c.leakage_current.is_finite(), "must be a finite current (A)")?;
+        check("cell.voltage_offset", c.voltage_offset, c.voltage_offset.is_finite(), "must be a finite voltage (V)")?;
         let t = &self.thermal;
         temperature("thermal.reference_temperature", t.reference_temperature)?;
         temperature("thermal.ambient_temperature", t.ambient_temperature)?;
@@ -435,6 +441,7 @@ impl ParameterSet {
                 "hysteresis_rate" => &mut self.cell.hysteresis_rate,
                 "hysteresis_initial" => &mut self.cell.hysteresis_initial,
                 "leakage_current" => &mut self.cell.leakage_current,
+                "voltage_offset" => &mut self.cell.voltage_offset,
                 _ => return Err(unknown()),
             },
             "thermal" => match name {

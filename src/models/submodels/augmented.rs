@@ -1,5 +1,5 @@
 //! Submodels that wrap any physics model without touching it: a series RC element and a
-//! one-state OCV hysteresis (each an appended state), and a leak.
+//! one-state OCV hysteresis (each an appended state), a leak and a voltage offset.
 //!
 //! [`Augmented`] wraps a built `Box<dyn PhysicsModel>`; the wrapped model sees only its own
 //! states, and the extra states follow them:
@@ -15,6 +15,8 @@
 //! - Leak (`cell.leakage_current` `I_L` (A), discharge positive): the cell carries
 //!   `I + I_L` where the cycler drives and records `I`, e.g. self-discharge through a soft
 //!   short or a current sensor's offset. Every other submodel sees `I + I_L`.
+//! - Voltage offset (`cell.voltage_offset` `V_0` (V)): the terminal voltage gains `V_0`, e.g.
+//!   the voltage channel's calibration or an OCP shifted against the set's.
 
 use crate::models::{Electrochem, Model, PhysicsModel, Submodels};
 use crate::params::ParameterSet;
@@ -31,6 +33,8 @@ pub struct Augmented {
     hysteresis: Option<usize>,
     /// Whether the leak is on.
     leak: bool,
+    /// Whether the voltage offset is on.
+    offset: bool,
     /// Number of states of the wrapped model.
     n_base: usize,
     mass: Vec<f64>,
@@ -54,7 +58,7 @@ impl Augmented {
         };
         let rc = push(submodels.rc, RC_SCALE);
         let hysteresis = push(submodels.hysteresis, 1.0);
-        Self { base, rc, hysteresis, leak: submodels.leak, n_base, mass, scale }
+        Self { base, rc, hysteresis, leak: submodels.leak, offset: submodels.voltage_offset, n_base, mass, scale }
     }
 
     /// The wrapped model.
@@ -93,6 +97,9 @@ impl Model for Augmented {
         }
         if self.leak {
             name.push_str("+leak");
+        }
+        if self.offset {
+            name.push_str("+offset");
         }
         name
     }
@@ -144,6 +151,7 @@ impl Model for Augmented {
     fn voltage(&self, y: &[f64], current: f64) -> f64 {
         self.base.voltage(&y[..self.n_base], self.inside(current)) - self.rc_voltage(y)
             + self.cell().hysteresis_voltage * self.hysteresis_state(y)
+            + if self.offset { self.cell().voltage_offset } else { 0.0 }
     }
 
     fn temperature(&self, y: &[f64]) -> f64 {
@@ -281,6 +289,20 @@ mod tests {
         let plain = ModelBuilder::new(ModelKind::Spm, Submodels::default(), MeshSizes::default()).build(&p).unwrap().model.len();
         let built = builder.build(&p).unwrap();
         assert_eq!((built.model.len(), built.model.name()), (plain, "SPM+leak".to_string()));
+    }
+
+    /// The voltage offset moves the whole curve by `V_0` and nothing else.
+    #[test]
+    fn a_voltage_offset_shifts_the_curve_by_its_value() {
+        let mut p = crate::params::chen2020();
+        p.cell.voltage_offset = -0.008;
+        let t: Vec<f64> = (0..=12).map(|k| 150.0 * f64::from(k)).collect();
+        let protocol = Protocol { steps: vec![Step::Current { current: 5.0, duration: 1200.0, until_voltage: None }, Step::Rest { duration: 600.0 }] };
+        let shifted = run(Submodels { voltage_offset: true, ..Default::default() }, &p, &protocol, t.clone());
+        let plain = run(Submodels::default(), &p, &protocol, t.clone());
+        for k in 0..t.len() {
+            assert!((shifted[k] - plain[k] + 0.008).abs() < 1e-12, "t = {}: {} vs {}", t[k], shifted[k], plain[k]);
+        }
     }
 
     /// The wrapper leaves the wrapped model's states, temperature and lithium alone, and the
