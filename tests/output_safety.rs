@@ -64,13 +64,22 @@ fn the_manifest_never_removes_a_file_outside_the_folder_behind_a_link_or_not_a_f
 #[test]
 fn the_next_run_removes_the_partial_folders_of_interrupted_runs() {
     let s = Scratch::new("interrupted");
-    let mut child = Command::new(env!("CARGO_BIN_EXE_cellstudio"))
-        .args(["simulate", "--model", "spm", "--mesh", "5", "--repeat", "100000000", "--out", "out"])
+    let mut run = Command::new(env!("CARGO_BIN_EXE_cellstudio"));
+    run.args(["simulate", "--model", "spm", "--mesh", "5", "--repeat", "100000000", "--out", "out"])
         .current_dir(&s.0)
         .stdout(Stdio::null())
-        .stderr(Stdio::null())
-        .spawn()
-        .unwrap();
+        .stderr(Stdio::null());
+    // A shell without job control starts a background job with SIGINT ignored, and every
+    // child inherits that (the test then waited for ever): the run gets the default action,
+    // as a terminal's Ctrl-C meets it.
+    // SAFETY: signal(2) is async-signal-safe, called between fork and exec.
+    unsafe {
+        std::os::unix::process::CommandExt::pre_exec(&mut run, || {
+            libc::signal(libc::SIGINT, libc::SIG_DFL);
+            Ok(())
+        });
+    }
+    let mut child = run.spawn().unwrap();
     let partial = format!(".out.partial-{}", child.id());
     let start = Instant::now();
     while !s.path(&partial).exists() {
