@@ -634,3 +634,19 @@ fn k3_voltage_channel_offset_gitt_spm() {
     let offset = first_fitted(&rounds, "cell.voltage_offset");
     assert!((offset / 0.008 - 1.0).abs() < 0.03, "offset {offset} V: {}", rounds[0].summary);
 }
+
+#[test]
+fn k2_current_channel_gain_spme() {
+    // Blind batch k: the current channel reads 3 % low (the cell carries 1.03 times the
+    // recorded current). Its first run named positive LAM with both fractions at 0.97; equal
+    // losses of both electrodes are now named as the capacity scale they are, which a current
+    // gain and an inactive share of the electrode area both are.
+    let rounds = run_case("diagnosis-extra/k2_current_channel_gain_3pct_low_30C_spme");
+    let base = chen2020();
+    // PyBaMM's truth: the cell sees 1 / 0.97 of the recorded current, as if both electrodes
+    // had 0.97 of their active material.
+    for (path, set) in [("negative.active_fraction", base.negative.active_fraction), ("positive.active_fraction", base.positive.active_fraction)] {
+        let scale = first_fitted(&rounds, path) / set;
+        assert!((scale / 0.97 - 1.0).abs() < 0.002, "{path} scale {scale}: {}", rounds[0].summary);
+    }
+}

@@ -524,6 +524,9 @@ impl Candidate {
             Candidate::ActiveMaterial => {
                 let loss = |path: &str| get(path).and_then(|v| base.get(path).ok().map(|v0| 1.0 - v / v0)).unwrap_or(0.0);
                 let (n, p) = (loss("negative.active_fraction"), loss("positive.active_fraction"));
+                if both_alike(n, p) {
+                    return capacity_scale_name(0.5 * (n + p));
+                }
                 let (which, l) = if p >= n { ("positive", p) } else { ("negative", n) };
                 format!("loss of active material, {which} electrode ({:.0} % of its capacity)", 100.0 * l)
             }
@@ -548,6 +551,30 @@ impl Candidate {
     }
 }
 
+/// Relative difference (-) within which two electrodes' fitted losses of active material
+/// count as one loss of both: the fits of the two fractions trade a little against each
+/// other through the OCP slopes, so alike losses come back a few per cent apart.
+const ALIKE_LOSSES: f64 = 0.1;
+
+/// Whether the negative and positive losses `n`, `p` (fractions, -) are one loss of both
+/// electrodes: the same sign, at least half a per cent, within [`ALIKE_LOSSES`] of each other.
+fn both_alike(n: f64, p: f64) -> bool {
+    n * p > 0.0 && n.abs().min(p.abs()) >= 0.005 && (n - p).abs() <= ALIKE_LOSSES * n.abs().max(p.abs())
+}
+
+/// The name of a loss `l` (-) of both electrodes alike: from the voltage alone it is a scale
+/// on every current density, the same as a smaller working electrode area or a current
+/// channel that misreads the current by the same share (only the ohmic drop in the tabs and
+/// contacts, which does not scale with the area, tells them apart).
+fn capacity_scale_name(l: f64) -> String {
+    let (share, reads) = (100.0 * l.abs(), if l > 0.0 { "low" } else { "high" });
+    let what = if l > 0.0 { "loss" } else { "gain" };
+    format!(
+        "{what} of active material in both electrodes alike ({share:.1} % each): a capacity scale, the same as {share:.1} % of the electrode area {} or a current channel (sensor gain) reading {share:.1} % {reads}",
+        if l > 0.0 { "inactive (unwetted or delaminated)" } else { "more than the set's" }
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -565,6 +592,23 @@ mod tests {
         let values = [0.01 * base.positive.diffusivity, 0.4 * base.negative.active_fraction, base.positive.active_fraction];
         assert!(Candidate::ActiveMaterial.implausible(&names, &values, &base, &Load::default()).is_some_and(|why| why.contains("negative.active_fraction")));
         assert!(Candidate::SolidDiffusion.implausible(&names, &values, &base, &Load::default()).is_some_and(|why| why.contains("positive.diffusivity")));
+    }
+
+    /// Equal losses of both electrodes are named as the capacity scale they are; unequal
+    /// ones by the electrode that lost more.
+    #[test]
+    fn alike_losses_of_both_electrodes_are_a_capacity_scale() {
+        let base = crate::params::chen2020();
+        let names: Vec<String> = ["negative.active_fraction", "positive.active_fraction"].map(String::from).to_vec();
+        let name = |n: f64, p: f64| {
+            let values = [(1.0 - n) * base.negative.active_fraction, (1.0 - p) * base.positive.active_fraction];
+            Candidate::ActiveMaterial.named_by_values(&names, &values, &base, &Load::default())
+        };
+        let scale = name(0.030, 0.0304);
+        assert!(scale.contains("both electrodes") && scale.contains("current channel") && scale.contains("3.0 % low"), "{scale}");
+        assert!(name(-0.05, -0.052).contains("reading 5.1 % high"));
+        assert!(name(0.12, 0.02).contains("negative electrode (12 %"));
+        assert!(name(0.001, 0.001).contains("positive electrode (0 %"));
     }
 
     /// A leak only rescales the charge of a run in one direction; a rest or a return
