@@ -1,5 +1,5 @@
 """Side-by-side timing of SEI cycling: N CC-CV cycles of the SPM with PyBaMM's "reaction
-limited" SEI (Chen2020; the cycle of tests/sei.rs), ours (`cellstudio cycle`) against
+limited" SEI (Chen2020; the cycle of tests/suite/sei.rs), ours (`cellstudio cycle`) against
 PyBaMM 26.10 (IDAKLU), both at rtol = atol = TOL, interleaved, medians over --rounds.
 
 Accuracy of each side: the largest difference over the cycles of the discharge capacity

@@ -1,5 +1,5 @@
 """PyBaMM reference for CC-CV protocols (voltage holds ended by a current limit), for
-tests/cccv.rs: SPM, SPMe and DFN on Chen 2020, PyBaMM's default mesh (20 volumes per
+tests/suite/cccv.rs: SPM, SPMe and DFN on Chen 2020, PyBaMM's default mesh (20 volumes per
 x-domain and per particle, as ours), IDAKLU at rtol = atol = 1e-8, outputs every 10 s.
 
     python -m venv .venv && .venv/bin/pip install pybamm==26.10.1.1

@@ -1,4 +1,4 @@
-"""PyBaMM reference for loss of active material (tests/lam.rs): SPM, SPMe and DFN on Chen 2020,
+"""PyBaMM reference for loss of active material (tests/suite/lam.rs): SPM, SPMe and DFN on Chen 2020,
 each with PyBaMM's option "loss of active material" set to
 - "stress-driven" (PyBaMM then also sets "particle mechanics" = "swelling only" and
   "stress-induced diffusion" = "true"), with the mechanical and LAM parameters of PyBaMM's

@@ -1,5 +1,5 @@
 """PyBaMM reference for the lithium-plating margin and the plating-free charge rate
-(tests/fast_charge.rs): Chen 2020, PyBaMM's default mesh (ours too), IDAKLU at rtol = atol =
+(tests/suite/fast_charge.rs): Chen 2020, PyBaMM's default mesh (ours too), IDAKLU at rtol = atol =
 1e-8.
 
 1. A 1C charge from 10 % SOC for 42 minutes (to 80 %), outputs every 10 s: the plating margin,

@@ -1,4 +1,4 @@
-"""PyBaMM reference for the lithium plating submodel (tests/plating.rs): SPM, SPMe and DFN on
+"""PyBaMM reference for the lithium plating submodel (tests/suite/plating.rs): SPM, SPMe and DFN on
 Chen 2020 with the lithium plating parameters of PyBaMM's "OKane2022" set (rate constant 1e-9 m/s,
 transfer coefficient 0.65, dead lithium decay constant 1e-6 1/s, its exchange-current and
 dead-lithium decay functions), PyBaMM's option "lithium plating" set to

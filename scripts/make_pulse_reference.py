@@ -1,4 +1,4 @@
-"""PyBaMM reference for the HPPC-style pulse power (tests/pulse_power.rs): the largest
+"""PyBaMM reference for the HPPC-style pulse power (tests/suite/pulse_power.rs): the largest
 constant discharge current that a Chen 2020 cell at rest at 50 % SOC sustains for 10 s before
 its voltage reaches the 2.5 V cut-off, by bisection on the current with PyBaMM's experiment
 (its own cut-off event ends a pulse that asks too much), IDAKLU at rtol = atol = 1e-8, the

@@ -1,4 +1,4 @@
-"""PyBaMM reference for SEI growth (tests/sei.rs): SPM, SPMe and DFN on Chen 2020 (its SEI
+"""PyBaMM reference for SEI growth (tests/suite/sei.rs): SPM, SPMe and DFN on Chen 2020 (its SEI
 parameters), each with PyBaMM's SEI options "reaction limited" and "solvent-diffusion
 limited" (SEI film resistance "distributed", PyBaMM's default with SEI, which in the DFN
 makes the total interfacial current density an algebraic state; side reactions x-averaged
@@ -33,7 +33,7 @@ import time
 import numpy as np
 import pybamm
 
-# One cycle: the CC-CV experiment of tests/cccv.rs.
+# One cycle: the CC-CV experiment of tests/suite/cccv.rs.
 from make_cccv_reference import EXPERIMENT as CYCLE
 CYCLES = 10
 OPTIONS = {"reaction_limited": "reaction limited", "solvent_diffusion_limited": "solvent-diffusion limited"}

@@ -114,7 +114,7 @@ impl EcmParameters {
     /// over the two time constants) to the overpotential `OCV - V` of the crate's DFN
     /// (default mesh, Chen 2020 parameters, no contact resistance) during a 1C discharge
     /// pulse of 600 s from SOC 0.5 followed by 1800 s of rest; the fit is reproduced by
-    /// the test `chen2020_constants_are_the_dfn_fit` in `tests/ecm.rs` (RMS residual 1.05 mV).
+    /// the test `chen2020_constants_are_the_dfn_fit` in `tests/suite/ecm.rs` (RMS residual 1.05 mV).
     /// They are constants, not functions of SOC or temperature, so the ECM is a coarse
     /// surrogate away from mid SOC and 1C.
     pub fn from_chen2020() -> EcmParameters {

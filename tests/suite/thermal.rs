@@ -1,6 +1,6 @@
 //! Lumped thermal submodel: energy balance and Arrhenius coupling.
 
-mod common;
+use crate::common;
 
 use cellstudio::geometry::{Discretisation, Geometry, MeshSizes};
 use cellstudio::models::electrochem::Side;

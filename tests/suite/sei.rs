@@ -20,7 +20,7 @@ const CYCLE: [&str; 5] = ["Discharge at 1C until 3.0 V", "Rest for 10 minutes", 
 const CYCLES: usize = 10;
 const OPTIONS: [(SeiModel, &str); 2] = [(SeiModel::ReactionLimited, "reaction_limited"), (SeiModel::SolventDiffusionLimited, "solvent_diffusion_limited")];
 
-mod common;
+use crate::common;
 
 fn rows(file: &str) -> Vec<Vec<f64>> {
     common::csv_rows("sei", file)

@@ -24,7 +24,7 @@ const OPTIONS: [(PlatingModel, SeiModel, &str); 4] = [
     (PlatingModel::PartiallyReversible, SeiModel::ReactionLimited, "partially_reversible_sei"),
 ];
 
-mod common;
+use crate::common;
 use common::AgeingLimits;
 
 fn rows(file: &str) -> Vec<Vec<f64>> {

@@ -34,7 +34,7 @@ fn cases() -> [(Submodels, &'static str); 4] {
 /// The case whose positive electrode loses no active material (PyBaMM's option "none").
 const NEGATIVE_ONLY: &str = "negative_stress_driven_plain_diffusion";
 
-mod common;
+use crate::common;
 use common::AgeingLimits;
 
 fn rows(file: &str) -> Vec<Vec<f64>> {

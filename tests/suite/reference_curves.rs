@@ -9,7 +9,7 @@
 //! four times the largest of each model. Before the fix of issue 14 the SPMe was 0.009-0.034
 //! mV and the DFN 0.012-0.045 mV off at any tolerance.
 
-mod common;
+use crate::common;
 
 use cellstudio::geometry::MeshSizes;
 use cellstudio::models::ModelBuilder;

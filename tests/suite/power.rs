@@ -1,7 +1,7 @@
 //! Constant-power steps: the current follows the state so that I V = P, and the delivered
 //! energy is P times the duration.
 
-mod common;
+use crate::common;
 
 use cellstudio::geometry::MeshSizes;
 use cellstudio::models::{ModelKind, Submodels};

@@ -1,7 +1,7 @@
 //! Fitting problems: sensitivities against finite differences, and the seed identification
 //! case (SPM with contact resistance, PyBaMM's curve plus 2 mV noise).
 
-mod common;
+use crate::common;
 
 use cellstudio::data::Recording;
 use cellstudio::models::{ModelKind, Submodels};

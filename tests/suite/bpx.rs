@@ -2,7 +2,7 @@
 //! values rejected by BPX key, a hand-written v0.5 NMC/graphite document (with a DFN run
 //! against its 1C validation data), expressions, and the v1 `State` section.
 
-mod common;
+use crate::common;
 
 use cellstudio::geometry::MeshSizes;
 use cellstudio::models::{ModelKind, Submodels};

@@ -9,7 +9,7 @@ use std::path::Path;
 use std::process::{Command, Output, Stdio};
 use std::time::{Duration, Instant};
 
-mod cli_support;
+use crate::cli_support;
 
 use cli_support::*;
 

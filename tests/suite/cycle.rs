@@ -1,7 +1,7 @@
 //! `cellstudio cycle`: the example study (`examples/cycle_sei_chen2020.toml`) writes one
 //! summary row per cycle, all or nothing; bad settings fail with an error naming the key.
 
-mod cli_support;
+use crate::cli_support;
 
 use cli_support::*;
 

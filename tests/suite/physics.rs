@@ -1,7 +1,7 @@
 //! Analytic limits and invariants: lithium conservation, the open-circuit limit, and the
 //! ordering of SPM / SPMe / DFN with rate.
 
-mod common;
+use crate::common;
 
 use cellstudio::geometry::MeshSizes;
 use cellstudio::models::ModelBuilder;
