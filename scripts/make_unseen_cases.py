@@ -1510,7 +1510,178 @@ def batch_k(root):
                initial_soc=1.0, seed=168, noise=2e-3, period=3, compare=lion.DFN())
 
 
-BATCHES = {"u": batch_u, "v": batch_v, "w": batch_w, "x": batch_x, "y": batch_y, "z": batch_z, "q": batch_q, "r": batch_r, "s": batch_s, "t": batch_t, "p": batch_p, "o": batch_o, "n": batch_n, "m": batch_m, "l": batch_l, "k": batch_k}
+def with_silicon_composite(p, graphite_fraction, silicon_fraction):
+    """A graphite + silicon negative (PyBaMM "particle phases" ("2", "1")): the set's graphite as
+    the primary phase with its active fraction set to `graphite_fraction`, Chen2020_composite's
+    silicon (average OCP of Mark 2016, no hysteresis; radius 1.52 um, diffusivity 1.67e-14 m2/s,
+    c_max 278000 mol/m3) as the secondary phase at `silicon_fraction`."""
+    c = pybamm.ParameterValues("Chen2020_composite")
+    negative = ["Negative electrode OCP [V]", "Negative electrode OCP entropic change [V.K-1]", "Negative electrode active material volume fraction",
+                "Negative electrode density [kg.m-3]", "Negative electrode exchange-current density [A.m-2]",
+                "Maximum concentration in negative electrode [mol.m-3]", "Initial concentration in negative electrode [mol.m-3]",
+                "Negative particle diffusivity [m2.s-1]", "Negative particle radius [m]"]
+    update = {f"Primary: {k}": p[k] for k in negative}
+    update.update({f"Secondary: {k}": c[f"Secondary: {k}"] for k in negative})
+    update.update({"Primary: Negative electrode active material volume fraction": graphite_fraction,
+                   "Secondary: Negative electrode active material volume fraction": silicon_fraction})
+    for k in negative:
+        del p[k]
+    p.update(update, check_already_exists=False)
+    return p
+
+
+def batch_j(root):
+    """Seventeenth batch, made blind (a helper session that did not read the diagnosis code,
+    judged once on the frozen binary /work/bin/frozen-j, sha256 4ac500ba58aa, before anything
+    else). Four cases from the usual families under protocols, magnitudes, models and
+    temperatures not used before: a DFN control on a WLTP-like drive at 35 degC with 0.3 mV
+    noise; positive LAM together with a contact resistance in two 1C CC-CV cycles of an SPM at
+    0 degC; kinetics in multi-rate (C/2 to 3C) pulse pairs at two SOCs, DFN at 5 degC; self-heating
+    in 1.5C / 1C partial cycles (SPMe, temperature recorded). Four physically different
+    effects: calendar ageing (solvent-diffusion-limited SEI during a 5 day storage at full SOC
+    and 45 degC between two capacity checks); a particle-size distribution (PyBaMM's MPM, both
+    electrodes lognormal, sd 0.3 of the mean) handed to the SPM under a GITT; a graphite +
+    silicon negative (the LG M50's real chemistry) handed to the graphite-only SPMe; a positive
+    particle diffusivity that falls 5x towards full lithiation, seen in a rate test (DFN).
+    Lithium and active-material loss are accepted only by their own words, as since batch r;
+    the new effects by the words an engineer would use for them (for the composite also an OCP
+    naming; for the concentration-dependent diffusivity any particle-diffusivity naming).
+
+    First run (2026-11-27, frozen binary /work/bin/frozen-j, sha256 4ac500ba58aa, load average
+    4.9 before, 6.0 after, on 2 cores shared with another session): 5 of 8 by the judge, 4 on
+    substance. j1 no missing physics (0.30 mV, noise 0.31), 40 s; j2 the pair in round 1 at the
+    truth (positive fraction 0.5854, truth 0.5852; 6.01 mOhm), 36.39 -> 1.51 mV, 211 s; j3
+    kinetics (rate constants 0.504x / 0.495x), 24.95 -> 1.01 mV, 48 s; j4 thermal (h 12.015),
+    22.26 -> 1.00 mV, 47 s. j8 passed on its word only: particle diffusivity, but the fit moved
+    the negative (0.62x, not concealed) and left the positive at 0.96x, 16.61 -> 11.34 mV (noise
+    3.16), then unexplained, 807 s. Missed: j5 unexplained (46.81 mV, the mismatch located in
+    the discharge after the storage), 33 s; j6 a tie of lithium inventory + positive LAM (1 %) or
+    lithium inventory + particle diffusivities, then a leak and kinetics + a voltage offset,
+    5.94 -> 3.89 mV, 48 s; j7 unexplained (106.90 mV), 45 s."""
+    cap = 5.0
+    # j1: control, DFN on a WLTP-like drive at 35 degC, 0.3 mV noise, 1 s sampling
+    p = chen()
+    p.update({"Ambient temperature [K]": 308.15, "Initial temperature [K]": 308.15})
+    drive = wltp_like_current(171)
+    write_case(root, "j1_control_wltp_drive_35C_0p3mV_dfn", lion.DFN(), p,
+               ["Rest for 2 minutes", pybamm.step.current(drive), "Rest for 15 minutes"],
+               {"effect": "none", "candidate_model": "dfn", "accept": ["no missing"], "ambient_temperature_K": 308.15,
+                "note": "negative control at 35 degC (isothermal, not recorded): DFN data and model, nothing concealed. From 80 % "
+                        "SOC: 2 min rest, a WLTP-class-3-like drive (1800 s, peaks 3C, regeneration to 1.5C, current linear "
+                        "between 1 s points), 15 min rest; sampled every 1 s, 0.3 mV noise (a quiet cycler)"},
+               initial_soc=0.8, seed=171, noise=3e-4, period=1, compare=lion.DFN())
+    # j2: positive LAM 12 % and a 6 mOhm contact resistance, two 1C CC-CV cycles, SPM at 0 degC
+    p = scaled(chen(), "Positive electrode active material volume fraction", 0.88)
+    p.update({"Ambient temperature [K]": 273.15, "Initial temperature [K]": 273.15})
+    p.update({"Contact resistance [Ohm]": 0.006}, check_already_exists=False)
+    cycle = ["Discharge at 1C until 2.7 V", "Rest for 20 minutes", "Charge at 1C until 4.2 V", "Hold at 4.2 V until C/20", "Rest for 20 minutes"]
+    write_case(root, "j2_lam_positive_and_contact_2_cccv_cycles_0C_spm", lion.SPM(options={"contact resistance": "true"}), p,
+               ["Rest for 10 minutes"] + cycle * 2,
+               {"effect": "active_material_loss+contact_resistance", "candidate_model": "spm",
+                "accept": ["active material", "contact|series resistance"], "ambient_temperature_K": 273.15,
+                "note": "12 % loss of positive active material (fraction 0.665 -> 0.5852, default initial concentrations) and a "
+                        "6 mOhm contact resistance, at 0 degC (isothermal, not recorded). From full: 10 min rest, 2 x (1C to 2.7 V, "
+                        "20 min rest, 1C CC-CV to 4.2 V and C/20, 20 min rest); sampled every 8 s, 1.5 mV noise; SPM data and model"},
+               initial_soc=1.0, seed=172, noise=1.5e-3, period=8, compare=lion.SPM())
+    # j3: exchange currents x0.5 (both electrodes), multi-rate pulse pairs at 50 % and 38 % SOC, DFN at 5 degC
+    p = chen()
+    p.update({"Ambient temperature [K]": 278.15, "Initial temperature [K]": 278.15})
+    for side in ["Negative", "Positive"]:
+        p = scaled(p, f"{side} electrode exchange-current density [A.m-2]", 0.5)
+    block = []
+    for rate in ["C/2", "1C", "2C", "3C"]:
+        block += [f"Discharge at {rate} for 10 seconds", "Rest for 90 seconds", f"Charge at {rate} for 10 seconds", "Rest for 90 seconds"]
+    write_case(root, "j3_kinetics_multirate_pulses_5C_dfn", lion.DFN(), p,
+               ["Rest for 5 minutes"] + block + ["Discharge at 1C for 12 minutes", "Rest for 15 minutes"] + block,
+               {"effect": "kinetics", "candidate_model": "dfn", "accept": ["kinetic", "charge transfer", "exchange"],
+                "ambient_temperature_K": 278.15,
+                "note": "exchange-current densities x0.5 in both electrodes, at 5 degC (isothermal, not recorded). From 50 % SOC: 5 min "
+                        "rest, pulse pairs of 10 s at C/2, 1C, 2C and 3C (discharge, 90 s rest, charge, 90 s rest), 1C for 12 min, "
+                        "15 min rest, the same pulse pairs at about 30 % SOC; sampled every 1 s, 1 mV noise; DFN data and model"},
+               initial_soc=0.5, seed=173, period=1, compare=lion.DFN())
+    # j4: lumped self-heating h = 12 in 1.5C / 1C partial cycles at 20 degC, temperature recorded, SPMe
+    p = chen()
+    p.update({"Ambient temperature [K]": 293.15, "Initial temperature [K]": 293.15, "Total heat transfer coefficient [W.m-2.K-1]": 12.0})
+    cycle = ["Discharge at 1.5C for 20 minutes", "Rest for 10 minutes", "Charge at 1C for 30 minutes", "Rest for 10 minutes"]
+    write_case(root, "j4_thermal_partial_cycles_20C_recorded_spme", lion.SPMe(options={"thermal": "lumped"}), p,
+               ["Rest for 10 minutes"] + cycle * 3 + ["Rest for 20 minutes"],
+               {"effect": "thermal", "candidate_model": "spme", "accept": ["thermal", "heat"], "ambient_temperature_K": 293.15,
+                "note": "lumped self-heating, h = 12 W/(m2 K), at 20 degC: partial cycles between 65 and 15 % SOC (from 65 %: 10 min "
+                        "rest, 3 x (1.5C for 20 min, 10 min rest, 1C charge for 30 min, 10 min rest), 20 min rest); temperature "
+                        "recorded (0.05 K noise); sampled every 4 s, 1 mV noise; SPMe data, the candidate the isothermal SPMe"},
+               initial_soc=0.65, temperature=True, seed=174, period=4, compare=lion.SPMe())
+    # j5: calendar ageing: solvent-diffusion-limited SEI during 5 days of storage at full SOC and 45 degC between two capacity checks
+    p = chen()
+    p.update({"Ambient temperature [K]": 318.15, "Initial temperature [K]": 318.15})
+    p = scaled(p, "SEI solvent diffusivity [m2.s-1]", 300.0)
+    steps = ["Rest for 10 minutes", "Discharge at C/2 until 2.7 V", "Rest for 30 minutes", "Charge at C/2 until 4.2 V", "Hold at 4.2 V until C/20",
+             "Rest for 1 hour", "Rest for 120 hours (30 minute period)", "Discharge at C/2 until 2.7 V", "Rest for 30 minutes"]
+    write_case(root, "j5_calendar_ageing_sei_storage_5_days_45C_spme", lion.SPMe(options={"SEI": "solvent-diffusion limited"}), p, steps,
+               {"effect": "sei_growth", "candidate_model": "spme", "accept": ["sei", "inventory", "calendar"], "ambient_temperature_K": 318.15,
+                "sampling_note": "10 s, except the 120 h storage rest, logged every 30 min",
+                "note": "calendar ageing: SEI growth limited by solvent diffusion (PyBaMM 'solvent-diffusion limited', distributed "
+                        "film resistance), solvent diffusivity 7.5e-20 m2/s (300x Chen 2020's: an accelerated storage test), mostly "
+                        "during 5 days of storage at full SOC and 45 degC (isothermal throughout, not recorded): the cyclable "
+                        "lithium lost grows from about 0.001 to 0.006 mol, the C/2 discharge capacity after storage is 4.79 A h "
+                        "against 4.96 A h for the candidate (3.4 % less), the first capacity check differs by 0.3 %; the storage "
+                        "voltage stays on the graphite plateau (flat). A lithium-inventory loss that grows during the recording; a "
+                        "static inventory loss is its nearest stand-in and is accepted. From full: 10 min rest, C/2 to 2.7 V, 30 min "
+                        "rest, C/2 CC-CV to 4.2 V and C/20, 1 h rest, 120 h storage rest (logged every 30 min), C/2 to 2.7 V, 30 min "
+                        "rest; sampled every 10 s outside the storage, 0.5 mV noise; SPMe data"},
+               initial_soc=1.0, seed=175, noise=5e-4, period=10, compare=lion.SPMe())
+    # j6: a particle-size distribution in both electrodes (PyBaMM MPM, lognormal, sd 0.3 of the mean), GITT at 15 degC, handed to the SPM
+    p = chen()
+    p.update({"Ambient temperature [K]": 288.15, "Initial temperature [K]": 288.15})
+    p = pybamm.get_size_distribution_parameters(p, sd_n=0.3, sd_p=0.3)
+    gitt = ["Rest for 5 minutes"] + ["Discharge at 1C for 6 minutes", "Rest for 20 minutes"] * 7
+    write_case(root, "j6_particle_size_distribution_gitt_15C_spm", lion.MPM(), p, gitt,
+               {"effect": "particle_size_distribution", "candidate_model": "spm",
+                "accept": ["size distribution", "particle size", "particle radius", "polydispers"], "ambient_temperature_K": 288.15,
+                "note": "a distribution of particle sizes in both electrodes (PyBaMM's many-particle model, MPM: lognormal, area-weighted "
+                        "mean the set's radius, standard deviation 0.3 of the mean, PyBaMM's default bounds) where the candidate SPM "
+                        "has one particle size; the large particles lag and the relaxation after each pulse is a spread of time "
+                        "constants. Not a candidate parameter; a particle diffusivity or radius fitted as one value is a stand-in "
+                        "(accepted only through 'particle radius'). At 15 degC (isothermal, not recorded), from full: 5 min rest, "
+                        "GITT of 7 x (1C for 6 min, 20 min rest) down to about 30 % SOC; sampled every 3 s, 2 mV noise; MPM data"},
+               initial_soc=1.0, seed=176, noise=2e-3, period=3, compare=lion.SPM())
+    # j7: a graphite + silicon negative (the LG M50's real SiOx-graphite anode) handed to the graphite-only SPMe; C/5 capacity check and CC-CV charge
+    p = with_silicon_composite(chen(), 0.65, 0.012)
+    write_case(root, "j7_graphite_silicon_composite_negative_c5_spme", lion.SPMe(options={"particle phases": ("2", "1")}), p,
+               ["Rest for 10 minutes", "Discharge at C/5 until 2.7 V", "Rest for 1 hour", "Charge at C/2 until 4.2 V", "Hold at 4.2 V until C/20",
+                "Rest for 1 hour"],
+               {"effect": "composite_negative", "candidate_model": "spme",
+                "accept": ["silicon", "composite", "blend", "second phase", "two-phase", "two phase", "open-circuit potential", "ocp"],
+                "note": "a composite negative electrode: graphite (the set's, active fraction 0.65 instead of 0.75) with 1.2 % by volume "
+                        "of silicon (Chen2020_composite's secondary phase: average OCP of Mark 2016, no hysteresis, 1.52 um "
+                        "particles, c_max 278000 mol/m3), about the same total negative capacity as the set's; the silicon "
+                        "delithiates at the end of discharge and gives a sloping low-SOC tail (up to 117 mV below the candidate "
+                        "at C/5 near 20 % SOC) and a longer CC charge. Not a candidate parameter; naming the negative OCP is "
+                        "accepted beside silicon / composite. At 25 degC, from full: 10 min rest, C/5 to 2.7 V, 1 h rest, C/2 "
+                        "CC-CV to 4.2 V and C/20, 1 h rest; sampled every 10 s, 1 mV noise; SPMe (two-phase) data"},
+               initial_soc=1.0, seed=177, period=10, compare=lion.SPMe())
+    # j8: positive particle diffusivity falling 5x towards full lithiation (concentration-dependent), a rate test at 30 degC, DFN
+    p = chen()
+    p.update({"Ambient temperature [K]": 303.15, "Initial temperature [K]": 303.15,
+              "Positive particle diffusivity [m2.s-1]": lambda sto, T: 4e-15 * pybamm.exp(-np.log(10.0) * 0.7 / (1 + pybamm.exp(-(sto - 0.82) / 0.03)))})
+    cccv = ["Rest for 30 minutes", "Charge at 1C until 4.2 V", "Hold at 4.2 V until C/20", "Rest for 30 minutes"]
+    write_case(root, "j8_concentration_dependent_positive_diffusivity_rate_test_30C_dfn", lion.DFN(), p,
+               ["Rest for 10 minutes", "Discharge at C/2 until 2.5 V"] + cccv + ["Discharge at 1C until 2.5 V"] + cccv
+               + ["Discharge at 2C until 2.5 V", "Rest for 30 minutes"],
+               {"effect": "solid_diffusivity", "candidate_model": "dfn",
+                "accept": ["particle diffusiv", "solid diffusiv", "solid-phase diffusiv", "solid-state diffusiv", "positive diffusiv",
+                           "particle diffusion", "solid diffusion", "concentration-dependent"],
+                "ambient_temperature_K": 303.15,
+                "note": "a concentration-dependent positive particle diffusivity: the set's 4e-15 m2/s at low lithiation falling 5x "
+                        "(a logistic step in log D, centre stoichiometry 0.82, width 0.03) towards full lithiation, as NMC's does; "
+                        "the candidate's is constant. Rate-dependent capacity: C/2 5.057 A h (candidate 5.072), 1C 4.821 (4.919), "
+                        "2C 4.123 (4.718). Any particle-diffusivity naming is accepted (a constant factor is the nearest "
+                        "candidate). At 30 degC (isothermal, not recorded), from full: 10 min rest, a rate test of C/2, 1C and 2C "
+                        "discharges to 2.5 V, each followed by 30 min rest, 1C CC-CV to 4.2 V and C/20, 30 min rest (the last "
+                        "only by 30 min rest); sampled every 10 s, 3 mV noise; DFN data and model"},
+               initial_soc=1.0, seed=178, noise=3e-3, period=10, compare=lion.DFN())
+
+
+BATCHES = {"u": batch_u, "v": batch_v, "w": batch_w, "x": batch_x, "y": batch_y, "z": batch_z, "q": batch_q, "r": batch_r, "s": batch_s, "t": batch_t, "p": batch_p, "o": batch_o, "n": batch_n, "m": batch_m, "l": batch_l, "k": batch_k, "j": batch_j}
 
 if __name__ == "__main__":
     root = sys.argv[1] if len(sys.argv) > 1 else "out/unseen-cases"
