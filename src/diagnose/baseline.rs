@@ -45,7 +45,7 @@ pub(super) fn fit_baseline(data: &mut Recording, base: &ParameterSet, options: &
     const ATTEMPTS: usize = 3;
     for attempt in 0..ATTEMPTS {
         let features = Features::of(data);
-        let split = Split::blocks(&data.time, &features.valid, options.blocks, options.holdout_every);
+        let split = Split::blocks(&features.valid, options.blocks, options.holdout_every);
         if split.train_points() <= fitted.len() + 10 || split.holdout_points() == 0 {
             return Err(Error::InvalidSetting {
                 field: "data".into(),

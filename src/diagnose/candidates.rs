@@ -125,7 +125,7 @@ impl Candidate {
             Candidate::Thermal => "thermal (self-heating, temperature dependence)",
             Candidate::RcDynamics => "RC / double-layer dynamics",
             Candidate::Hysteresis => "OCV hysteresis",
-            Candidate::SeiGrowth => "SEI growth (lithium lost as the film grows over the cycles)",
+            Candidate::SeiGrowth => "SEI growth (lithium lost as the film grows, in cycling and in storage)",
             Candidate::LithiumPlating => "lithium plating (lithium lost to irreversible plating during the charges)",
             Candidate::LithiumPlatingPartial => "lithium plating, partially reversible (plated lithium strips back after the charges and part of it turns dead)",
             Candidate::ActiveMaterialGrowth => "progressive loss of active material (stress-driven, over the cycles)",
@@ -168,7 +168,7 @@ impl Candidate {
             Candidate::Thermal => "losses that fall as the cell warms under load (correlated with the recorded temperature rise or with the accumulated I²)",
             Candidate::RcDynamics => "transients of seconds after current steps that settle to an offset under load and decay in rests",
             Candidate::Hysteresis => "an offset at rest whose sign follows the direction of the last current (charge vs discharge), not its size",
-            Candidate::SeiGrowth => "capacity and the end-of-discharge knee drift from cycle to cycle as lithium is consumed (a fixed stoichiometry offset does not drift), with a slowly growing film resistance",
+            Candidate::SeiGrowth => "capacity and the end-of-discharge knee drift from cycle to cycle, or across a storage rest, as lithium is consumed (a fixed stoichiometry offset does not drift), with a slowly growing film resistance",
             Candidate::LithiumPlating => "capacity and the knee drift from cycle to cycle as lithium plates while the negative electrode's potential is low (late in fast charges), with no film resistance; grows steeply with the charge rate and at low temperature",
             Candidate::LithiumPlatingPartial => "as irreversible plating, but the plated lithium strips back in the rest or discharge after each charge (a voltage plateau there), and only the part that turned dead is lost from cycle to cycle",
             Candidate::ActiveMaterialGrowth => "one electrode's OCV features are compressed more from cycle to cycle (its capacity shrinks as it cycles), faster where the current stresses its particles most",
@@ -268,7 +268,8 @@ impl Candidate {
             Candidate::SeriesResistance | Candidate::Kinetics | Candidate::RcDynamics if f.steps.is_empty() && f.distinct_rates < 2 => {
                 Some("needs current steps or loads at two or more rates".into())
             }
-            Candidate::SeiGrowth | Candidate::LithiumPlating | Candidate::LithiumPlatingPartial | Candidate::ActiveMaterialGrowth => ageing::too_few_cycles(f),
+            Candidate::SeiGrowth => ageing::too_short_for_sei(rec, f),
+            Candidate::LithiumPlating | Candidate::LithiumPlatingPartial | Candidate::ActiveMaterialGrowth => ageing::too_few_cycles(f),
             // In one uninterrupted run a leak only rescales the charge passed (a capacity or
             // stoichiometry change); a rest, or charge and discharge both, sets it apart.
             Candidate::Leak if f.rests_after_charge + f.rests_after_discharge == 0 && !(rec.current.iter().any(|i| *i > 0.0) && rec.current.iter().any(|i| *i < 0.0)) => {

@@ -69,7 +69,7 @@ pub struct DiagnoseOptions {
     /// Fit the initial state of charge as a nuisance (unless the user fits the initial
     /// concentrations or starts at rest).
     pub estimate_initial_soc: bool,
-    /// The recording is cut into this many equal time blocks ...
+    /// The recording is cut into this many blocks of consecutive points, equal in number ...
     pub blocks: usize,
     /// ... of which every `holdout_every`-th is held out for validation.
     pub holdout_every: usize,
@@ -79,6 +79,11 @@ pub struct DiagnoseOptions {
     pub fit: FitSettings,
     /// The user's model already fitted on this recording (e.g. by the previous round).
     pub fitted_baseline: Option<FitOutcome>,
+    /// Refit pairs of candidates when no single one explains the recording. Rounds after
+    /// the first do not: their model already holds a named effect, so a pair there would be
+    /// a third and fourth effect (none was named in 71 PyBaMM-made cases), and its search is
+    /// the costliest part of a round (45 pairs of DFN fits, 460 s of blind j8's 807 s).
+    pub pairs: bool,
 }
 
 impl DiagnoseOptions {
@@ -95,6 +100,7 @@ impl DiagnoseOptions {
             margins: Margins::default(),
             fit: FitSettings::default(),
             fitted_baseline: None,
+            pairs: true,
         }
     }
 
@@ -228,7 +234,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
     let (baseline, split, warm, restarts) = match &options.fitted_baseline {
         Some(b) if b.voltage.len() == data.time.len() && b.names.len() == options.fitted.len() => {
             let features = Features::of(&data);
-            (b.clone(), Split::blocks(&data.time, &features.valid, options.blocks, options.holdout_every), options.fitted.clone(), Vec::new())
+            (b.clone(), Split::blocks(&features.valid, options.blocks, options.holdout_every), options.fitted.clone(), Vec::new())
         }
         _ => {
             let b = baseline::fit_baseline(&mut data, base, options, &mut notes)?;
@@ -345,7 +351,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
     // A tie between two singles that both leave far more than the noise may be two effects
     // that each explain part of the recording.
     let far_from_noise = verdict.found() && best_single.is_some_and(|f| f.rmse_holdout > PAIR_TRIGGER * options.margins.size_floor(noise));
-    if matches!(verdict, Verdict::Unexplained) || far_from_noise {
+    if options.pairs && (matches!(verdict, Verdict::Unexplained) || far_from_noise) {
         let beats_single = |pair: &CandidateOutcome| match (best_single, pair.fit.as_ref()) {
             (Some(single), Some(fit)) if far_from_noise => {
                 let (m, vs) = (&options.margins, select::compare(single, fit, n_train));
@@ -431,6 +437,7 @@ pub fn diagnose_rounds(data: &Recording, base: &ParameterSet, options: &Diagnose
         options.spec = next.spec;
         options.fitted = next.fitted;
         options.fitted_baseline = Some(fit);
+        options.pairs = false;
     }
     if rounds.iter().filter(|d| d.found).count() >= 2 {
         let last = rounds.last().expect("two rounds");

@@ -23,18 +23,20 @@ pub struct Split {
 }
 
 impl Split {
-    /// Cuts the recording's time span into `blocks` equal blocks and holds out every block
-    /// `b` with `b % every == every / 2` (e.g. blocks 2 and 6 of 8 for `every = 4`), so
-    /// hold-out points lie early and late in the recording. `valid` marks usable points.
-    pub fn blocks(time: &[f64], valid: &[bool], blocks: usize, every: usize) -> Self {
-        let (t0, t1) = (time[0], time[time.len() - 1]);
-        let span = (t1 - t0).max(f64::MIN_POSITIVE);
+    /// Cuts the recording into `blocks` blocks of consecutive points, equal in number, and
+    /// holds out every block `b` with `b % every == every / 2` (e.g. blocks 2 and 6 of 8 for
+    /// `every = 4`), so hold-out points lie early and late in the recording. Blocks of points,
+    /// not of time: a recording logged sparsely through a long rest (a storage period, a
+    /// cycler that logs on voltage change) would otherwise hold out only the rest.
+    /// `valid` marks usable points.
+    pub fn blocks(valid: &[bool], blocks: usize, every: usize) -> Self {
+        let n = valid.len().max(1);
         let every = every.max(2);
-        let holdout: Vec<bool> = time
+        let holdout: Vec<bool> = valid
             .iter()
-            .zip(valid)
-            .map(|(t, v)| {
-                let b = (((t - t0) / span * blocks as f64) as usize).min(blocks - 1);
+            .enumerate()
+            .map(|(k, v)| {
+                let b = (k * blocks / n).min(blocks - 1);
                 *v && b % every == every / 2
             })
             .collect();
@@ -298,10 +300,9 @@ mod tests {
 
     #[test]
     fn blocks_hold_out_early_and_late_points() {
-        let time: Vec<f64> = (0..80).map(f64::from).collect();
         let mut valid = vec![true; 80];
         valid[21] = false;
-        let s = Split::blocks(&time, &valid, 8, 4);
+        let s = Split::blocks(&valid, 8, 4);
         // Blocks of 10 points; blocks 2 and 6 are held out.
         assert!(s.holdout[20] && s.holdout[29] && s.holdout[60] && !s.holdout[19] && !s.holdout[30]);
         assert!(!s.holdout[21] && s.train[21] == 0.0);

@@ -367,7 +367,7 @@ pub fn markdown(d: &Diagnosis, plots: &[(String, String)]) -> String {
     let _ = writeln!(s, "## Fits\n");
     let _ = writeln!(
         s,
-        "{} usable points: {} for training, {} held out (every {}th of {} equal time blocks). The user's model: {} fitted parameter(s), RMSE {:.2} mV (training {:.2}, hold-out {:.2}).{}\n",
+        "{} usable points: {} for training, {} held out (every {}th of {} blocks of consecutive points). The user's model: {} fitted parameter(s), RMSE {:.2} mV (training {:.2}, hold-out {:.2}).{}\n",
         d.points,
         d.train_points,
         d.holdout_points,
