@@ -75,28 +75,10 @@ pub(super) fn too_few_cycles(f: &Features) -> Option<String> {
 /// Why the recording can show neither cycle ageing nor calendar ageing (SEI growth), or
 /// `None`: SEI grows at rest too, so a storage rest of at least [`MIN_STORAGE_S`] with a load
 /// after it (the capacity check that shows the lithium lost) identifies it without cycles.
-pub(super) fn too_short_for_sei(rec: &Recording, f: &Features) -> Option<String> {
+pub(super) fn too_short_for_sei(f: &Features) -> Option<String> {
     let why = too_few_cycles(f)?;
-    let storage = longest_rest_before_load(rec);
+    let storage = f.longest_rest_before_load;
     (storage < MIN_STORAGE_S).then(|| format!("{why}, or a storage rest of {:.0} h or more with a load after it (the longest here is {:.1} h)", MIN_STORAGE_S / 3600.0, storage / 3600.0))
-}
-
-/// The longest rest (s) that a load follows: |current| at most 1 % of the largest.
-fn longest_rest_before_load(rec: &Recording) -> f64 {
-    let largest = rec.current.iter().fold(0.0f64, |m, i| m.max(i.abs()));
-    let resting = |k: usize| rec.current[k].abs() <= 0.01 * largest;
-    let (mut longest, mut start) = (0.0f64, None);
-    for k in 0..rec.time.len() {
-        match (resting(k), start) {
-            (true, None) => start = Some(rec.time[k]),
-            (false, Some(t0)) => {
-                longest = longest.max(rec.time[k] - t0);
-                start = None;
-            }
-            _ => {}
-        }
-    }
-    longest
 }
 
 /// The share of electrode `e`'s active material (-) that stress-driven LAM with plain

@@ -268,7 +268,7 @@ impl Candidate {
             Candidate::SeriesResistance | Candidate::Kinetics | Candidate::RcDynamics if f.steps.is_empty() && f.distinct_rates < 2 => {
                 Some("needs current steps or loads at two or more rates".into())
             }
-            Candidate::SeiGrowth => ageing::too_short_for_sei(rec, f),
+            Candidate::SeiGrowth => ageing::too_short_for_sei(f),
             Candidate::LithiumPlating | Candidate::LithiumPlatingPartial | Candidate::ActiveMaterialGrowth => ageing::too_few_cycles(f),
             // In one uninterrupted run a leak only rescales the charge passed (a capacity or
             // stoichiometry change); a rest, or charge and discharge both, sets it apart.
@@ -610,6 +610,36 @@ mod tests {
         assert!(name(-0.05, -0.052).contains("reading 5.1 % high"));
         assert!(name(0.12, 0.02).contains("negative electrode (12 %"));
         assert!(name(0.001, 0.001).contains("positive electrode (0 %"));
+    }
+
+    /// SEI growth needs 3 cycles, or a storage rest of a day with a load after it (the
+    /// capacity check after a calendar-ageing storage).
+    #[test]
+    fn sei_growth_needs_cycles_or_a_day_of_storage_before_a_load() {
+        let q = crate::params::chen2020().cell.nominal_capacity;
+        let checks_around = |rest_h: usize| {
+            // A 1 h discharge, a rest of `rest_h` hours logged every 30 min, a 1 h discharge.
+            let (mut time, mut current) = (Vec::new(), Vec::new());
+            let mut t = 0.0;
+            let mut push = |dt: f64, i: f64, n: usize| {
+                for _ in 0..n {
+                    time.push(t);
+                    current.push(i);
+                    t += dt;
+                }
+            };
+            push(60.0, 0.5 * q, 60);
+            push(1800.0, 0.0, 2 * rest_h);
+            push(60.0, 0.5 * q, 60);
+            let n = time.len();
+            Recording { time, current, voltage: vec![3.7; n], temperature: None }
+        };
+        let reason = |r: &Recording| Candidate::SeiGrowth.not_identifiable(r, &Features::of(r), q);
+        assert_eq!(reason(&checks_around(30)), None);
+        assert!(reason(&checks_around(10)).is_some_and(|why| why.contains("storage rest of 24 h")), "{:?}", reason(&checks_around(10)));
+        // Plating needs the cycles whatever the storage.
+        let r = checks_around(30);
+        assert!(Candidate::LithiumPlating.not_identifiable(&r, &Features::of(&r), q).is_some());
     }
 
     /// A leak only rescales the charge of a run in one direction; a rest or a return

@@ -35,16 +35,20 @@ pub struct Features {
     pub rests_after_discharge: usize,
     /// Distinct load levels: |current| clusters more than 30 % apart, each held for 60 s.
     pub distinct_rates: usize,
+    /// The longest rest (s) that a load follows (|current| at most 1 % of the largest).
+    pub longest_rest_before_load: f64,
 }
 
-/// Rests of at least `min_rest` seconds after charge and after discharge, and the number of
-/// distinct |current| levels (more than 30 % apart) held for at least `min_rest` seconds.
-fn rests_and_rates(rec: &Recording, min_rest: f64) -> (usize, usize, usize) {
+/// Rests of at least `min_rest` seconds after charge and after discharge, the number of
+/// distinct |current| levels (more than 30 % apart) held for at least `min_rest` seconds, and
+/// the longest rest (s) that a load follows.
+fn rests_and_rates(rec: &Recording, min_rest: f64) -> (usize, usize, usize, f64) {
     let (t, i) = (&rec.time, &rec.current);
     let largest = i.iter().fold(0.0f64, |m, v| m.max(v.abs()));
     let floor = 0.01 * largest.max(1e-12);
     let (mut after_charge, mut after_discharge) = (0, 0);
     let mut last_sign = 0.0;
+    let mut longest_rest = 0.0f64;
     let mut k = 0;
     // Time held at each |current| level (A, s).
     let mut levels: Vec<(f64, f64)> = Vec::new();
@@ -56,6 +60,9 @@ fn rests_and_rates(rec: &Recording, min_rest: f64) -> (usize, usize, usize) {
         }
         let span = t[k] - t[start];
         if resting {
+            if k + 1 < t.len() {
+                longest_rest = longest_rest.max(t[k + 1] - t[start]);
+            }
             if span >= min_rest {
                 if last_sign > 0.0 { after_discharge += 1 } else if last_sign < 0.0 { after_charge += 1 }
             }
@@ -72,7 +79,7 @@ fn rests_and_rates(rec: &Recording, min_rest: f64) -> (usize, usize, usize) {
         }
         k += 1;
     }
-    (after_charge, after_discharge, levels.iter().filter(|(_, held)| *held >= min_rest).count())
+    (after_charge, after_discharge, levels.iter().filter(|(_, held)| *held >= min_rest).count(), longest_rest)
 }
 
 impl Features {
@@ -107,8 +114,8 @@ impl Features {
             }
         }
         let temperature_rise = rec.temperature.as_ref().map(|temp| temp.iter().map(|v| v - temp[0]).collect());
-        let (rests_after_charge, rests_after_discharge, distinct_rates) = rests_and_rates(rec, 60.0);
-        Self { valid, capacity, steps, since_step, temperature_rise, rests_after_charge, rests_after_discharge, distinct_rates }
+        let (rests_after_charge, rests_after_discharge, distinct_rates, longest_rest_before_load) = rests_and_rates(rec, 60.0);
+        Self { valid, capacity, steps, since_step, temperature_rise, rests_after_charge, rests_after_discharge, distinct_rates, longest_rest_before_load }
     }
 
     /// First-order low-pass filter of `signal` with time constant `tau` (s), exact for a
