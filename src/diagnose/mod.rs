@@ -119,6 +119,22 @@ impl DiagnoseOptions {
     }
 }
 
+/// What a round's candidates are fitted against: the user's model of the round, fitted.
+pub(super) struct Round<'a> {
+    pub options: &'a DiagnoseOptions,
+    pub base: &'a ParameterSet,
+    pub data: &'a Recording,
+    pub split: &'a Split,
+    pub baseline: &'a FitOutcome,
+    pub fitted_paths: &'a [String],
+    /// The user's fitted parameters at their fitted values, and the points their fit
+    /// started from.
+    pub warm: &'a [FitParameter],
+    pub restarts: &'a [Vec<f64>],
+    pub noise: f64,
+    pub load: Load,
+}
+
 /// One candidate: its fit, comparison and standing.
 #[derive(Clone, Debug, Serialize)]
 pub struct CandidateOutcome {
@@ -160,7 +176,7 @@ pub struct NextModel {
 pub fn describe(spec: &ModelSpec) -> String {
     let s = spec.submodels;
     let mut out = spec.kind.to_string();
-    for (on, name) in [(s.contact_resistance, "contact resistance"), (s.thermal, "thermal"), (s.rc, "RC"), (s.hysteresis, "hysteresis")] {
+    for (on, name) in [(s.contact_resistance, "contact resistance"), (s.thermal, "thermal"), (s.rc, "RC"), (s.hysteresis, "hysteresis"), (s.ocv_correction, "OCV correction")] {
         if on {
             out.push_str(" + ");
             out.push_str(name);
@@ -271,58 +287,13 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
             (c, aug)
         })
         .collect();
+    let round = Round { options, base, data: &data, split: &split, baseline: &baseline, fitted_paths: &fitted_paths, warm: &warm, restarts: &restarts, noise, load };
     let progress = crate::progress::bar("diagnose", plan.len() as u64, "{msg} {bar:30} {pos}/{len} [{elapsed}]");
     progress.set_message(format!("refitting candidates on {}", describe(&options.spec)));
     let mut outcomes: Vec<CandidateOutcome> = plan
         .into_par_iter()
         .map(|(c, aug)| {
-            let mut out = CandidateOutcome {
-                candidate: c,
-                partner: None,
-                name: c.name().into(),
-                class: c.class(),
-                signature: c.signature().into(),
-                plausible_range: c.plausible_range().into(),
-                change: aug.as_ref().map(|a| a.change.clone()).unwrap_or_default(),
-                fit: None,
-                note: None,
-                comparison: Comparison::default(),
-                clears_margins: false,
-                implausible: None,
-                named: false,
-                next: None,
-            };
-            match aug {
-                Err(why) => out.note = Some(why),
-                Ok(aug) => {
-                    let (fit, note, next) = refit_candidate(c, aug, &warm, Some(&restarts), options, &data, &split);
-                    out.note = note;
-                    out.next = next;
-                    if let Some(f) = fit {
-                        let m = &options.margins;
-                        out.comparison = select::compare(&baseline, &f, n_train);
-                        let cmp = &out.comparison;
-                        // ΔBIC and the Laplace evidence must agree.
-                        out.clears_margins = cmp.delta_bic > m.min_delta_bic
-                            && cmp.ln_bayes_factor > 0.0
-                            && cmp.holdout_gain >= m.min_holdout_gain
-                            && cmp.explained >= m.size_floor(noise);
-                        // Plausibility of the candidate's own values, not the baseline's.
-                        let (names, values): (Vec<String>, Vec<f64>) =
-                            f.names.iter().zip(&f.values).filter(|(n, _)| !baseline.names.contains(n)).map(|(n, v)| (n.clone(), *v)).unzip();
-                        // A candidate that makes another's structural change and keeps the
-                        // set's values is that other candidate: not named twice.
-                        let alias = c.structural_alias(options.spec.kind).filter(|_| keeps_set_values(&f, &names, base));
-                        out.implausible = c
-                            .implausible(&names, &values, base, &load)
-                            .or_else(|| c.unresolved(&names, &values, &data))
-                            .or_else(|| alias.map(|a| format!("its values are the set's: it is {} alone", a.name())));
-                        out.named = out.clears_margins && out.implausible.is_none();
-                        out.name = c.named_by_values(&f.names, &f.values, base, &load);
-                        out.fit = Some(f);
-                    }
-                }
-            }
+            let out = refit_candidate::judge(c, aug, &round);
             progress.inc(1);
             out
         })
@@ -346,17 +317,13 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
     // No single effect: two may be hiding each other. One effect named that leaves far more
     // than the noise on held-out points may be standing in for two: a pair that beats it by
     // the same margins (against it, not the user's model) replaces it.
-    let round = pairs::Round { options, base, data: &data, split: &split, baseline: &baseline, fitted_paths: &fitted_paths, noise, load };
     let best_single = outcomes.first().filter(|c| c.named).and_then(|c| c.fit.as_ref());
     // A tie between two singles that both leave far more than the noise may be two effects
     // that each explain part of the recording.
     let far_from_noise = verdict.found() && best_single.is_some_and(|f| f.rmse_holdout > PAIR_TRIGGER * options.margins.size_floor(noise));
     if options.pairs && (matches!(verdict, Verdict::Unexplained) || far_from_noise) {
         let beats_single = |pair: &CandidateOutcome| match (best_single, pair.fit.as_ref()) {
-            (Some(single), Some(fit)) if far_from_noise => {
-                let (m, vs) = (&options.margins, select::compare(single, fit, n_train));
-                vs.delta_bic > m.min_delta_bic && vs.ln_bayes_factor > 0.0 && vs.holdout_gain >= m.min_holdout_gain && vs.explained >= m.size_floor(noise)
-            }
+            (Some(single), Some(fit)) if far_from_noise => options.margins.cleared_by(&select::compare(single, fit, n_train), noise),
             _ => true,
         };
         // Pairs that fit alike are a tie, as singles are: one pair's parameter may stand in

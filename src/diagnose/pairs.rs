@@ -10,22 +10,8 @@
 
 use rayon::prelude::*;
 
-use super::{Candidate, CandidateOutcome, DiagnoseOptions, FitOutcome, Split, refit_candidate, select};
+use super::{Candidate, CandidateOutcome, FitOutcome, Round, refit_candidate, select};
 use crate::problem::least_squares::LmSettings;
-use crate::data::Recording;
-use crate::params::ParameterSet;
-
-/// What the pair search needs from the round.
-pub(super) struct Round<'a> {
-    pub options: &'a DiagnoseOptions,
-    pub base: &'a ParameterSet,
-    pub data: &'a Recording,
-    pub split: &'a Split,
-    pub baseline: &'a FitOutcome,
-    pub fitted_paths: &'a [String],
-    pub noise: f64,
-    pub load: super::Load,
-}
 
 /// Every named pair of `singles` (refitted candidates), each as one candidate outcome named
 /// "A together with B" (its best fit when it was fitted twice); empty when no pair clears
@@ -164,15 +150,11 @@ fn fit_pair(a: &CandidateOutcome, b: &CandidateOutcome, round: &Round, start: Pa
         }
         PairStart::Every => Some(&[]),
     };
-    let (fit, _, next) = refit_candidate(b.candidate, aug, &warm, restarts, &options, round.data, round.split);
+    let (fit, _, next) = refit_candidate(aug, &warm, restarts, &options, round.data, round.split);
     let mut fit = fit?;
     fit.parameters += structural_a;
     let comparison = select::compare(round.baseline, &fit, n_train);
-    let m = &round.options.margins;
-    let clears = comparison.delta_bic > m.min_delta_bic
-        && comparison.ln_bayes_factor > 0.0
-        && comparison.holdout_gain >= m.min_holdout_gain
-        && comparison.explained >= m.size_floor(round.noise);
+    let clears = round.options.margins.cleared_by(&comparison, round.noise);
     let (names, values): (Vec<String>, Vec<f64>) =
         fit.names.iter().zip(&fit.values).filter(|(n, _)| !round.baseline.names.contains(n)).map(|(n, v)| (n.clone(), *v)).unzip();
     // Twice the parameters: each must also be determined by the recording.

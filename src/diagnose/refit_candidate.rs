@@ -1,6 +1,7 @@
-//! Fitting one candidate on top of the previous model: where its fits start.
+//! Fitting one candidate on top of the previous model: where its fits start, and how it
+//! stands against the user's model.
 
-use super::{Candidate, DiagnoseOptions, NextModel, candidates, describe, refit};
+use super::{Candidate, CandidateOutcome, Comparison, DiagnoseOptions, NextModel, Round, candidates, describe, keeps_set_values, refit, select};
 use crate::data::Recording;
 use crate::params::set_initial_soc;
 use crate::problem::fitting::{FitParameter, INITIAL_SOC};
@@ -11,7 +12,6 @@ use refit::{FitOutcome, Split};
 /// started from, or `None` to fit from the first start only (pairs: a budget, as a pair that
 /// needs restarts, ending on a bound, is not plausible anyway).
 pub(super) fn refit_candidate(
-    c: Candidate,
     aug: candidates::Augmentation,
     warm: &[FitParameter],
     restarts: Option<&[Vec<f64>]>,
@@ -20,8 +20,10 @@ pub(super) fn refit_candidate(
     split: &Split,
 ) -> (Option<FitOutcome>, Option<String>, Option<NextModel>) {
     let mut params: Vec<FitParameter> = warm.iter().filter(|p| !aug.replaces.contains(&p.path)).cloned().collect();
-    if c == Candidate::LithiumInventory {
-        // Start the free concentrations at the baseline's fitted initial state.
+    // A candidate that frees the initial concentrations in place of the initial state of
+    // charge starts them at the baseline's fitted initial state.
+    let frees_window = aug.replaces.iter().any(|r| r == INITIAL_SOC);
+    if frees_window {
         let mut p = aug.base.clone();
         if let Some(soc) = warm.iter().find(|p| p.path == INITIAL_SOC) {
             let _ = set_initial_soc(&mut p, soc.initial);
@@ -40,7 +42,7 @@ pub(super) fn refit_candidate(
         .iter()
         .map(|p| match warm.iter().find(|w| w.path == p.path) {
             Some(w) => w.initial,
-            None if c == Candidate::LithiumInventory => p.initial,
+            None if frees_window => p.initial,
             None => aug.base.get(&p.path).unwrap_or(p.initial).clamp(p.lower, p.upper),
         })
         .collect();
@@ -101,3 +103,50 @@ pub(super) fn refit_candidate(
     }
 }
 
+
+/// One candidate refitted (when `aug` is its augmentation; `Err` says why it was not) and
+/// judged against the round's user's model: the margins, plausible values, its name by them.
+pub(super) fn judge(c: Candidate, aug: Result<candidates::Augmentation, String>, round: &Round) -> CandidateOutcome {
+    let mut out = CandidateOutcome {
+        candidate: c,
+        partner: None,
+        name: c.name().into(),
+        class: c.class(),
+        signature: c.signature().into(),
+        plausible_range: c.plausible_range().into(),
+        change: aug.as_ref().map(|a| a.change.clone()).unwrap_or_default(),
+        fit: None,
+        note: None,
+        comparison: Comparison::default(),
+        clears_margins: false,
+        implausible: None,
+        named: false,
+        next: None,
+    };
+    let aug = match aug {
+        Err(why) => {
+            out.note = Some(why);
+            return out;
+        }
+        Ok(aug) => aug,
+    };
+    let (options, base, baseline) = (round.options, round.base, round.baseline);
+    let (fit, note, next) = refit_candidate(aug, round.warm, Some(round.restarts), options, round.data, round.split);
+    (out.note, out.next) = (note, next);
+    let Some(f) = fit else { return out };
+    out.comparison = select::compare(baseline, &f, round.split.train_points());
+    out.clears_margins = options.margins.cleared_by(&out.comparison, round.noise);
+    // Plausibility of the candidate's own values, not the baseline's.
+    let (names, values): (Vec<String>, Vec<f64>) = f.names.iter().zip(&f.values).filter(|(n, _)| !baseline.names.contains(n)).map(|(n, v)| (n.clone(), *v)).unzip();
+    // A candidate that makes another's structural change and keeps the set's values is that
+    // other candidate: not named twice.
+    let alias = c.structural_alias(options.spec.kind).filter(|_| keeps_set_values(&f, &names, base));
+    out.implausible = c
+        .implausible(&names, &values, base, &round.load)
+        .or_else(|| c.unresolved(&names, &values, round.data))
+        .or_else(|| alias.map(|a| format!("its values are the set's: it is {} alone", a.name())));
+    out.named = out.clears_margins && out.implausible.is_none();
+    out.name = c.named_by_values(&f.names, &f.values, base, &round.load);
+    out.fit = Some(f);
+    out
+}

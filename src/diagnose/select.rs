@@ -72,6 +72,12 @@ impl Default for Margins {
 }
 
 impl Margins {
+    /// Whether `cmp` clears every margin at noise level `noise` (V): ΔBIC and the Laplace
+    /// evidence agree, the hold-out cut and the RMS removed are large enough.
+    pub fn cleared_by(&self, cmp: &Comparison, noise: f64) -> bool {
+        cmp.delta_bic > self.min_delta_bic && cmp.ln_bayes_factor > 0.0 && cmp.holdout_gain >= self.min_holdout_gain && cmp.explained >= self.size_floor(noise)
+    }
+
     /// The least RMS (V) a named effect must remove at noise level `noise` (V).
     pub fn size_floor(&self, noise: f64) -> f64 {
         (self.noise_multiple * noise).max(self.voltage_floor)

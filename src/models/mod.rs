@@ -79,6 +79,9 @@ pub struct Submodels {
     pub leak: bool,
     /// A constant `cell.voltage_offset` added to the terminal voltage; no extra state.
     pub voltage_offset: bool,
+    /// The correction `cell.ocv_correction` to the open-circuit voltage, against the charge
+    /// passed: one extra state (that charge).
+    pub ocv_correction: bool,
     /// SEI growth on the negative electrode (`sei` parameters): one extra state in the SPM,
     /// one per negative x volume in the SPMe, two per negative x volume in the DFN (with the
     /// total interfacial current density).
@@ -118,7 +121,7 @@ impl Submodels {
 
     /// Whether a submodel that wraps the model in [`submodels::Augmented`] is on.
     pub fn augments(&self) -> bool {
-        self.rc || self.hysteresis || self.leak || self.voltage_offset
+        self.rc || self.hysteresis || self.leak || self.voltage_offset || self.ocv_correction
     }
 }
 

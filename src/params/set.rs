@@ -3,6 +3,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::function::Function1D;
+use super::ocv_correction::OcvCorrection;
 use super::check::{check, non_negative, open_unit, positive, temperature};
 use crate::error::Error;
 
@@ -211,6 +212,10 @@ pub struct Cell {
     /// submodel is on.
     #[serde(default)]
     pub voltage_offset: f64,
+    /// Correction to the open-circuit voltage against the charge passed, used when the
+    /// OCV-correction submodel is on (no points by default).
+    #[serde(default, skip_serializing_if = "OcvCorrection::is_empty")]
+    pub ocv_correction: OcvCorrection,
 }
 
 /// Default RC capacitance (F): a 10 s time constant at 10 mOhm.
@@ -331,6 +336,7 @@ impl ParameterSet {
         check("cell.hysteresis_initial", c.hysteresis_initial, c.hysteresis_initial.abs() <= 1.0, "must lie in [-1, 1]")?;
         check("cell.leakage_current", c.leakage_current, c.leakage_current.is_finite(), "must be a finite current (A)")?;
         check("cell.voltage_offset", c.voltage_offset, c.voltage_offset.is_finite(), "must be a finite voltage (V)")?;
+        c.ocv_correction.validate()?;
         let t = &self.thermal;
         temperature("thermal.reference_temperature", t.reference_temperature)?;
         temperature("thermal.ambient_temperature", t.ambient_temperature)?;
@@ -442,7 +448,10 @@ impl ParameterSet {
                 "hysteresis_initial" => &mut self.cell.hysteresis_initial,
                 "leakage_current" => &mut self.cell.leakage_current,
                 "voltage_offset" => &mut self.cell.voltage_offset,
-                _ => return Err(unknown()),
+                _ => match name.strip_prefix("ocv_correction.") {
+                    Some(k) => self.cell.ocv_correction.voltage_mut(k).ok_or_else(unknown)?,
+                    None => return Err(unknown()),
+                },
             },
             "thermal" => match name {
                 "reference_temperature" => &mut self.thermal.reference_temperature,

@@ -17,12 +17,18 @@
 //!   short or a current sensor's offset. Every other submodel sees `I + I_L`.
 //! - Voltage offset (`cell.voltage_offset` `V_0` (V)): the terminal voltage gains `V_0`, e.g.
 //!   the voltage channel's calibration or an OCP shifted against the set's.
+//! - OCV correction (`cell.ocv_correction`, see [`crate::params::OcvCorrection`]): the state
+//!   `q` (A h) counts the charge the cell carries, `dq/dt = I / 3600`, and the terminal
+//!   voltage gains `ΔV(q)`: an open-circuit voltage whose shape differs from the set's.
 
 use crate::models::{Electrochem, Model, PhysicsModel, Submodels};
 use crate::params::ParameterSet;
 
 /// Typical size of the RC voltage (V), for tolerances and difference steps.
 const RC_SCALE: f64 = 0.01;
+
+/// Seconds per hour: the charge state counts ampere-hours.
+const SECONDS_PER_HOUR: f64 = 3600.0;
 
 /// A physics model with RC and/or hysteresis states appended.
 pub struct Augmented {
@@ -31,6 +37,8 @@ pub struct Augmented {
     rc: Option<usize>,
     /// Index of the hysteresis state, when on.
     hysteresis: Option<usize>,
+    /// Index of the charge state (A h) of the OCV correction, when on.
+    charge: Option<usize>,
     /// Whether the leak is on.
     leak: bool,
     /// Whether the voltage offset is on.
@@ -58,7 +66,8 @@ impl Augmented {
         };
         let rc = push(submodels.rc, RC_SCALE);
         let hysteresis = push(submodels.hysteresis, 1.0);
-        Self { base, rc, hysteresis, leak: submodels.leak, offset: submodels.voltage_offset, n_base, mass, scale }
+        let charge = push(submodels.ocv_correction, base.electrochem().params.cell.nominal_capacity);
+        Self { base, rc, hysteresis, charge, leak: submodels.leak, offset: submodels.voltage_offset, n_base, mass, scale }
     }
 
     /// The wrapped model.
@@ -84,6 +93,11 @@ impl Augmented {
     pub fn hysteresis_state(&self, y: &[f64]) -> f64 {
         self.hysteresis.map_or(0.0, |k| y[k])
     }
+
+    /// The OCV correction (V) at the charge passed, zero when it is off.
+    pub fn ocv_correction(&self, y: &[f64]) -> f64 {
+        self.charge.map_or(0.0, |k| self.cell().ocv_correction.at(y[k]))
+    }
 }
 
 impl Model for Augmented {
@@ -100,6 +114,9 @@ impl Model for Augmented {
         }
         if self.offset {
             name.push_str("+offset");
+        }
+        if self.charge.is_some() {
+            name.push_str("+OCV correction");
         }
         name
     }
@@ -118,7 +135,7 @@ impl Model for Augmented {
 
     fn jacobian_pattern(&self) -> Vec<(usize, usize)> {
         let mut p = self.base.jacobian_pattern();
-        p.extend(self.rc.iter().chain(&self.hysteresis).map(|&k| (k, k)));
+        p.extend(self.rc.iter().chain(&self.hysteresis).chain(&self.charge).map(|&k| (k, k)));
         p
     }
 
@@ -129,6 +146,9 @@ impl Model for Augmented {
         }
         if self.hysteresis.is_some() {
             y.push(self.cell().hysteresis_initial);
+        }
+        if self.charge.is_some() {
+            y.push(0.0);
         }
         y
     }
@@ -143,8 +163,11 @@ impl Model for Augmented {
             out[k] = if r > 0.0 { (current - y[k] / r) / c } else { -y[k] };
         }
         if let Some(k) = self.hysteresis {
-            let rate = cell.hysteresis_rate / (3600.0 * cell.nominal_capacity);
+            let rate = cell.hysteresis_rate / (SECONDS_PER_HOUR * cell.nominal_capacity);
             out[k] = rate * (-current - current.abs() * y[k]);
+        }
+        if let Some(k) = self.charge {
+            out[k] = current / SECONDS_PER_HOUR;
         }
     }
 
@@ -152,6 +175,7 @@ impl Model for Augmented {
         self.base.voltage(&y[..self.n_base], self.inside(current)) - self.rc_voltage(y)
             + self.cell().hysteresis_voltage * self.hysteresis_state(y)
             + if self.offset { self.cell().voltage_offset } else { 0.0 }
+            + self.ocv_correction(y)
     }
 
     fn temperature(&self, y: &[f64]) -> f64 {
@@ -331,5 +355,22 @@ mod tests {
         assert_eq!(y[y.len() - 1], 0.5);
         assert!((built.model.voltage(&y, 0.0) - v0 - 0.005).abs() < 1e-12);
         assert_eq!(builder.rebuild_count(), 1);
+    }
+
+    /// The OCV correction adds `ΔV(q)` at the charge passed, `q = I t / 3600` under a
+    /// constant current (held through the rest), and changes nothing else.
+    #[test]
+    fn an_ocv_correction_follows_the_charge_passed() {
+        let mut p = crate::params::chen2020();
+        p.cell.ocv_correction = crate::params::OcvCorrection { charge: vec![0.0, 1.0, 2.0], voltage: vec![0.0, 0.03, -0.01] };
+        let t: Vec<f64> = (0..=12).map(|k| 150.0 * f64::from(k)).collect();
+        let protocol = Protocol { steps: vec![Step::Current { current: 5.0, duration: 1200.0, until_voltage: None }, Step::Rest { duration: 600.0 }] };
+        let corrected = run(Submodels { ocv_correction: true, ..Default::default() }, &p, &protocol, t.clone());
+        let plain = run(Submodels::default(), &p, &protocol, t.clone());
+        for k in 0..t.len() {
+            let q = 5.0 * t[k].min(1200.0) / 3600.0;
+            let dv = if q <= 1.0 { 0.03 * q } else { 0.03 - 0.04 * (q - 1.0) };
+            assert!((corrected[k] - plain[k] - dv).abs() < 1e-9, "t = {}: {} vs {}", t[k], corrected[k] - plain[k], dv);
+        }
     }
 }
