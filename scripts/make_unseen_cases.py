@@ -901,6 +901,24 @@ def batch_o(root):
                initial_soc=0.6, seed=118, period=2, compare=lion.SPM())
 
 
+class CurrentTrace:
+    """A current at 1 s points (A, discharge positive) built from linear ramps and holds with
+    optional Gaussian wobble, starting at rest."""
+
+    def __init__(self, rng):
+        self.rng = rng
+        self.cur = [0.0]
+
+    def ramp(self, to, seconds):
+        start = self.cur[-1]
+        for k in range(1, seconds + 1):
+            self.cur.append(start + (to - start) * k / seconds)
+
+    def hold(self, level, seconds, wobble=0.0):
+        for _ in range(seconds):
+            self.cur.append(level + (self.rng.normal(0.0, wobble) if wobble else 0.0))
+
+
 def hill_regen_drive(seed, capacity_A_h=5.0):
     """A regenerative-braking-heavy drive as a 1 s cell current (A, discharge positive), no
     current step anywhere (ramps between 1 s points): a 10 min climb (accelerations to 2-3C,
@@ -910,16 +928,8 @@ def hill_regen_drive(seed, capacity_A_h=5.0):
     braking to 1.5C charge)."""
     rng = np.random.default_rng(seed)
     c = capacity_A_h
-    cur = [0.0]
-
-    def ramp(to, seconds):
-        start = cur[-1]
-        for k in range(1, seconds + 1):
-            cur.append(start + (to - start) * k / seconds)
-
-    def hold(level, seconds, wobble=0.0):
-        for _ in range(seconds):
-            cur.append(level + (rng.normal(0.0, wobble) if wobble else 0.0))
+    trace = CurrentTrace(rng)
+    cur, ramp, hold = trace.cur, trace.ramp, trace.hold
 
     while len(cur) < 600:
         ramp(rng.uniform(2.0, 3.0) * c, int(rng.integers(5, 9)))
@@ -945,7 +955,7 @@ def hill_regen_drive(seed, capacity_A_h=5.0):
         peak = -1.5 * c
         ramp(peak, int(rng.integers(3, 5)))
         ramp(0.02 * c, int(rng.integers(2, 5)))
-    cur = cur[:1800] + [0.0] * 2
+    trace.cur = cur = cur[:1800] + [0.0] * 2
     ramp(0.0, 1)
     i = np.array(cur)
     i[-3:] = 0.0
@@ -1688,16 +1698,8 @@ def highway_drive(seed, capacity_A_h=5.0, laps=3):
     regeneration to 1-2C charge (4-8 s), and a slow-down to 0.3C with a regenerative stop-and-go."""
     rng = np.random.default_rng(seed)
     c = capacity_A_h
-    cur = [0.0]
-
-    def ramp(to, seconds):
-        start = cur[-1]
-        for k in range(1, seconds + 1):
-            cur.append(start + (to - start) * k / seconds)
-
-    def hold(level, seconds, wobble=0.0):
-        for _ in range(seconds):
-            cur.append(level + (rng.normal(0.0, wobble) if wobble else 0.0))
+    trace = CurrentTrace(rng)
+    cur, ramp, hold = trace.cur, trace.ramp, trace.hold
 
     for lap in range(laps):
         end = 600 * (lap + 1)
@@ -1717,7 +1719,7 @@ def highway_drive(seed, capacity_A_h=5.0, laps=3):
         ramp(0.3 * c, 5)
         while len(cur) < end:
             hold(0.3 * c, 1, 0.03 * c)
-    cur = cur[:600 * laps]
+    trace.cur = cur = cur[:600 * laps]
     ramp(0.0, 3)
     i = np.array(cur)
     return np.column_stack([np.arange(len(i), dtype=float), i])
