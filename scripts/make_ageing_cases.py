@@ -38,6 +38,24 @@ PERIOD = 30
 
 
 DFN_CYCLES = 4
+
+
+def with_plating(factor):
+    """Chen 2020 with OKane2022's plating parameters, its rate constant times `factor`."""
+    okane = pybamm.ParameterValues("OKane2022")
+    p = chen()
+    p.update({k: okane[k] for k in PLATING_KEYS}, check_already_exists=False)
+    return scaled(p, "Lithium plating kinetic rate constant [m.s-1]", factor)
+
+
+def with_negative_lam(term):
+    """Chen 2020 with OKane2022's mechanics and the negative LAM proportional term `term` (1/s)."""
+    okane = pybamm.ParameterValues("OKane2022")
+    p = chen()
+    p.update({f"{d} electrode {k}": okane[f"{d} electrode {k}"] for d in ["Negative", "Positive"] for k in MECHANICS_KEYS},
+             check_already_exists=False)
+    p.update({"Negative electrode LAM constant proportional term [s-1]": term})
+    return p
 DFN_PERIOD = 60
 
 
@@ -57,20 +75,14 @@ def dfn_cases(root):
                {"effect": "none", "candidate_model": "dfn", "accept": ["no missing physics"],
                 "note": "no ageing, the same 4 CC-CV cycles as g6; DFN data and model; 60 s sampling"},
                seed=207, period=DFN_PERIOD, compare=lion.DFN())
-    okane = pybamm.ParameterValues("OKane2022")
-    p = chen()
-    p.update({k: okane[k] for k in PLATING_KEYS}, check_already_exists=False)
-    p = scaled(p, "Lithium plating kinetic rate constant [m.s-1]", 0.1)
+    p = with_plating(0.1)
     fast = [s.replace("Charge at 1C", "Charge at 1.5C") for s in CYCLE] * DFN_CYCLES
     write_case(root, "g8_plating_4_cycles_dfn", lion.DFN({"lithium plating": "irreversible"}), p, fast,
                {"effect": "lithium_plating", "candidate_model": "dfn", "accept": ["plating"],
                 "note": "irreversible lithium plating (OKane2022's plating parameters, rate constant x0.1 = 1e-10 m/s); 4 cycles of "
                         "1C to 3.0 V, 10 min rest, 1.5C to 4.1 V, hold to C/20, 10 min rest; DFN data and model; 60 s sampling"},
                seed=208, period=DFN_PERIOD, compare=lion.DFN())
-    p = chen()
-    p.update({f"{d} electrode {k}": okane[f"{d} electrode {k}"] for d in ["Negative", "Positive"] for k in MECHANICS_KEYS},
-             check_already_exists=False)
-    p.update({"Negative electrode LAM constant proportional term [s-1]": 30 * 1e-2 / 3600})
+    p = with_negative_lam(30 * 1e-2 / 3600)
     lam = lion.DFN({"loss of active material": ("stress-driven", "none"), "stress-induced diffusion": "false"})
     write_case(root, "g9_lam_growth_4_cycles_dfn", lam, p, steps,
                {"effect": "active_material_loss", "candidate_model": "dfn", "accept": ["active material"],
@@ -99,20 +111,14 @@ def main(root):
                 "note": "4 % less lithium in the negative electrode from the start, no ageing (a fixed stoichiometry offset); "
                         "the same 12 CC-CV cycles; 30 s sampling"},
                seed=203, period=PERIOD, compare=lion.SPM())
-    okane = pybamm.ParameterValues("OKane2022")
-    p = chen()
-    p.update({f"{d} electrode {k}": okane[f"{d} electrode {k}"] for d in ["Negative", "Positive"] for k in MECHANICS_KEYS},
-             check_already_exists=False)
-    p.update({"Negative electrode LAM constant proportional term [s-1]": 10 * 1e-2 / 3600})
+    p = with_negative_lam(10 * 1e-2 / 3600)
     lam = lion.SPM({"loss of active material": ("stress-driven", "none"), "stress-induced diffusion": "false"})
     write_case(root, "g4_lam_growth_12_cycles_spm", lam, p, steps,
                {"effect": "active_material_loss", "candidate_model": "spm", "accept": ["active material"],
                 "note": "stress-driven loss of active material in the negative electrode, plain particle diffusion (OKane2022's "
                         "mechanical constants, LAM proportional term 10 x 1e-2 per hour), the same 12 CC-CV cycles; 30 s sampling"},
                seed=204, period=PERIOD, compare=lion.SPM())
-    p = chen()
-    p.update({k: okane[k] for k in PLATING_KEYS}, check_already_exists=False)
-    p = scaled(p, "Lithium plating kinetic rate constant [m.s-1]", 0.1)
+    p = with_plating(0.1)
     fast = [s.replace("Charge at 1C", "Charge at 1.5C") for s in CYCLE] * CYCLES
     write_case(root, "g5_plating_12_cycles_spm", lion.SPM({"lithium plating": "irreversible"}), p, fast,
                {"effect": "lithium_plating", "candidate_model": "spm", "accept": ["plating"],
