@@ -715,3 +715,16 @@ fn j5_calendar_ageing_sei_in_storage_spme() {
     let first = report::verdict_in_words(&rounds[0]);
     assert!(first.starts_with("Missing physics: SEI growth"), "{first}");
 }
+
+#[test]
+fn h8_positive_diffusivity_through_a_model_breakdown_spme() {
+    // Blind batch h: positive particle diffusivity x0.65 under a highway drive at 10 degC;
+    // the user's SPMe (the set's faster diffusivity) breaks down 1739 s in. Its first run
+    // stopped with a solver error: the breakdown was reported at the replay's last time
+    // (3510 s), so the recording was cut after the breakdown three times over. It is now cut
+    // before the breakdown and diagnosed there.
+    let rounds = run_case("diagnosis-extra/h8_diffusivity_positive_highway_drive_10C_spme");
+    assert!(rounds[0].notes.iter().any(|n| n.contains("broke down 1739 s")), "{:?}", rounds[0].notes);
+    let d = first_fitted(&rounds, "positive.diffusivity") / cellstudio::params::chen2020().positive.diffusivity;
+    assert!((d / 0.65 - 1.0).abs() < 0.01, "positive diffusivity x{d:.4} vs x0.65");
+}

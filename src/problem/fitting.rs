@@ -436,7 +436,9 @@ impl FittingProblem {
     /// ended early, saying why.
     fn at_points(&self, sol: &Solution) -> Result<Vec<f64>, Error> {
         if sol.time.len() != self.t_eval.len() {
-            let t = sol.time.last().copied().unwrap_or(0.0);
+            // Where the model broke down (its voltage left the window), else where it stopped:
+            // a caller that cuts the recording there must cut before the breakdown, not after.
+            let t = sol.cutoff_times.first().or(sol.time.last()).copied().unwrap_or(0.0);
             let why = match sol.cutoff_times.first() {
                 Some(tc) => format!(
                     "the model's voltage left ({}, {}) V at t = {tc:.1} s (a concentration at its limit: the model breaks down there)",
