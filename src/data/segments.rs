@@ -1,6 +1,7 @@
 //! The protocol that reproduces a recording's current: constant stretches become current or
 //! rest steps, varying stretches become piecewise-linear tables, and a repeated time marks a
-//! jump between steps.
+//! jump between steps. A change a cycler logged early (before its logging period, so it was
+//! triggered by the change) is read as a jump at the end of the gap, not as a ramp across it.
 
 use super::Recording;
 use crate::protocol::{Protocol, Step};
@@ -16,8 +17,8 @@ impl Recording {
     /// current are one constant step at their mean (a cycler's constant current carries a
     /// few mA of measurement noise); a rest is a stretch of zero current.
     pub fn protocol(&self) -> Protocol {
-        let (t, i) = (&self.time, &self.current);
-        let tol = CONSTANT_CURRENT_TOLERANCE * i.iter().fold(0.0f64, |m, v| m.max(v.abs())).max(1e-12);
+        let tol = CONSTANT_CURRENT_TOLERANCE * self.current.iter().fold(0.0f64, |m, v| m.max(v.abs())).max(1e-12);
+        let (t, i) = &self.with_triggered_jumps(tol);
         let mut steps = Vec::new();
         // The open stretch: start index and whether it is constant.
         let mut open: Option<(usize, bool)> = None;
@@ -59,6 +60,51 @@ impl Recording {
         }
         Protocol { steps }
     }
+
+    /// Time (s) and current (A) with a sample added where a logged change was triggered.
+    /// A cycler that logs a steady current on a period, and at once when the current moves by
+    /// more than its threshold, leaves a gap shorter than its period before a jump: the current
+    /// held until the last fine interval of that gap, not rising across it as linear
+    /// interpolation would have it. Such a gap gets a sample at the held current one fine
+    /// interval before its end. Left linear: a change logged on the period (the jump may lie
+    /// anywhere in the gap; the ramp carries the charge of a jump at its middle), and a run of
+    /// early-logged changes of one sign after the first (a smooth decay, as in a CV hold, logged
+    /// each time it crosses the threshold). The fine interval is the recording's most common
+    /// gap, the period its most common gap of at least [`PERIOD_IN_FINE`] fine intervals; a
+    /// recording without such gaps is left as it is.
+    fn with_triggered_jumps(&self, tol: f64) -> (Vec<f64>, Vec<f64>) {
+        let (t, i) = (&self.time, &self.current);
+        let gaps: Vec<f64> = t.windows(2).map(|w| w[1] - w[0]).collect();
+        let Some(fine) = most_common(gaps.iter().copied().filter(|g| *g > 0.0)) else { return (t.clone(), i.clone()) };
+        let Some(period) = most_common(gaps.iter().copied().filter(|g| *g >= PERIOD_IN_FINE * fine)) else { return (t.clone(), i.clone()) };
+        let (mut time, mut current) = (Vec::with_capacity(t.len()), Vec::with_capacity(t.len()));
+        // The sign of the previous interval's change when it was logged early (0: it was not).
+        let mut run = 0.0;
+        for k in 0..t.len() {
+            if k > 0 {
+                let (gap, change) = (gaps[k - 1], i[k] - i[k - 1]);
+                let early = change.abs() > tol && gap > 1.5 * fine && gap < 0.9 * period;
+                if early && change.signum() != run {
+                    time.push(t[k] - fine);
+                    current.push(i[k - 1]);
+                }
+                run = if early { change.signum() } else { 0.0 };
+            }
+            time.push(t[k]);
+            current.push(i[k]);
+        }
+        (time, current)
+    }
+}
+
+/// Shortest gap (in fine sampling intervals) that counts as a cycler's logging period.
+const PERIOD_IN_FINE: f64 = 5.0;
+
+/// The most common of `values` (s), to the millisecond; the shorter of equally common ones.
+fn most_common(values: impl Iterator<Item = f64>) -> Option<f64> {
+    let mut ms: Vec<i64> = values.map(|v| (v * 1e3).round() as i64).collect();
+    ms.sort_unstable();
+    ms.chunk_by(|a, b| a == b).max_by_key(|run| (run.len(), std::cmp::Reverse(run[0]))).map(|run| run[0] as f64 * 1e-3)
 }
 
 #[cfg(test)]
@@ -96,5 +142,32 @@ mod tests {
                 Step::Rest { duration: 10.0 },
             ]
         );
+    }
+
+    #[test]
+    fn a_change_logged_before_the_period_is_a_jump_at_the_end_of_its_gap() {
+        // 1 s samples, then 0.1 A logged every 30 s; the jump to 2 A is logged 15 s after the
+        // last 0.1 A sample (triggered by the change), then the new level on the period.
+        let r = rec(&[0.0, 1.0, 2.0, 3.0, 4.0, 34.0, 64.0, 79.0, 109.0], &[0.1, 0.1, 0.1, 0.1, 0.1, 0.1, 0.1, 2.0, 2.0]);
+        assert_eq!(
+            r.protocol().steps,
+            vec![
+                Step::Current { current: 0.1, duration: 78.0, until_voltage: None },
+                Step::Table { time: vec![0.0, 1.0], current: vec![0.1, 2.0] },
+                Step::Current { current: 2.0, duration: 30.0, until_voltage: None },
+            ]
+        );
+        // Logged on the period (30 s after the last sample): a ramp across the gap.
+        let r = rec(&[0.0, 1.0, 2.0, 3.0, 4.0, 34.0, 64.0, 94.0], &[0.1, 0.1, 0.1, 0.1, 0.1, 0.1, 0.1, 2.0]);
+        assert_eq!(r.protocol().steps.last(), Some(&Step::Table { time: vec![0.0, 30.0], current: vec![0.1, 2.0] }));
+    }
+
+    #[test]
+    fn a_decay_logged_at_each_threshold_crossing_stays_linear_after_its_first_change() {
+        // A CV-like decay logged every time it falls by 0.5 A, 10-20 s apart, after a 30 s period.
+        let time = [0.0, 1.0, 2.0, 3.0, 4.0, 34.0, 64.0, 74.0, 86.0, 101.0];
+        let r = rec(&time, &[5.0, 5.0, 5.0, 5.0, 5.0, 5.0, 5.0, 4.5, 4.0, 3.5]);
+        let (t, _) = r.with_triggered_jumps(0.01);
+        assert_eq!(t, vec![0.0, 1.0, 2.0, 3.0, 4.0, 34.0, 64.0, 73.0, 74.0, 86.0, 101.0]);
     }
 }
