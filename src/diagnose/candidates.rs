@@ -59,6 +59,9 @@ pub struct Augmentation {
     pub structural_parameters: usize,
     /// What changed, in words (e.g. "SPM -> SPMe").
     pub change: String,
+    /// Its parameters are rates known only to within decades (ageing rates): each is screened
+    /// a decade apart across its range before the fit ([`super::refit::Starts::screen`]).
+    pub screened: bool,
 }
 
 /// Multiplicative range (-) over which a parameter that the model already has is refitted.
@@ -110,6 +113,11 @@ impl Candidate {
         Candidate::Leak,
         Candidate::VoltageOffset,
     ];
+
+    /// An ageing candidate: it changes the cell from cycle to cycle ([`ageing`]).
+    pub fn is_ageing(self) -> bool {
+        matches!(self, Candidate::SeiGrowth | Candidate::LithiumPlating | Candidate::LithiumPlatingPartial | Candidate::ActiveMaterialGrowth)
+    }
 
     /// Short name, as the verdict uses it.
     pub fn name(self) -> &'static str {
@@ -433,7 +441,8 @@ impl Candidate {
         if let Some(b) = aged {
             p = b;
         }
-        Some(Augmentation { spec, base: p, extra, replaces, structural_parameters, change })
+        let screened = self.is_ageing();
+        Some(Augmentation { spec, base: p, extra, replaces, structural_parameters, change, screened })
     }
 
     /// The set's parameters a parameter-mismatch candidate refits (empty for the others).

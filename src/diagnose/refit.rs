@@ -9,7 +9,7 @@ use crate::data::Recording;
 use crate::error::Error;
 use crate::params::ParameterSet;
 use crate::problem::fitting::{FitParameter, FittingProblem, ModelSpec};
-use crate::problem::least_squares::{LeastSquaresFit, LmSettings, levenberg_marquardt};
+use crate::problem::least_squares::{LeastSquares, LeastSquaresFit, LmSettings, levenberg_marquardt};
 use crate::stats::noise_from_dense_differences;
 use crate::stats::{lag1, weighted_rms};
 
@@ -74,17 +74,56 @@ impl Default for FitSettings {
 /// bound or holds a parameter), and a point where the model is known to run (the previous
 /// model: its fitted values with the candidate's parameters at no effect) toward which a
 /// start that breaks the model is pulled until it runs.
+/// `screen` lists log-scaled parameters (ageing rates, known only to within decades) whose
+/// cost can rise between the first start and the optimum; each is screened a decade apart
+/// across its range, the others at the first start, and the best point found is fitted beside
+/// the first.
 #[derive(Clone, Debug, Default)]
 pub struct Starts {
     pub points: Vec<Vec<f64>>,
     pub runs_at: Option<Vec<f64>>,
+    pub screen: Vec<usize>,
 }
 
 impl Starts {
     /// Starts at these points only.
     pub fn at(points: Vec<Vec<f64>>) -> Self {
-        Self { points, runs_at: None }
+        Self { points, runs_at: None, screen: Vec::new() }
     }
+}
+
+/// The point `x0` with each of the `screen` parameters moved to the value of a decade grid
+/// over its range (bounds included) that lowers the cost most with the others at `x0`, and the
+/// simulations it took; `None` when no grid value beats `x0` (or every run fails).
+fn decade_screen<P: LeastSquares>(problem: &P, x0: &[f64], screen: &[usize]) -> (Option<Vec<f64>>, usize) {
+    let cost = |x: &[f64]| problem.run(x).ok().map(|r| problem.weighted_residuals(&r).iter().map(|v| v * v).sum::<f64>());
+    let Some(c0) = cost(x0) else { return (None, 1) };
+    let trials: Vec<(usize, f64)> = screen
+        .iter()
+        .flat_map(|&i| {
+            let p = &problem.parameters()[i];
+            let decades = (p.upper / p.lower).log10().ceil().max(1.0) as usize;
+            (0..=decades).map(move |d| (i, (p.lower.ln() + (p.upper / p.lower).ln() * d as f64 / decades as f64).exp()))
+        })
+        .collect();
+    let costs: Vec<Option<f64>> = trials
+        .par_iter()
+        .map(|&(i, v)| {
+            let mut x = x0.to_vec();
+            x[i] = v;
+            cost(&x)
+        })
+        .collect();
+    let mut best = x0.to_vec();
+    let mut moved = false;
+    for &i in screen {
+        let found = trials.iter().zip(&costs).filter_map(|((j, v), c)| c.filter(|c| *j == i && *c < c0).map(|c| (*v, c))).min_by(|a, b| a.1.total_cmp(&b.1));
+        if let Some((v, _)) = found {
+            best[i] = v;
+            moved = true;
+        }
+    }
+    (moved.then_some(best), 1 + trials.len())
 }
 
 /// Resolution (K) of a recorded temperature: the least noise it is credited with.
@@ -227,7 +266,10 @@ pub fn fit_and_score(
     if let Some(w) = temperature_weight(data).filter(|_| problem.spec.submodels.thermal) {
         problem = problem.fitting_temperature(w)?;
     }
-    let points = if starts.points.is_empty() { vec![problem.initial()] } else { starts.points.clone() };
+    let mut points = if starts.points.is_empty() { vec![problem.initial()] } else { starts.points.clone() };
+    let (screened, screen_runs) = if starts.screen.is_empty() { (None, 0) } else { decade_screen(&problem, &points[0], &starts.screen) };
+    // The screened point is fitted beside the first start, always.
+    let lead = if let Some(x) = screened { points.insert(1, x); 2 } else { 1 };
     // A start that fails is pulled toward where the model runs and tried again.
     let fit_from = |x0: &Vec<f64>| {
         levenberg_marquardt(&problem, x0, settings.lm).or_else(|e| match starts.runs_at.as_ref().and_then(|r| pulled_into_model(&problem, x0, r)) {
@@ -239,24 +281,27 @@ pub fn fit_and_score(
     // (`converged` is false then), the second and the last as well; the rest only when those
     // do not end where the first did (a bound can be where the optimum lies: a candidate with
     // no effect in the recording ends on its no-effect bound from every start).
-    let mut fits: Vec<Result<LeastSquaresFit, Error>> = vec![fit_from(&points[0])];
+    let mut fits: Vec<Result<LeastSquaresFit, Error>> = points[..lead].par_iter().map(fit_from).collect();
+    if lead == 2 && fits[1].as_ref().is_ok_and(|b| fits[0].as_ref().is_err() || fits[0].as_ref().is_ok_and(|a| b.sse < a.sse)) {
+        fits.swap(0, 1);
+    }
     let doubtful = match &fits[0] {
         Ok(f) => !f.converged || f.on_bound.iter().any(|b| *b),
         Err(_) => true,
     };
-    if doubtful && points.len() > 1 {
+    if doubtful && points.len() > lead {
         let last = points.len() - 1;
-        let probe: Vec<usize> = if last > 1 { vec![1, last] } else { vec![1] };
+        let probe: Vec<usize> = if last > lead { vec![lead, last] } else { vec![lead] };
         let probed: Vec<Result<LeastSquaresFit, Error>> = probe.par_iter().map(|&i| fit_from(&points[i])).collect();
         let agree = fits[0].as_ref().is_ok_and(|first| first.converged && probed.iter().all(|f| f.as_ref().is_ok_and(|f| same_optimum(first, f, settings.lm.sse_tolerance))));
         fits.extend(probed);
         if !agree && !settled(&fits, settings.lm.sse_tolerance) {
-            let rest: Vec<usize> = (2..last).collect();
+            let rest: Vec<usize> = (lead + 1..last).collect();
             fits.extend(rest.par_iter().map(|&i| fit_from(&points[i])).collect::<Vec<_>>());
         }
     }
     // Work of every start, not only the best one's.
-    let simulations: usize = fits.iter().filter_map(|f| f.as_ref().ok()).map(|f| f.simulations).sum();
+    let simulations: usize = screen_runs + fits.iter().filter_map(|f| f.as_ref().ok()).map(|f| f.simulations).sum::<usize>();
     let mut best: Option<LeastSquaresFit> = None;
     let mut error = None;
     for f in fits {
@@ -309,6 +354,7 @@ pub fn fit_and_score(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::problem::least_squares::tests::Line;
 
     #[test]
     fn blocks_hold_out_early_and_late_points() {
@@ -320,6 +366,26 @@ mod tests {
         assert!(!s.holdout[21] && s.train[21] == 0.0);
         assert_eq!(s.holdout_points(), 19);
         assert_eq!(s.train_points(), 60);
+    }
+
+    #[test]
+    fn a_rate_screened_a_decade_apart_escapes_the_local_minimum_at_its_start() {
+        // A line of slope 2 fitted by a slope that peaks at 1.5 at k = 1 (a local minimum of
+        // the cost) and reaches 2 at k = 1e3, with a valley between.
+        let humped = |x: &[f64]| {
+            let l = x[0].ln();
+            1.5 * (-l * l).exp() + 2.0 * (-(l - 1e3f64.ln()).powi(2) / 2.0).exp()
+        };
+        let problem = Line::new(vec![FitParameter::log("k", 1.0, 1e-3, 1e6)], humped);
+        let stalled = levenberg_marquardt(&problem, &[1.0], LmSettings::default()).unwrap();
+        assert!((stalled.x[0] - 1.0).abs() < 0.1, "the start is a local minimum: {:?}", stalled.x);
+        let (start, runs) = decade_screen(&problem, &[1.0], &[0]);
+        assert_eq!(runs, 11, "the start and the ten decade points 1e-3 to 1e6");
+        let start = start.expect("a decade beats the start");
+        assert!((start[0] / 1e3 - 1.0).abs() < 1e-9, "{start:?}");
+        let found = levenberg_marquardt(&problem, &start, LmSettings::default()).unwrap();
+        // At the optimum only the data's ±0.01 noise is left: 50 x 1e-4.
+        assert!((found.x[0] / 1e3 - 1.0).abs() < 1e-3 && (found.sse / 5e-3 - 1.0).abs() < 1e-3, "{:?} {}", found.x, found.sse);
     }
 
     fn fit(sse: f64, converged: bool, on_bound: bool) -> Result<LeastSquaresFit, Error> {

@@ -82,10 +82,17 @@ pub(super) fn refit_candidate(
             }
         }
     }
-    if restarts.is_none() {
-        starts.truncate(1);
-    }
-    let starts = refit::Starts { points: starts, runs_at: Some(runs_at) };
+    // An ageing rate is screened first: its cost can rise between the set's value and the
+    // optimum (it is known only to within decades). Not for pairs (a budget).
+    let screen: Vec<usize> = match restarts {
+        Some(_) if aug.screened => own.iter().copied().filter(|&k| params[k].log).collect(),
+        Some(_) => Vec::new(),
+        None => {
+            starts.truncate(1);
+            Vec::new()
+        }
+    };
+    let starts = refit::Starts { points: starts, runs_at: Some(runs_at), screen };
     match refit::fit_and_score(describe(&aug.spec), aug.spec, aug.base.clone(), params.clone(), aug.structural_parameters, &starts, data, split, &options.fit) {
         Ok(f) => {
             let fitted = params

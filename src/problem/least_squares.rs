@@ -396,18 +396,18 @@ fn inverse_and_log_det(a: &[f64], k: usize) -> Result<(Vec<f64>, f64, usize), Er
 
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
 
     /// `v = slope(x) t` against a line of slope 2 with ±0.01 alternating noise.
-    struct Line {
+    pub(crate) struct Line {
         parameters: Vec<FitParameter>,
         slope: fn(&[f64]) -> f64,
         data: Vec<f64>,
     }
 
     impl Line {
-        fn new(parameters: Vec<FitParameter>, slope: fn(&[f64]) -> f64) -> Self {
+        pub(crate) fn new(parameters: Vec<FitParameter>, slope: fn(&[f64]) -> f64) -> Self {
             let data = (0..50).map(|t| 2.0 * t as f64 + if t % 2 == 0 { 0.01 } else { -0.01 }).collect();
             Self { parameters, slope, data }
         }
