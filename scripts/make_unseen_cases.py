@@ -2145,7 +2145,143 @@ def batch_f(root):
                initial_soc=0.4, seed=208, cycler=CYCLER, compare=lion.SPM())
 
 
-BATCHES = {"u": batch_u, "v": batch_v, "w": batch_w, "x": batch_x, "y": batch_y, "z": batch_z, "q": batch_q, "r": batch_r, "s": batch_s, "t": batch_t, "p": batch_p, "o": batch_o, "n": batch_n, "m": batch_m, "l": batch_l, "k": batch_k, "j": batch_j, "i": batch_i, "h": batch_h, "f": batch_f}
+def batch_e(root):
+    """Twenty-first batch, made blind (a helper session that did not read the diagnosis code,
+    judged once on the binary /work/bin/s9e before anything else): one effect from each usual
+    family in settings not used before, one pair not used before and a control. A contact
+    resistance in an SPM under a parked urban drive (six bursts with 8 min holds at rest
+    between them) from 75 % SOC at 20 degC, cycler artefacts; an electrolyte diffusivity x0.6 seen through
+    an ascending-rate charge staircase (C/3 to 1C) from 20 % SOC at 10 degC (SPMe, 1.5 mV
+    noise); 6 % lithium loss in a C/2 discharge to 2.7 V and a 1C CC-CV charge to 4.0 V from
+    60 % SOC at 20 degC, 0.5 mV noise, cycler artefacts (SPMe); self-heating of a poorly cooled
+    DFN (h = 8, temperature recorded) in a 2C partial discharge and a 1C partial charge at
+    15 degC; the negative exchange current alone x0.3 under a fast random 5 s drive at low SOC
+    at 30 degC, 2 mV noise (SPM); 10 % positive LAM together with a negative particle
+    diffusivity x0.3 in a rate step-down discharge (2C, then C/3 to 2.7 V) at 5 degC (SPMe);
+    irreversible lithium plating in three 1.2C CC-CV charges at 2 degC on the SPMe (3.0 % of
+    the lithium lost); a DFN control at 40 degC (3C / 2C pulses and a 1C discharge, 2 mV
+    noise). Lithium and active-material loss are accepted only by their own words, as since
+    batch r; the particle diffusivity by "particle" / "solid diffusiv" words.
+
+    First run (2026-11-27, binary /work/bin/s9e, sha256 498dc9c15dde, load average 2.7 before,
+    3.4-3.8 during, 2.2 after, on 2 cores shared with a CI run): 7 of 8, 106 s in all. e1
+    series/contact 8.99 mOhm (truth 9), 34.93 -> 0.97 mV, 14 s; e2 electrolyte properties
+    (diffusivity 0.5996x, conductivity 1.0009x), 11.73 -> 1.51 mV (noise 1.55), 2 s; e3 lithium
+    inventory (negative / positive initial concentrations 17365 / 30650 mol/m3, the truth's 17363
+    / 30652 at 60 % SOC of the aged cell), 34.67 -> 0.51 mV, 8 s; e4 thermal (h 7.870, truth 8;
+    ambient 287.95 K), 30.49 -> 1.00 mV, 9 s; e5 kinetics (negative rate constant 1.943e-7, the
+    truth's 0.3 x 6.48e-7; positive 3.424e-6, the set's), 30.86 -> 1.98 mV, 9 s; e6 the pair in
+    round 1 at the truth (positive fraction 0.5986, truth 0.5985; negative particle diffusivity
+    9.913e-15 m2/s, truth 9.9e-15; the others at the set's), 37.75 -> 0.97 mV, 9 s; e8 no missing
+    physics (2.00 mV, noise 1.96), 1 s. Missed: e7 (54 s) named a leak of 21.1 mA (C/237)
+    together with lithium inventory (negative / positive initial concentrations 3564 / 49654
+    mol/m3), 20.69 -> 7.31 mV (hold-out 13.52 -> 9.61), then "unexplained" (7.31 mV, noise
+    1.06; closest a +10.8 mV voltage offset); plating, partially reversible plating and SEI
+    growth were not tried: "not identifiable: needs a recording over 3 or more cycles (this
+    one spans 2.9 full swings of its charge)" -- three cycles in a 3.0-4.1 V window from 10 %
+    SOC fall just short of the tool's gate (a design slip of this batch: a fourth cycle or the
+    full window would have cleared it)."""
+    cap = 5.0
+    # e1: 9 mOhm contact resistance, parked urban drive (bursts with holds at rest), 20 degC, cycler artefacts, SPM
+    p = chen()
+    p.update({"Ambient temperature [K]": 293.15, "Initial temperature [K]": 293.15})
+    p.update({"Contact resistance [Ohm]": 0.009}, check_already_exists=False)
+    parked = ["Rest for 5 minutes"]
+    for k in range(6):
+        parked += urban_drive(211 + k, 4) + ["Rest for 8 minutes"]
+    write_case(root, "e1_contact_parked_urban_drive_20C_cycler_spm", lion.SPM(options={"contact resistance": "true"}), p, parked,
+               {"effect": "contact_resistance", "candidate_model": "spm", "accept": ["contact", "series resistance"], "ambient_temperature_K": 293.15,
+                "note": "9 mOhm contact resistance at 20 degC (isothermal, not recorded); from 75 % SOC: 5 min rest, 6 x (an urban "
+                        "drive burst of 4 segments, to 3C with regeneration to 1.5C, about 4 min; then an 8 min hold at rest); "
+                        "1 mV noise, cycler artefacts (irregular sampling, 3 mA current noise, 0.1 mV resolution); SPM data and model"},
+               initial_soc=0.75, seed=211, cycler=CYCLER, compare=lion.SPM())
+    # e2: electrolyte diffusivity x0.6, ascending-rate charge staircase from 20 % SOC at 10 degC, SPMe
+    p = scaled(chen(), "Electrolyte diffusivity [m2.s-1]", 0.6)
+    p.update({"Ambient temperature [K]": 283.15, "Initial temperature [K]": 283.15})
+    stair = ["Rest for 5 minutes"]
+    for rate in ["C/3", "0.67C", "1C"]:
+        stair += [f"Charge at {rate} for 5 minutes", "Rest for 5 minutes"]
+    stair += ["Rest for 10 minutes"]
+    write_case(root, "e2_electrolyte_diffusivity_charge_staircase_10C_spme", lion.SPMe(), p, stair,
+               {"effect": "electrolyte_transport", "candidate_model": "spme", "accept": ["electrolyte"], "ambient_temperature_K": 283.15,
+                "note": "electrolyte diffusivity x0.6 (all concentrations) at 10 degC (isothermal, not recorded); from 20 % SOC: 5 "
+                        "min rest, a charge staircase of C/3, 0.67C and 1C for 5 min each with 5 min rests, 10 min more rest "
+                        "(to about 37 % SOC; the salt in the positive electrode falls to about 140 mol/m3 in the 1C step; x0.4 "
+                        "with rates to 2C, the first draft, emptied the SPMe's electrolyte); sampled every 2 s, 1.5 mV noise; SPMe data and model"},
+               initial_soc=0.2, seed=212, period=2, noise=1.5e-3, compare=lion.SPMe())
+    # e3: 6 % lithium loss, C/2 discharge then 1C CC-CV charge to 4.0 V from 60 % SOC, 20 degC, 0.5 mV noise, cycler artefacts, SPMe
+    p = scaled(chen(), "Initial concentration in negative electrode [mol.m-3]", 0.94)
+    p.update({"Ambient temperature [K]": 293.15, "Initial temperature [K]": 293.15})
+    steps = ["Rest for 10 minutes", "Discharge at C/2 until 2.7 V", "Rest for 30 minutes", "Charge at 1C until 4.0 V", "Hold at 4.0 V until C/10",
+             "Rest for 30 minutes"]
+    write_case(root, "e3_inventory_c2_then_cccv_4V_20C_cycler_spme", lion.SPMe(), p, steps,
+               {"effect": "lithium_inventory_loss", "candidate_model": "spme", "accept": ["inventory", "lithium loss", "cyclable"],
+                "ambient_temperature_K": 293.15,
+                "note": "6 % less lithium in the negative electrode at 20 degC (isothermal, not recorded); from 60 % SOC (of the aged "
+                        "cell): 10 min rest, C/2 to 2.7 V, 30 min rest, 1C CC-CV charge to 4.0 V and C/10, 30 min rest; 0.5 mV "
+                        "noise, cycler artefacts (irregular sampling, 3 mA current noise, 0.1 mV resolution); SPMe data and model"},
+               initial_soc=0.6, seed=213, noise=5e-4, cycler=CYCLER, compare=lion.SPMe())
+    # e4: self-heating h = 8, 2C partial discharge and 1C partial charge at 15 degC, temperature recorded, DFN
+    p = chen()
+    p.update({"Ambient temperature [K]": 288.15, "Initial temperature [K]": 288.15, "Total heat transfer coefficient [W.m-2.K-1]": 8.0})
+    steps = ["Rest for 5 minutes", "Discharge at 2C for 12 minutes", "Rest for 5 minutes", "Charge at 1C for 10 minutes", "Rest for 20 minutes"]
+    write_case(root, "e4_thermal_2C_partial_then_charge_15C_recorded_dfn", lion.DFN(options={"thermal": "lumped"}), p, steps,
+               {"effect": "thermal", "candidate_model": "dfn", "accept": ["thermal", "self-heating", "heat"], "ambient_temperature_K": 288.15,
+                "note": "lumped self-heating, h = 8 W/(m2 K), ambient and initial 15 degC; from full: 5 min rest, 2C for 12 min, 5 min "
+                        "rest, 1C charge for 10 min, 20 min rest; temperature recorded (0.05 K noise); sampled every 3 s, 1 mV noise; "
+                        "DFN data, the candidate the isothermal DFN at 15 degC"},
+               initial_soc=1.0, temperature=True, seed=214, period=3, compare=lion.DFN())
+    # e5: negative exchange current x0.3 only, fast random 5 s drive at low SOC, 30 degC, 2 mV noise, SPM
+    p = scaled(chen(), "Negative electrode exchange-current density [A.m-2]", 0.3)
+    p.update({"Ambient temperature [K]": 303.15, "Initial temperature [K]": 303.15})
+    drive = ["Rest for 5 minutes"] + drive_cycle(215, 120, -1.5, 2.5, 5) + ["Rest for 10 minutes"] + drive_cycle(216, 60, -1.5, 2.5, 5) + ["Rest for 10 minutes"]
+    write_case(root, "e5_kinetics_negative_fast_drive_low_soc_30C_spm", lion.SPM(), p, drive,
+               {"effect": "kinetics", "candidate_model": "spm", "accept": ["kinetic", "charge transfer", "charge-transfer", "exchange", "reaction rate"],
+                "ambient_temperature_K": 303.15,
+                "note": "negative exchange-current density x0.3 only (positive as set) at 30 degC (isothermal, not recorded); from "
+                        "35 % SOC: 5 min rest, a random drive of 120 x 5 s steps (C-rates drawn from -1.5 to 2.5), 10 min rest, 60 "
+                        "more steps, 10 min rest; sampled every 1 s, 2 mV noise; SPM data and model"},
+               initial_soc=0.35, seed=215, noise=2e-3, compare=lion.SPM())
+    # e6: 10 % positive LAM and negative particle diffusivity x0.3, a rate step-down discharge at 5 degC, SPMe
+    p = scaled(chen(), "Positive electrode active material volume fraction", 0.9)
+    p = scaled(p, "Negative particle diffusivity [m2.s-1]", 0.3)
+    p.update({"Ambient temperature [K]": 278.15, "Initial temperature [K]": 278.15})
+    steps = ["Rest for 10 minutes", "Discharge at 2C for 10 minutes", "Rest for 20 minutes", "Discharge at C/3 until 2.7 V", "Rest for 30 minutes"]
+    write_case(root, "e6_lam_positive_and_diffusivity_negative_step_down_5C_spme", lion.SPMe(), p, steps,
+               {"effect": "active_material_loss+solid_diffusivity", "candidate_model": "spme",
+                "accept": ["active material", "particle|solid diffusiv|solid-phase diffusiv"], "ambient_temperature_K": 278.15,
+                "note": "10 % loss of positive active material (default initial concentrations) and negative particle diffusivity "
+                        "x0.3, at 5 degC (isothermal, not recorded); from full: 10 min rest, 2C for 10 min, 20 min rest, C/3 to "
+                        "2.7 V, 30 min rest; sampled every 10 s, 1 mV noise; SPMe data and model"},
+               initial_soc=1.0, seed=216, period=10, compare=lion.SPMe())
+    # e7: irreversible lithium plating in three 1.2C CC-CV charges at 2 degC, SPMe, 30 s sampling
+    p = with_okane2022(chen(), PLATING_KEYS)
+    p = scaled(p, "Lithium plating kinetic rate constant [m.s-1]", 0.4)
+    p.update({"Ambient temperature [K]": 275.15, "Initial temperature [K]": 275.15})
+    cycle = ("Charge at 1.2C until 4.1 V", "Hold at 4.1 V until C/10", "Rest for 20 minutes", "Discharge at 1C until 3.0 V", "Rest for 20 minutes")
+    write_case(root, "e7_plating_irreversible_1p2C_charges_2C_30s_spme", lion.SPMe(options={"lithium plating": "irreversible"}), p,
+               [("Rest for 5 minutes",)] + [cycle] * 3,
+               {"effect": "lithium_plating", "candidate_model": "spme", "accept": ["plating"], "ambient_temperature_K": 275.15,
+                "note": "irreversible lithium plating (PyBaMM 'irreversible', OKane2022's plating parameters, rate constant x0.4 = "
+                        "4e-10 m/s) at 2 degC (isothermal, not recorded): 3.0 % of the lithium in the particles lost over the 3 "
+                        "cycles (0.0086 mol plated), the 1C discharge capacity 3.62 -> 3.48 -> 3.41 A h. From 10 % SOC: 5 min "
+                        "rest, 3 x (1.2C CC-CV charge to 4.1 V and C/10, 20 min rest, 1C to 3.0 V, 20 min rest), about 7.7 h; "
+                        "sampled every 30 s, 1 mV noise; SPMe data and model"},
+               initial_soc=0.1, seed=217, period=30, compare=lion.SPMe())
+    # e8: control, DFN at 40 degC, 3C / 2C pulses and a 1C discharge, 2 mV noise
+    p = chen()
+    p.update({"Ambient temperature [K]": 313.15, "Initial temperature [K]": 313.15})
+    steps = ["Rest for 5 minutes", "Discharge at 3C for 2 minutes", "Rest for 10 minutes", "Charge at 2C for 1 minute", "Rest for 10 minutes",
+             "Discharge at 1C until 3.2 V", "Rest for 15 minutes"]
+    write_case(root, "e8_control_pulses_then_1C_40C_dfn", lion.DFN(), p, steps,
+               {"effect": "none", "candidate_model": "dfn", "accept": ["no missing"], "ambient_temperature_K": 313.15,
+                "note": "negative control at 40 degC (isothermal, not recorded): DFN data and model, nothing concealed. From 70 % "
+                        "SOC: 5 min rest, 3C for 2 min, 10 min rest, 2C charge for 1 min, 10 min rest, 1C to 3.2 V, 15 min rest; "
+                        "sampled every 3 s, 2 mV noise"},
+               initial_soc=0.7, seed=218, period=3, noise=2e-3, compare=lion.DFN())
+
+
+BATCHES = {"u": batch_u, "v": batch_v, "w": batch_w, "x": batch_x, "y": batch_y, "z": batch_z, "q": batch_q, "r": batch_r, "s": batch_s, "t": batch_t, "p": batch_p, "o": batch_o, "n": batch_n, "m": batch_m, "l": batch_l, "k": batch_k, "j": batch_j, "i": batch_i, "h": batch_h, "f": batch_f, "e": batch_e}
 
 if __name__ == "__main__":
     root = sys.argv[1] if len(sys.argv) > 1 else "out/unseen-cases"
