@@ -9,7 +9,7 @@ use crate::data::Recording;
 use crate::error::Error;
 use crate::params::ParameterSet;
 use crate::problem::fitting::{FitParameter, FittingProblem, ModelSpec};
-use crate::problem::least_squares::{LeastSquares, LeastSquaresFit, LmSettings, levenberg_marquardt};
+use crate::problem::least_squares::{LeastSquares, LeastSquaresFit, LmSettings, levenberg_marquardt, sse};
 use crate::stats::noise_from_dense_differences;
 use crate::stats::{lag1, weighted_rms};
 
@@ -74,6 +74,7 @@ impl Default for FitSettings {
 /// bound or holds a parameter), and a point where the model is known to run (the previous
 /// model: its fitted values with the candidate's parameters at no effect) toward which a
 /// start that breaks the model is pulled until it runs.
+///
 /// `screen` lists log-scaled parameters (ageing rates, known only to within decades) whose
 /// cost can rise between the first start and the optimum; each is screened a decade apart
 /// across its range, the others at the first start, and the best point found is fitted beside
@@ -96,7 +97,7 @@ impl Starts {
 /// over its range (bounds included) that lowers the cost most with the others at `x0`, and the
 /// simulations it took; `None` when no grid value beats `x0` (or every run fails).
 fn decade_screen<P: LeastSquares>(problem: &P, x0: &[f64], screen: &[usize]) -> (Option<Vec<f64>>, usize) {
-    let cost = |x: &[f64]| problem.run(x).ok().map(|r| problem.weighted_residuals(&r).iter().map(|v| v * v).sum::<f64>());
+    let cost = |x: &[f64]| problem.run(x).ok().map(|r| sse(&problem.weighted_residuals(&r)));
     let Some(c0) = cost(x0) else { return (None, 1) };
     let trials: Vec<(usize, f64)> = screen
         .iter()

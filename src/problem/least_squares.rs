@@ -136,7 +136,8 @@ impl Scale<'_> {
     }
 }
 
-fn sse(r: &[f64]) -> f64 {
+/// Sum of squares of `r`.
+pub(crate) fn sse(r: &[f64]) -> f64 {
     r.iter().map(|v| v * v).sum()
 }
 
