@@ -46,17 +46,12 @@ pub(super) fn named_pairs(singles: &[CandidateOutcome], round: &Round) -> Vec<Ca
         .par_iter()
         .map(|&i| {
             let (k, screened) = &first[i];
-            (i, fit_pair(pairs[*k].0, pairs[*k].1, round, PairStart::Continue(screened.fit.as_ref().expect("screened fits are kept"))))
+            (i, continue_pair(pairs[*k].0, pairs[*k].1, round, screened))
         })
         .collect();
     let mut fitted: Vec<bool> = first.iter().map(|(_, p)| p.fit.as_ref().is_some_and(|f| f.converged)).collect();
     for (i, pair) in continued {
-        if let Some(mut pair) = pair {
-            let screened = first[i].1.fit.as_ref().expect("screened fits are kept");
-            let (sims, secs) = (screened.simulations, screened.seconds);
-            let fit = pair.fit.as_mut().expect("a pair outcome holds its fit");
-            fit.simulations += sims;
-            fit.seconds += secs;
+        if let Some(pair) = pair {
             first[i].1 = pair;
             fitted[i] = true;
         }
@@ -95,6 +90,37 @@ const CONTINUED_PAIRS: usize = 3;
 /// Doubtful pairs refitted from every start, the best by training error first.
 const REFIT_DOUBTFUL_PAIRS: usize = 3;
 
+/// Stretches of a fit's iteration cap a continued pair may run, and the share of its squared
+/// training error a stretch that stops on the cap must remove for the next to run.
+const CONTINUED_STRETCHES: usize = 3;
+const STRETCH_GAIN: f64 = 0.1;
+
+/// A screened pair continued from where its screen stopped: stretch after stretch of the
+/// fit's iteration cap while a stretch stops on the cap and still removes a tenth of the
+/// squared error (two effects that trade against each other, as a lost electrode capacity
+/// and its lithium, crawl along a narrow valley); `None` when a stretch fails. Its
+/// simulations and seconds count every stretch and the screen.
+fn continue_pair(a: &CandidateOutcome, b: &CandidateOutcome, round: &Round, screened: &CandidateOutcome) -> Option<CandidateOutcome> {
+    let mut pair = screened.clone();
+    let (mut sims, mut secs) = (0, 0.0);
+    for _ in 0..CONTINUED_STRETCHES {
+        let from = pair.fit.as_ref().expect("a pair outcome holds its fit");
+        (sims, secs) = (sims + from.simulations, secs + from.seconds);
+        let next = fit_pair(a, b, round, PairStart::Continue(from))?;
+        let fit = next.fit.as_ref().expect("a pair outcome holds its fit");
+        let falling = fit.rmse_train.powi(2) < (1.0 - STRETCH_GAIN) * from.rmse_train.powi(2);
+        let done = fit.converged || !falling;
+        pair = next;
+        if done {
+            break;
+        }
+    }
+    let fit = pair.fit.as_mut().expect("a pair outcome holds its fit");
+    fit.simulations += sims;
+    fit.seconds += secs;
+    Some(pair)
+}
+
 fn rmse_train(p: &CandidateOutcome) -> f64 {
     p.fit.as_ref().map_or(f64::INFINITY, |f| f.rmse_train)
 }
@@ -115,7 +141,7 @@ fn fit_pair(a: &CandidateOutcome, b: &CandidateOutcome, round: &Round, start: Pa
     let n_train = round.split.train_points();
     let next_a = a.next.as_ref()?;
     let paths: Vec<String> = next_a.fitted.iter().map(|p| p.path.clone()).collect();
-    let mut aug = b.candidate.augment(&next_a.spec, &next_a.base, &paths, &round.load)?;
+    let aug = b.candidate.augment(&next_a.spec, &next_a.base, &paths, &round.load)?;
     let partner: Vec<String> = aug.extra.iter().map(|p| p.path.clone()).collect();
     // The first effect's fixed structural parameters count too.
     let structural_a = a.candidate.augment(&round.options.spec, round.base, round.fitted_paths, &round.load).map_or(0, |x| x.structural_parameters);
@@ -135,22 +161,15 @@ fn fit_pair(a: &CandidateOutcome, b: &CandidateOutcome, round: &Round, start: Pa
         p.initial = start.clamp(p.lower, p.upper);
     }
     let mut options = round.options.clone();
-    let restarts: Option<&[Vec<f64>]> = match start {
+    let (restarts, resume): (Option<&[Vec<f64>]>, _) = match start {
         PairStart::Screen(lm) => {
             options.fit.lm = lm;
-            None
+            (None, None)
         }
-        PairStart::Continue(earlier) => {
-            for p in warm.iter_mut().chain(aug.extra.iter_mut()) {
-                if let Some(k) = earlier.names.iter().position(|n| *n == p.path) {
-                    p.initial = earlier.values[k].clamp(p.lower, p.upper);
-                }
-            }
-            None
-        }
-        PairStart::Every => Some(&[]),
+        PairStart::Continue(earlier) => (None, Some(earlier)),
+        PairStart::Every => (Some(&[]), None),
     };
-    let (fit, _, next) = refit_candidate(aug, &warm, restarts, &options, round.data, round.split);
+    let (fit, _, next) = refit_candidate(aug, &warm, restarts, resume, &options, round.data, round.split);
     let mut fit = fit?;
     fit.parameters += structural_a;
     let comparison = select::compare(round.baseline, &fit, n_train);

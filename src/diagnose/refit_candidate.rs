@@ -10,11 +10,13 @@ use refit::{FitOutcome, Split};
 /// Fits one candidate on top of the baseline; `warm` holds the baseline's fitted parameters
 /// at their fitted values, `restarts` the points (values of `warm`) the baseline's fit
 /// started from, or `None` to fit from the first start only (pairs: a budget, as a pair that
-/// needs restarts, ending on a bound, is not plausible anyway).
+/// needs restarts, ending on a bound, is not plausible anyway); `resume`, an earlier fit of
+/// the same parameters (a screened pair's) that this one continues from where it stopped.
 pub(super) fn refit_candidate(
     aug: candidates::Augmentation,
     warm: &[FitParameter],
     restarts: Option<&[Vec<f64>]>,
+    resume: Option<&FitOutcome>,
     options: &DiagnoseOptions,
     data: &Recording,
     split: &Split,
@@ -34,6 +36,14 @@ pub(super) fn refit_candidate(
         }));
     } else {
         params.extend(aug.extra.iter().cloned());
+    }
+    // A resumed fit starts every parameter, the freed window's too, where the earlier stopped.
+    if let Some(earlier) = resume {
+        for p in params.iter_mut() {
+            if let Some(k) = earlier.names.iter().position(|n| *n == p.path) {
+                p.initial = earlier.values[k].clamp(p.lower, p.upper);
+            }
+        }
     }
     // A start that breaks the model is pulled toward the previous model (the user's
     // parameters at their fitted values, the candidate's at no effect: the set's values),
@@ -138,7 +148,7 @@ pub(super) fn judge(c: Candidate, aug: Result<candidates::Augmentation, String>,
         Ok(aug) => aug,
     };
     let (options, base, baseline) = (round.options, round.base, round.baseline);
-    let (fit, note, next) = refit_candidate(aug, round.warm, Some(round.restarts), options, round.data, round.split);
+    let (fit, note, next) = refit_candidate(aug, round.warm, Some(round.restarts), None, options, round.data, round.split);
     (out.note, out.next) = (note, next);
     let Some(f) = fit else { return out };
     out.comparison = select::compare(baseline, &f, round.split.train_points());
