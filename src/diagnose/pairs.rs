@@ -10,7 +10,9 @@
 
 use rayon::prelude::*;
 
+use super::refit_candidate::at_soc;
 use super::{Candidate, CandidateOutcome, FitOutcome, Round, refit_candidate, select};
+use crate::problem::fitting::INITIAL_SOC;
 use crate::problem::least_squares::LmSettings;
 
 /// Every named pair of `singles` (refitted candidates), each as one candidate outcome named
@@ -150,13 +152,18 @@ fn fit_pair(a: &CandidateOutcome, b: &CandidateOutcome, round: &Round, start: Pa
     // candidates' at the set's), as a single does: the first effect's own fit may be a
     // compromise that stood in for the second (a lost negative capacity for lost lithium)
     // and would hold the pair in that false minimum.
+    // A first effect that frees the stoichiometry window starts it at the user's model's
+    // fitted state of charge (the set's concentrations may lie far from it and break the
+    // model: a recording that starts empty).
+    let soc = round.baseline.names.iter().position(|n| n == INITIAL_SOC).map(|k| round.baseline.values[k]);
+    let no_effect = at_soc(&next_a.base, soc);
     let mut warm = next_a.fitted.clone();
     for p in warm.iter_mut() {
         let start = match round.baseline.names.iter().position(|n| *n == p.path) {
             Some(k) => round.baseline.values[k],
             // The first effect's base: the set's values, or no effect where the candidate
             // sets one (the progressive LAM's terms).
-            None => next_a.base.get(&p.path).unwrap_or(p.initial),
+            None => no_effect.get(&p.path).unwrap_or(p.initial),
         };
         p.initial = start.clamp(p.lower, p.upper);
     }

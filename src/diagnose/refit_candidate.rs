@@ -3,7 +3,7 @@
 
 use super::{Candidate, CandidateOutcome, Comparison, DiagnoseOptions, NextModel, Round, candidates, describe, keeps_set_values, refit, select};
 use crate::data::Recording;
-use crate::params::set_initial_soc;
+use crate::params::{ParameterSet, set_initial_soc};
 use crate::problem::fitting::{FitParameter, INITIAL_SOC};
 use refit::{FitOutcome, Split};
 
@@ -26,10 +26,7 @@ pub(super) fn refit_candidate(
     // charge starts them at the baseline's fitted initial state.
     let frees_window = aug.replaces.iter().any(|r| r == INITIAL_SOC);
     if frees_window {
-        let mut p = aug.base.clone();
-        if let Some(soc) = warm.iter().find(|p| p.path == INITIAL_SOC) {
-            let _ = set_initial_soc(&mut p, soc.initial);
-        }
+        let p = at_soc(&aug.base, warm.iter().find(|p| p.path == INITIAL_SOC).map(|p| p.initial));
         params.extend(aug.extra.iter().cloned().map(|mut e| {
             e.initial = p.get(&e.path).unwrap_or(e.initial).clamp(e.lower, e.upper);
             e
@@ -120,6 +117,17 @@ pub(super) fn refit_candidate(
     }
 }
 
+
+/// `base` with its initial concentrations at state of charge `soc` (when there is one and it
+/// lies in [0, 1]): where a candidate that frees the stoichiometry window starts, the
+/// previous model's state (no effect).
+pub(super) fn at_soc(base: &ParameterSet, soc: Option<f64>) -> ParameterSet {
+    let mut p = base.clone();
+    if let Some(soc) = soc {
+        let _ = set_initial_soc(&mut p, soc);
+    }
+    p
+}
 
 /// One candidate refitted (when `aug` is its augmentation; `Err` says why it was not) and
 /// judged against the round's user's model: the margins, plausible values, its name by them.
