@@ -2315,7 +2315,24 @@ def batch_g(root):
     recorded to 0.1 K) in a potentiostatic discharge (a 3.8 V hold from 90 % SOC, starting near
     3.6C) and a 1C charge at 25 degC (SPMe). Lithium and active-material loss are accepted only by
     their own words, as since batch r; the particle diffusivity by "particle" / "solid diffusiv"
-    words only."""
+    words only.
+
+    First run (2026-11-27, binary /work/bin/s10start, sha256 6614a2b0d758, load average 4.6
+    before, 5.3-5.6 during, 5.6 after, on cores shared with other sessions): 7 of 8, 1189 s in all.
+    g1 no missing physics (1.04 mV, noise 1.05), 0 s; g2 a tie, series/contact 2.99 mOhm (truth 3)
+    or kinetics, 4.58 -> 0.98 mV, 6 s; g4 progressive (stress-driven) negative LAM "about 4.2 %"
+    (truth: fraction 0.75 -> 0.709, 5.5 %), 21.37 -> 3.58 mV, then a lithium-inventory stand-in
+    (negative initial concentration 30263 mol/m3), 1.17 mV, 319 s; g5 named weakly, a tie of
+    series/contact 7.90 mOhm (first) or kinetics (rate constants 3.11e-7 / 1.12e-6 "not
+    identifiable"; truth 0.4x the set's, 2.59e-7 / 1.37e-6), 9.11 -> 1.04 mV, 13 s (the pulses
+    are all at 2C: a design slip, two rates would separate them); g6 electrolyte (diffusivity
+    0.3504x, conductivity 0.7003x), 13.71 -> 1.19 mV, 690 s of the judge's 900; g7 particle
+    diffusivities (negative 8.248e-15 m2/s, truth 8.25e-15; positive the set's), 33.95 -> 0.99 mV,
+    48 s; g8 thermal (h 9.989, ambient 298.14 K), 5.95 -> 1.02 mV, 25 s. Missed: g3 (88 s) named
+    negative LAM "7 %" (fraction 0.6968; positive 0.665 on its search bound), 58.29 -> 5.61 mV
+    (hold-out 70.36 -> 7.70), then "unexplained" (5.61 mV, noise 1.01; closest lithium inventory,
+    dBIC 7.0, hold-out cut 3 %); the contact stayed at 1.22 mOhm in round 2 (truth 6), though the
+    residual's own statistic gave 7.70 mOhm at the two current steps."""
     cap = 5.0
     adc = {"quantum_V": 1e-3, "quantum_A": 1e-4}
     # g1: control, SPMe at 45 degC, ascending-rate discharge staircase, 1 mV ADC steps
