@@ -184,6 +184,10 @@ fn truncated(f: &FitOutcome) -> &'static str {
     if f.converged { "" } else { " (its search stopped on the iteration cap, not on convergence)" }
 }
 
+/// Share of the RMS residual under load that the RMS residual at rest must reach for an
+/// unexplained verdict to point at the open-circuit voltage (a dynamic effect relaxes at rest).
+const OCV_AT_REST: f64 = 0.5;
+
 /// The verdict sentence(s), first in the summary.
 pub fn verdict_in_words(d: &Diagnosis) -> String {
     let b = &d.baseline;
@@ -252,12 +256,23 @@ pub fn verdict_in_words(d: &Diagnosis) -> String {
                 });
                 format!(" The closest, {}, {why}.", c.name)
             });
+            // A cell whose own open-circuit voltage differs from the set's is off at rest as
+            // much as under load, which no dynamic candidate changes.
+            let r = &d.residual;
+            let ocv = (r.rest_rms >= OCV_AT_REST * r.load_rms && r.rest_rms > 10.0 * d.noise).then(|| {
+                format!(
+                    " At rest the model is off by {} RMS (under load {}): the cell's open-circuit voltage differs from the set's (its electrodes' OCP curves or their balance); a pseudo-OCV at C/20 both ways and `cellstudio parameterise` fit that before a diagnosis.",
+                    mv(r.rest_rms),
+                    mv(r.load_rms)
+                )
+            });
             format!(
-                "Unexplained structure in {}: the user's model misses by {} RMS (noise {}), and no plausible candidate removes it on held-out data; see the residual plot.{}",
+                "Unexplained structure in {}: the user's model misses by {} RMS (noise {}), and no plausible candidate removes it on held-out data; see the residual plot.{}{}",
                 if windows.is_empty() { "the recording".to_string() } else { windows.join(", ") },
                 mv(b.rmse_all),
                 mv(d.noise),
-                best.unwrap_or_default()
+                best.unwrap_or_default(),
+                ocv.unwrap_or_default()
             )
         }
         Verdict::NoMissingPhysics => {
