@@ -192,13 +192,15 @@ pub fn run_design(study: &Study) -> Result<DesignOutcome, Error> {
             metric.label()
         ));
     }
-    let grid = match &study.sweep {
+    // Counted before the points are made: a large grid is `sweep`'s job, not held here.
+    let grid = match study.sweep.as_ref().and_then(super::Sweep::size) {
+        Some(n) if n > SWEEP_CHECK_LIMIT => {
+            warnings.push(format!("the study's sweep has {n} points, more than the {SWEEP_CHECK_LIMIT} `design` evaluates as a check: run `sweep` to compare"));
+            Vec::new()
+        }
         Some(_) => super::sweep::sweep_candidates(study)?,
         None => Vec::new(),
     };
-    if grid.len() > SWEEP_CHECK_LIMIT {
-        warnings.push(format!("the study's sweep has {} points, more than the {SWEEP_CHECK_LIMIT} `design` evaluates as a check: run `sweep` to compare", grid.len()));
-    }
     let sweep_best = match grid.len() {
         1..=SWEEP_CHECK_LIMIT => {
             let points = super::sweep::evaluate_points(study, &problem, &initial, grid)?;

@@ -48,6 +48,7 @@ mod profile_likelihood;
 mod pulse_power;
 mod readers_never_panic;
 mod readme;
+mod refused_inputs;
 mod recording_sign;
 mod reference_curves;
 mod samplers;

@@ -1,0 +1,41 @@
+//! Nonsense inputs found by a trust audit as a new user, each refused before any work with
+//! exit 1 and an error naming the key or flag the user wrote and its value: studies too large
+//! to hold in memory, recordings whose time column cannot be replayed, input files that do not
+//! exist, temperatures in degrees Celsius where kelvin are read.
+
+use std::path::Path;
+
+use crate::cli_support;
+
+use cli_support::*;
+
+/// The seed design study with its sweep grid replaced by `points` and its output in `out`.
+fn design_with_points(s: &Scratch, points: &str) -> String {
+    let seed = std::fs::read_to_string(Path::new(REPO).join("designs/gravimetric_chen2020.toml")).unwrap();
+    let text = seed.replace("points = [13, 13]", &format!("points = {points}")).replace("out/gravimetric_chen2020", "out");
+    s.write("design.toml", &text).to_string_lossy().into_owned()
+}
+
+#[test]
+fn studies_too_large_to_hold_in_memory_are_refused_before_any_work() {
+    let s = Scratch::new("huge");
+    // 10^10 grid points: before, `sweep` (and `design`, which makes the grid to count it)
+    // allocated until the machine ran out of memory.
+    let study = design_with_points(&s, "[100000, 100000]");
+    for command in ["sweep", "design"] {
+        fails_with(&run(&s.0, &[command, &study]), &["sweep.points", "[100000, 100000]", "1e10 designs"]);
+    }
+    // A population of 10^11: before, an abort on a failed allocation (exit 134).
+    let seed = std::fs::read_to_string(Path::new(REPO).join("designs/energy_vs_power_chen2020.toml")).unwrap();
+    let text = seed.replace("population = 32", "population = 100000000000").replace("out/energy_vs_power_chen2020", "out");
+    let pareto = s.write("pareto.toml", &text);
+    fails_with(&run(&s.0, &["pareto", pareto.to_str().unwrap()]), &["optimiser.population", "population = 100000000000 with 20 generations", "2.1e12 designs"]);
+    assert!(!s.path("out").exists(), "a refused study wrote something");
+    // A grid too large for `design` to check still runs the search, with a warning.
+    let study = design_with_points(&s, "[50, 50]");
+    let text = std::fs::read_to_string(&study).unwrap().replace("max_iterations = 60", "max_iterations = 3");
+    std::fs::write(&study, text).unwrap();
+    let o = run(&s.0, &["design", &study]);
+    succeeds(&o);
+    assert!(stderr(&o).contains("the study's sweep has 2500 points, more than the 2000"), "{}", stderr(&o));
+}
