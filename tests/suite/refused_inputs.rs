@@ -39,3 +39,34 @@ fn studies_too_large_to_hold_in_memory_are_refused_before_any_work() {
     succeeds(&o);
     assert!(stderr(&o).contains("the study's sweep has 2500 points, more than the 2000"), "{}", stderr(&o));
 }
+
+#[test]
+fn a_time_column_that_cannot_be_replayed_is_refused_naming_the_line() {
+    let s = Scratch::new("times");
+    // Rows 100 and 101 (file lines 102, 103) moved back to the time of row 99: a current step
+    // is two rows at one time, a third row's current would last no time. Before, it became a
+    // step of zero duration and was silently ignored by the fit.
+    let triple = s.write("triple.csv", &seed_edited(|row, cells| {
+        if row == 100 || row == 101 {
+            cells[0] = "990".into();
+        }
+        if row == 100 {
+            cells[1] = "2".into();
+        }
+    }));
+    let triple = triple.to_str().unwrap();
+    for args in [vec!["data", "inspect", triple], vec!["fit", &fit_study(&s, "").to_string_lossy(), "--data", triple]] {
+        fails_with(&run(&s.0, &args.iter().map(|a| &**a).collect::<Vec<_>>()), &["triple.csv", "line 103", "`time_s` = 990", "third row"]);
+    }
+    // Two rows at one time are a current step, as before.
+    let step = s.write("step.csv", &seed_edited(|row, cells| {
+        if row == 100 {
+            cells[0] = "990".into();
+        }
+    }));
+    succeeds(&run(&s.0, &["data", "inspect", step.to_str().unwrap()]));
+    // Every row at one time: nothing to simulate.
+    let still = s.write("still.csv", "time_s,current_A,voltage_V\n5,1,3.9\n5,0,3.95\n");
+    fails_with(&run(&s.0, &["data", "inspect", still.to_str().unwrap()]), &["line 3", "`time_s` = 5", "spans no time"]);
+    assert!(!s.path("out").exists());
+}
