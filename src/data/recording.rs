@@ -44,7 +44,7 @@ impl Recording {
         let name = path.display().to_string();
         let parse_err = |message: String| Error::Parse { path: name.clone(), message };
         let (kt, ki, kv) = (format.time_factor()?, format.current_factor()?, format.voltage_factor()?);
-        let mut reader = csv::Reader::from_path(path).map_err(|e| parse_err(e.to_string()))?;
+        let mut reader = csv::Reader::from_reader(std::fs::File::open(path).map_err(Error::io(path))?);
         let headers = reader.headers().map_err(|e| parse_err(e.to_string()))?.clone();
         let column = |wanted: &str| headers.iter().position(|h| h.trim() == wanted);
         let required = |wanted: &str| {

@@ -111,7 +111,7 @@ pub fn run_eis(run: &EisRun) -> Result<EisOutcome, Error> {
             (s, None)
         }
         Some(EisFitRequest { data: data_path, parameters: variables }) => {
-            let data = Spectrum::from_csv(data_path)?;
+            let data = Spectrum::from_csv(data_path).map_err(|e| e.input("--fit"))?;
             // Two numbers (real, imaginary) per frequency; a fit needs more than it has unknowns.
             if data.len() <= variables.len() {
                 return Err(Error::InvalidSetting {

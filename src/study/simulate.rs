@@ -85,7 +85,7 @@ impl ProtocolSource {
             }
             ProtocolSource::Experiment(steps) => crate::protocol::experiment::parse(steps, p.cell.nominal_capacity),
             ProtocolSource::File(path) => {
-                let text = std::fs::read_to_string(path).map_err(Error::io(path))?;
+                let text = std::fs::read_to_string(path).map_err(|e| Error::io(path)(e).input("--protocol"))?;
                 toml::from_str(&text).map_err(|e| Error::Parse { path: path.display().to_string(), message: e.to_string() })
             }
         }

@@ -70,3 +70,30 @@ fn a_time_column_that_cannot_be_replayed_is_refused_naming_the_line() {
     fails_with(&run(&s.0, &["data", "inspect", still.to_str().unwrap()]), &["line 3", "`time_s` = 5", "spans no time"]);
     assert!(!s.path("out").exists());
 }
+
+#[test]
+fn an_input_file_that_does_not_exist_is_named_by_its_key_or_flag() {
+    let s = Scratch::new("missing");
+    let dir = s.0.display().to_string();
+    let study = fit_study(&s, "");
+    let text = std::fs::read_to_string(&study).unwrap();
+    let start = text.find("file = \"").unwrap();
+    let end = start + text[start..].find('\n').unwrap();
+    std::fs::write(&study, format!("{}file = \"nope.csv\"\nprotocol = \"nope.toml\"{}", &text[..start], &text[end..])).unwrap();
+    let study = study.to_str().unwrap();
+    fails_with(&run(&s.0, &["fit", study]), &["`data.data1.file`", "`nope.csv`", &format!("working directory, `{dir}`")]);
+    fails_with(&run(&s.0, &["fit", study, "--data", "gone.csv"]), &["`--data`", "`gone.csv`"]);
+    // The recording exists, the protocol does not.
+    let seed = Path::new(REPO).join("tests/data/spm_contact_resistance_seed.csv");
+    fails_with(&run(&s.0, &["fit", study, "--data", seed.to_str().unwrap()]), &["`data.data1.protocol`", "`nope.toml`"]);
+    fails_with(&run(&s.0, &["simulate", "--params", "nope.toml"]), &["`--params`", "`nope.toml`"]);
+    fails_with(&run(&s.0, &["simulate", "--protocol", "nope.toml"]), &["`--protocol`", "`nope.toml`"]);
+    fails_with(&run(&s.0, &["eis", "--fit", "nope.csv"]), &["`--fit`", "`nope.csv`"]);
+    fails_with(&run(&s.0, &["diagnose", "--data", "nope.csv"]), &["`--data`", "`nope.csv`"]);
+    fails_with(&run(&s.0, &["data", "inspect", "nope.csv"]), &["`FILE`", "`nope.csv`"]);
+    // An output folder that cannot be made is named as the user wrote it, not by the
+    // temporary folder beside it.
+    let e = fails_with(&run(&s.0, &["simulate", "--model", "spm", "--out", "/proc/cellstudio-out"]), &["output folder", "`/proc/cellstudio-out`"]);
+    assert!(!e.contains("partial"), "{e}");
+    assert_eq!(s.entries(), vec!["fit.toml"], "a refused run wrote something");
+}
