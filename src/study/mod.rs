@@ -308,6 +308,7 @@ impl Study {
         let mut p = self.cell.load()?;
         let op = &self.operating;
         if let Some(t) = op.temperature {
+            crate::params::check::temperature("operating.temperature", t)?;
             p.thermal.ambient_temperature = t;
             p.thermal.initial_temperature = t;
         }

@@ -97,3 +97,17 @@ fn an_input_file_that_does_not_exist_is_named_by_its_key_or_flag() {
     assert!(!e.contains("partial"), "{e}");
     assert_eq!(s.entries(), vec!["fit.toml"], "a refused run wrote something");
 }
+
+#[test]
+fn temperatures_in_celsius_are_named_where_the_study_sets_them() {
+    let s = Scratch::new("celsius");
+    // Before, `[data] temperature = 25` passed its check (0-1000 K) and failed later as
+    // `thermal.ambient_temperature`, a key the study never wrote.
+    let study = fit_study(&s, "");
+    let text = std::fs::read_to_string(&study).unwrap().replace("noise_seed = 7\n", "noise_seed = 7\ntemperature = 25\n");
+    std::fs::write(&study, text).unwrap();
+    fails_with(&run(&s.0, &["fit", study.to_str().unwrap()]), &["`data.data1.temperature` = 25", "kelvin"]);
+    let seed = std::fs::read_to_string(Path::new(REPO).join("designs/gravimetric_chen2020.toml")).unwrap();
+    let design = s.write("design.toml", &seed.replace("c_rate = 1.0", "c_rate = 1.0\ntemperature = 25"));
+    fails_with(&run(&s.0, &["design", design.to_str().unwrap()]), &["`operating.temperature` = 25", "kelvin"]);
+}
