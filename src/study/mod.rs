@@ -31,7 +31,7 @@ pub mod pareto;
 pub mod sweep;
 mod validate;
 mod warnings;
-pub use warnings::{OnBound, at_bound_warnings, named_on_bounds, on_bounds, truncation_warning};
+pub use warnings::{OnBound, at_bound_warnings, named_on_bounds, on_bounds, truncation_warning, truncation_warning_with};
 
 
 /// What an optional section of a fit report (profiles, experiment design, Sobol' indices)

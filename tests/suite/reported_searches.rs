@@ -30,3 +30,30 @@ fn a_design_search_counts_the_designs_it_could_not_rank() {
     assert!(json["warnings"].as_array().unwrap().iter().any(|w| w.as_str().unwrap().contains(needle)), "{json}");
     assert!(std::fs::read_to_string(s.path("out/report.md")).unwrap().contains(needle));
 }
+
+#[test]
+fn an_impedance_fit_writes_its_values_and_how_its_search_ended() {
+    let s = Scratch::new("eis-fit");
+    succeeds(&run(&s.0, &["eis", "--model", "spm", "--contact-resistance", "0.01", "--frequencies", "1e-2", "1e3", "12", "--out", "measured"]));
+    let fit = |optimiser: &str, parameters: &str, out: &str| {
+        run(&s.0, &["eis", "--model", "spm", "--contact-resistance", "0.005", "--fit", "measured/spectrum.csv", "--parameters", parameters, "--optimiser", optimiser, "--out", out])
+    };
+    // A converged fit: before, its values were only printed.
+    succeeds(&fit("nelder-mead", "cell.contact_resistance", "converged"));
+    let json: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(s.path("converged/fit.json")).unwrap()).unwrap();
+    let r = json["parameters"]["cell.contact_resistance"].as_f64().unwrap();
+    assert!((r - 0.01).abs() < 1e-6, "{json}");
+    assert_eq!(json["stop"], "Tolerance", "{json}");
+    assert!(json["warnings"].as_array().unwrap().is_empty(), "{json}");
+    // Particle swarm on two parameters runs into the fixed cap of 2000 evaluations: the warning
+    // is on the terminal and in fit.json, and no longer tells the user to raise an
+    // `[optimiser]` setting `eis` does not have.
+    let o = fit("pso", "cell.contact_resistance,negative.diffusivity", "capped");
+    succeeds(&o);
+    let e = stderr(&o);
+    assert!(e.contains("warning: the impedance fit stopped on its evaluation cap") && e.contains("cap of 2000 evaluations is fixed"), "{e}");
+    assert!(!e.contains("[optimiser]"), "{e}");
+    let json: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(s.path("capped/fit.json")).unwrap()).unwrap();
+    assert_eq!(json["stop"], "MaxEvaluations", "{json}");
+    assert!(json["warnings"][0].as_str().unwrap().contains("evaluation cap"), "{json}");
+}
