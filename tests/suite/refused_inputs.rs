@@ -1,7 +1,8 @@
-//! Nonsense inputs found by a trust audit as a new user, each refused before any work with
-//! exit 1 and an error naming the key or flag the user wrote and its value: studies too large
+//! Nonsense inputs found by a trust audit as a new user, each refused with exit 1, nothing
+//! written and an error naming the key or flag the user wrote and its value: studies too large
 //! to hold in memory, recordings whose time column cannot be replayed, input files that do not
-//! exist, temperatures in degrees Celsius where kelvin are read.
+//! exist, temperatures in degrees Celsius where kelvin are read, a noise level to sample from
+//! a recording too clean to have one.
 
 use std::path::Path;
 
@@ -110,4 +111,17 @@ fn temperatures_in_celsius_are_named_where_the_study_sets_them() {
     let seed = std::fs::read_to_string(Path::new(REPO).join("designs/gravimetric_chen2020.toml")).unwrap();
     let design = s.write("design.toml", &seed.replace("c_rate = 1.0", "c_rate = 1.0\ntemperature = 25"));
     fails_with(&run(&s.0, &["design", design.to_str().unwrap()]), &["`operating.temperature` = 25", "kelvin"]);
+}
+
+#[test]
+fn sampling_the_noise_of_a_noise_free_recording_is_refused_naming_the_cost() {
+    let s = Scratch::new("clean");
+    // PyBaMM's curve without noise fits to a few microvolts, below the 10 uV where `sample`
+    // starts its search for sigma. Before, it failed as "invalid setting `starts`: start 0 =
+    // [...] has log density -inf", a setting no study has.
+    let study = fit_study(&s, "[cost]\nkind = \"sse\"\n[sampler]\nchains = 2\niterations = 30\nwarmup = 10\n");
+    let seed = Path::new(REPO).join("tests/data/spm_contact_resistance_seed.csv");
+    let e = fails_with(&run(&s.0, &["sample", study.to_str().unwrap(), "--data", seed.to_str().unwrap()]), &["`cost`", "RMS residual", "[1e-5, 0.5] V", "kind = \"gaussian_log_likelihood\", sigma"]);
+    assert!(!e.contains("starts"), "{e}");
+    assert_eq!(s.entries(), vec!["fit.toml"], "a refused sample wrote something");
 }
