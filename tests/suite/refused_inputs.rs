@@ -2,7 +2,7 @@
 //! written and an error naming the key or flag the user wrote and its value: studies too large
 //! to hold in memory, recordings whose time column cannot be replayed, input files that do not
 //! exist, temperatures in degrees Celsius where kelvin are read, a noise level to sample from
-//! a recording too clean to have one.
+//! a recording too clean to have one, negative numbers given to flags.
 
 use std::path::Path;
 
@@ -124,4 +124,17 @@ fn sampling_the_noise_of_a_noise_free_recording_is_refused_naming_the_cost() {
     let e = fails_with(&run(&s.0, &["sample", study.to_str().unwrap(), "--data", seed.to_str().unwrap()]), &["`cost`", "RMS residual", "[1e-5, 0.5] V", "kind = \"gaussian_log_likelihood\", sigma"]);
     assert!(!e.contains("starts"), "{e}");
     assert_eq!(s.entries(), vec!["fit.toml"], "a refused sample wrote something");
+}
+
+#[test]
+fn a_negative_number_after_a_flag_is_its_value_and_is_checked() {
+    let s = Scratch::new("negative");
+    // Before, `--c-rate -1` was "unexpected argument '-1' found" (exit 2), and `--repeat 0`
+    // ran once and reported "median of 1".
+    fails_with(&run(&s.0, &["simulate", "--c-rate", "-1"]), &["`--c-rate` = -1", "must be positive"]);
+    fails_with(&run(&s.0, &["simulate", "--contact-resistance", "-0.01"]), &["`--contact-resistance` = -0.01"]);
+    fails_with(&run(&s.0, &["eis", "--soc", "-0.5"]), &["`--soc` = -0.5"]);
+    fails_with(&run(&s.0, &["eis", "--frequencies", "-1", "10", "5"]), &["`--frequencies F_MIN` = -1"]);
+    fails_with(&run(&s.0, &["simulate", "--repeat", "0"]), &["`--repeat` = 0", "at least 1"]);
+    assert!(s.entries().is_empty(), "a refused run wrote something");
 }
