@@ -69,6 +69,13 @@ fn a_time_column_that_cannot_be_replayed_is_refused_naming_the_line() {
     // Every row at one time: nothing to simulate.
     let still = s.write("still.csv", "time_s,current_A,voltage_V\n5,1,3.9\n5,0,3.95\n");
     fails_with(&run(&s.0, &["data", "inspect", still.to_str().unwrap()]), &["line 3", "`time_s` = 5", "spans no time"]);
+    // Our columns from a spreadsheet that separates by `;` with comma decimals, and an empty
+    // file: before, both only "not a known cycler export (first line: ...)".
+    let semicolons = seed_edited(|_, _| {}).replace(',', ";").replace('.', ",");
+    let semicolons = s.write("semicolons.csv", &semicolons);
+    fails_with(&run(&s.0, &["data", "inspect", semicolons.to_str().unwrap()]), &["separated by ';'", "save it with commas"]);
+    let empty = s.write("empty.csv", "");
+    fails_with(&run(&s.0, &["data", "inspect", empty.to_str().unwrap()]), &["empty.csv", "the file is empty"]);
     assert!(!s.path("out").exists());
 }
 
