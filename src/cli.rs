@@ -41,7 +41,7 @@ pub(crate) enum Command {
         #[arg(long, default_value = "spme")]
         model: ModelKind,
         /// Constant-current discharge rate (C) to the lower cut-off.
-        #[arg(long, default_value_t = 1.0)]
+        #[arg(long, default_value_t = 1.0, allow_negative_numbers = true)]
         c_rate: f64,
         /// Protocol TOML file (overrides --c-rate), e.g. protocols/pulse_1C.toml.
         #[arg(long, conflicts_with = "experiment")]
@@ -54,7 +54,7 @@ pub(crate) enum Command {
         #[arg(long)]
         params: Option<PathBuf>,
         /// Switch on the contact-resistance submodel with this resistance (ohm).
-        #[arg(long)]
+        #[arg(long, allow_negative_numbers = true)]
         contact_resistance: Option<f64>,
         /// Switch on the lumped thermal submodel.
         #[arg(long)]
@@ -131,16 +131,16 @@ pub(crate) enum Command {
         #[arg(long, default_value = "spm")]
         model: ModelKind,
         /// State of charge (0..1) of the rest state.
-        #[arg(long, default_value_t = 0.5)]
+        #[arg(long, default_value_t = 0.5, allow_negative_numbers = true)]
         soc: f64,
         /// Parameter-set file: TOML, JSON or BPX JSON (default: embedded Chen 2020).
         #[arg(long)]
         params: Option<PathBuf>,
         /// Switch on the contact-resistance submodel with this resistance (ohm).
-        #[arg(long)]
+        #[arg(long, allow_negative_numbers = true)]
         contact_resistance: Option<f64>,
         /// Lowest and highest frequency (Hz) and number of frequencies of the model spectrum.
-        #[arg(long, num_args = 3, default_values_t = [1e-4, 1e3, 60.0])]
+        #[arg(long, num_args = 3, allow_negative_numbers = true, default_values_t = [1e-4, 1e3, 60.0])]
         frequencies: Vec<f64>,
         /// Measured spectrum CSV (frequency_Hz, z_re_ohm, z_im_ohm) to fit.
         #[arg(long)]

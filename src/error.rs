@@ -56,6 +56,24 @@ impl Error {
     pub fn io(path: &std::path::Path) -> impl FnOnce(std::io::Error) -> Error + '_ {
         move |source| Error::Io { path: path.display().to_string(), source }
     }
+
+    /// For `map_err` on reading an input the user named with `field` (a study key such as
+    /// `data.data1.file`, or a flag such as `--params`): a file that cannot be read becomes an
+    /// error naming the field and the path, and for a relative path the working directory it
+    /// was looked up in; any other error as it is.
+    pub fn input(self, field: &str) -> Self {
+        match self {
+            Error::Io { path, source } => {
+                let cwd = std::env::current_dir().map(|d| d.display().to_string()).unwrap_or_default();
+                let relative = match std::path::Path::new(&path).is_relative() {
+                    true => format!(" (a relative path is read from the working directory, `{cwd}`)"),
+                    false => String::new(),
+                };
+                Error::InvalidSetting { field: field.into(), reason: format!("cannot read `{path}`: {source}{relative}") }
+            }
+            other => other,
+        }
+    }
 }
 
 /// Writes `contents` to `path`; a failure names the path.

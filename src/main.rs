@@ -35,7 +35,7 @@ fn main() -> ExitCode {
 
 /// The parameter set from `--params` (or the embedded default) with `--set` overrides.
 fn load_parameters(params: Option<&std::path::Path>, overrides: &Overrides) -> Result<ParameterSet, Error> {
-    let mut p = ParameterSet::from_file_or_default(params)?;
+    let mut p = ParameterSet::from_file_or_default(params).map_err(|e| e.input("--params"))?;
     apply_overrides(&mut p, &overrides.set)?;
     Ok(p)
 }
@@ -75,7 +75,7 @@ fn run(cli: Cli) -> Result<(), Error> {
             }
             let p = load_parameters(params.as_deref(), &overrides)?;
             let staged = OutputDir::create(&out, &[Some(data.as_path()), params.as_deref()].into_iter().flatten().collect::<Vec<_>>())?;
-            let rec = cellstudio::data::cycler::read_recording(&data, &Default::default())?;
+            let rec = cellstudio::data::cycler::read_recording(&data, &Default::default()).map_err(|e| e.input("--data"))?;
             let submodels = Submodels { contact_resistance, thermal, ..Default::default() };
             let mut options = DiagnoseOptions::new(cellstudio::problem::fitting::ModelSpec::new(model, submodels));
             options.fitted = fit.iter().map(|path| default_fit_parameter(path, &p)).collect::<Result<_, _>>()?;
@@ -98,7 +98,7 @@ fn run(cli: Cli) -> Result<(), Error> {
             use cellstudio::data::cycler::{inspect_json, inspect_text, read_checked};
             // Read and checked as `fit` and `diagnose` read and check a recording.
             let p = load_parameters(params.as_deref(), &overrides)?;
-            let (data, notes) = read_checked(&file, &Default::default(), &p)?;
+            let (data, notes) = read_checked(&file, &Default::default(), &p).map_err(|e| e.input("FILE"))?;
             note(&notes);
             if json { println!("{}", inspect_json(&file, &data)) } else { print!("{}", inspect_text(&file, &data)) }
             Ok(())

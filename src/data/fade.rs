@@ -26,7 +26,7 @@ impl CapacityFade {
     pub fn from_csv(path: &Path) -> Result<Self, Error> {
         let name = path.display().to_string();
         let fail = |message: String| Error::Parse { path: name.clone(), message };
-        let mut reader = csv::Reader::from_path(path).map_err(|e| fail(e.to_string()))?;
+        let mut reader = csv::Reader::from_reader(std::fs::File::open(path).map_err(Error::io(path))?);
         let headers = reader.headers().map_err(|e| fail(e.to_string()))?.clone();
         let column = |wanted: &str| {
             headers.iter().position(|h| h.trim().eq_ignore_ascii_case(wanted)).ok_or_else(|| {

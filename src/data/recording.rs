@@ -4,7 +4,7 @@
 use std::path::Path;
 
 use super::CsvFormat;
-use crate::error::Error;
+use crate::error::{Error, number};
 use crate::params::check::TEMPERATURE_RANGE;
 use crate::params::function::interpolate;
 
@@ -44,7 +44,7 @@ impl Recording {
         let name = path.display().to_string();
         let parse_err = |message: String| Error::Parse { path: name.clone(), message };
         let (kt, ki, kv) = (format.time_factor()?, format.current_factor()?, format.voltage_factor()?);
-        let mut reader = csv::Reader::from_path(path).map_err(|e| parse_err(e.to_string()))?;
+        let mut reader = csv::Reader::from_reader(std::fs::File::open(path).map_err(Error::io(path))?);
         let headers = reader.headers().map_err(|e| parse_err(e.to_string()))?.clone();
         let column = |wanted: &str| headers.iter().position(|h| h.trim() == wanted);
         let required = |wanted: &str| {
@@ -69,8 +69,8 @@ impl Recording {
             let v = kv * value(cv)?;
             if !(v > 0.0 && v < 10.0) {
                 return Err(parse_err(format!(
-                    "line {line}: `{}` = {v} V is not a cell voltage (check voltage_unit = `{}`)",
-                    format.voltage, format.voltage_unit
+                    "line {line}: `{}` = {} V is not a cell voltage (check voltage_unit = `{}`)",
+                    format.voltage, number(v), format.voltage_unit
                 )));
             }
             rec.voltage.push(v);
@@ -78,8 +78,8 @@ impl Recording {
                 let kelvin = format.temperature_in_kelvin(value(c)?)?;
                 if !TEMPERATURE_RANGE.contains(&kelvin) {
                     return Err(parse_err(format!(
-                        "line {line}: `{}` = {kelvin} K is not a cell temperature (check temperature_unit = `{}`: degC reads as K)",
-                        &headers[c], format.temperature_unit
+                        "line {line}: `{}` = {} K is not a cell temperature (check temperature_unit = `{}`: degC reads as K)",
+                        &headers[c], number(kelvin), format.temperature_unit
                     )));
                 }
                 t.push(kelvin);
@@ -97,7 +97,28 @@ impl Recording {
                 rec.time[k]
             )));
         }
+        if let Some((k, reason)) = rec.time_shape_error() {
+            return Err(parse_err(format!("line {}: `{}` = {} {reason}", k + 2, format.time, number(rec.time[k] / kt))));
+        }
         Ok(rec)
+    }
+
+    /// What is wrong with the shape of a non-decreasing time column, if anything: the index of
+    /// the row that breaks it and why. A repeated time marks one current step (two rows at one
+    /// time, as PyBaMM writes them); a third row at that time carries a current that lasts no
+    /// time, which no replay can honour. A recording whose rows all share one time spans
+    /// nothing to simulate.
+    pub fn time_shape_error(&self) -> Option<(usize, String)> {
+        let t = &self.time;
+        if let Some(k) = (2..t.len()).find(|&k| t[k] == t[k - 1] && t[k] == t[k - 2]) {
+            return Some((k, "is the third row at this time: a repeated time marks one current step (two rows), and a third row's current would last no time; remove or re-time it".into()));
+        }
+        match (t.first(), t.last()) {
+            (Some(first), Some(last)) if !(last > first) => {
+                Some((t.len() - 1, "is the time of every row: the recording spans no time".into()))
+            }
+            _ => None,
+        }
     }
 
     /// Writes the recording as CSV in this crate's default format.

@@ -112,7 +112,7 @@ impl Spectrum {
     pub fn from_csv(path: &Path) -> Result<Self, Error> {
         let name = path.display().to_string();
         let parse_err = |message: String| Error::Parse { path: name.clone(), message };
-        let mut reader = csv::Reader::from_path(path).map_err(|e| parse_err(e.to_string()))?;
+        let mut reader = csv::Reader::from_reader(std::fs::File::open(path).map_err(Error::io(path))?);
         let headers = reader.headers().map_err(|e| parse_err(e.to_string()))?.clone();
         let mut cols = [0usize; 3];
         for (slot, wanted) in cols.iter_mut().zip(COLUMNS) {

@@ -43,6 +43,8 @@ pub struct OutputDir {
     staging: PathBuf,
     /// The run's inputs, canonicalised: never removed as stale results.
     inputs: Vec<PathBuf>,
+    /// Folders above the target that did not exist before this run, innermost first.
+    created: Vec<PathBuf>,
     committed: bool,
 }
 
@@ -65,16 +67,23 @@ impl OutputDir {
             Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
             _ => PathBuf::from("."),
         };
-        std::fs::create_dir_all(&parent).map_err(Error::io(&parent))?;
+        // Named by the folder the user asked for, not by the temporary sibling.
+        let unwritable = |e: std::io::Error| Error::InvalidSetting {
+            field: "output folder".into(),
+            reason: format!("cannot write into `{}`: {e}", target.display()),
+        };
+        // The folders this run creates above the target, removed again if it fails.
+        let created: Vec<PathBuf> = parent.ancestors().take_while(|a| !a.as_os_str().is_empty() && !a.exists()).map(Path::to_path_buf).collect();
+        std::fs::create_dir_all(&parent).map_err(unwritable)?;
         let name = name.to_string_lossy();
         partial::remove_abandoned(&parent, &name);
         let staging = partial::staging(&parent, &name);
         if staging.exists() {
             std::fs::remove_dir_all(&staging).map_err(Error::io(&staging))?;
         }
-        std::fs::create_dir(&staging).map_err(Error::io(&staging))?;
+        std::fs::create_dir(&staging).map_err(unwritable)?;
         let inputs = inputs.iter().filter_map(|p| p.canonicalize().ok()).collect();
-        Ok(Self { target: target.to_path_buf(), rejected, staging, inputs, committed: false })
+        Ok(Self { target: target.to_path_buf(), rejected, staging, inputs, created, committed: false })
     }
 
     /// The folder to write into until [`commit`](Self::commit).
@@ -140,6 +149,10 @@ impl Drop for OutputDir {
     fn drop(&mut self) {
         if !self.committed {
             let _ = std::fs::remove_dir_all(&self.staging);
+            // Only while empty: another run may have written into them since.
+            for dir in &self.created {
+                let _ = std::fs::remove_dir(dir);
+            }
         }
     }
 }

@@ -70,7 +70,8 @@ pub fn run_balancing(section: &BalancingSection, stages: &mut Stages, dir: &Path
     let names: Vec<String> = NAMES.iter().map(|n| n.to_string()).collect();
     let x = [b.x_top, b.y_top, b.q_n, b.q_p];
     let mut warnings = super::at_bound_warnings("the electrode balance", &names, &x, &fit.lower, &fit.upper);
-    warnings.extend(super::truncation_warning("the electrode balance", &fit.stop, 0, fit.evaluations));
+    let remedy = "its caps are not a setting of the study: check the pseudo-OCV and the electrodes' OCPs";
+    warnings.extend(super::truncation_warning_with("the electrode balance", &fit.stop, 0, fit.evaluations, remedy));
     let mut applied = p.clone();
     let window = b.apply(&mut applied)?;
     let before = crate::params::stoichiometry_window(p).ok();

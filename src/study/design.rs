@@ -4,6 +4,7 @@
 use super::write_output;
 use std::fmt::Write as _;
 use std::path::PathBuf;
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Instant;
 
 use super::Study;
@@ -24,6 +25,11 @@ struct MaximiseMetric<'a> {
     min_utilisation: f64,
     /// A design outside these is penalised like a failed one.
     limits: &'a [super::limits::Limit],
+    /// Evaluations over every start, those whose simulation failed and those that stopped
+    /// early (both penalised): the report says how much of the search found no design.
+    evaluated: AtomicUsize,
+    failed: AtomicUsize,
+    stopped_early: AtomicUsize,
 }
 
 /// The score of a design outside the limits before its violation is added: above minus any
@@ -43,12 +49,20 @@ impl Objective for MaximiseMetric<'_> {
         self.problem.variables.len()
     }
     fn evaluate(&self, x: &[f64]) -> f64 {
+        self.evaluated.fetch_add(1, Ordering::Relaxed);
         match self.problem.evaluate(x) {
             Ok(m) if !m.stopped_early(self.min_utilisation) => match super::limits::violation(self.limits, &m) {
                 0.0 => -m.get(self.metric),
                 v => OUTSIDE_LIMITS + v,
             },
-            _ => f64::INFINITY,
+            Ok(_) => {
+                self.stopped_early.fetch_add(1, Ordering::Relaxed);
+                f64::INFINITY
+            }
+            Err(_) => {
+                self.failed.fetch_add(1, Ordering::Relaxed);
+                f64::INFINITY
+            }
         }
     }
 }
@@ -110,7 +124,7 @@ pub fn run_design(study: &Study) -> Result<DesignOutcome, Error> {
         .map_err(|e: toml::de::Error| Error::InvalidSetting { field: "optimiser".into(), reason: e.to_string() })?;
     let mut optimiser = by_name(&method, options.clone())?;
     let dir = study.output_dir()?;
-    let objective = MaximiseMetric { problem: &problem, metric, min_utilisation: study.operating.min_utilisation(), limits: &study.limits };
+    let objective = MaximiseMetric { problem: &problem, metric, min_utilisation: study.operating.min_utilisation(), limits: &study.limits, evaluated: AtomicUsize::new(0), failed: AtomicUsize::new(0), stopped_early: AtomicUsize::new(0) };
     let bounds = Bounds::new(
         study.variables.iter().map(|v| v.lower).collect(),
         study.variables.iter().map(|v| v.upper).collect(),
@@ -176,6 +190,14 @@ pub fn run_design(study: &Study) -> Result<DesignOutcome, Error> {
     let mut warnings = study.warnings();
     warnings.extend(super::at_bound_warnings("the optimum", &names, &result.x, &lower, &upper));
     warnings.extend(super::truncation_warning("the design search", &result.stop, result.iterations, result.evaluations));
+    let evaluations = objective.evaluated.load(Ordering::Relaxed);
+    for (count, what) in [(objective.failed.load(Ordering::Relaxed), "failed to simulate"), (objective.stopped_early.load(Ordering::Relaxed), "stopped early")] {
+        if count > 0 {
+            warnings.push(format!(
+                "{count} of the {evaluations} designs the search evaluated {what} and were ranked below every valid design; the optimum may sit on the edge of the region where that happens"
+            ));
+        }
+    }
     if initial.stopped_early(min_u) {
         warnings.push(format!("the baseline's discharge stops early: it delivers {:.1} % of its theoretical capacity (threshold {:.0} %)", 100.0 * initial.utilisation, 100.0 * min_u));
     }
@@ -192,13 +214,15 @@ pub fn run_design(study: &Study) -> Result<DesignOutcome, Error> {
             metric.label()
         ));
     }
-    let grid = match &study.sweep {
+    // Counted before the points are made: a large grid is `sweep`'s job, not held here.
+    let grid = match study.sweep.as_ref().and_then(super::Sweep::size) {
+        Some(n) if n > SWEEP_CHECK_LIMIT => {
+            warnings.push(format!("the study's sweep has {n} points, more than the {SWEEP_CHECK_LIMIT} `design` evaluates as a check: run `sweep` to compare"));
+            Vec::new()
+        }
         Some(_) => super::sweep::sweep_candidates(study)?,
         None => Vec::new(),
     };
-    if grid.len() > SWEEP_CHECK_LIMIT {
-        warnings.push(format!("the study's sweep has {} points, more than the {SWEEP_CHECK_LIMIT} `design` evaluates as a check: run `sweep` to compare", grid.len()));
-    }
     let sweep_best = match grid.len() {
         1..=SWEEP_CHECK_LIMIT => {
             let points = super::sweep::evaluate_points(study, &problem, &initial, grid)?;

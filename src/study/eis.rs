@@ -59,6 +59,9 @@ pub fn frequency_grid(values: &[f64]) -> Result<(f64, f64, usize), Error> {
     Ok((f0, f1, n as usize))
 }
 
+/// The most model spectra an impedance fit evaluates (not a setting of `eis`).
+const EIS_FIT_EVALUATIONS: usize = 2000;
+
 /// A measured spectrum and the parameters to fit to it.
 pub struct EisFitRequest {
     /// The measured spectrum (CSV).
@@ -111,7 +114,7 @@ pub fn run_eis(run: &EisRun) -> Result<EisOutcome, Error> {
             (s, None)
         }
         Some(EisFitRequest { data: data_path, parameters: variables }) => {
-            let data = Spectrum::from_csv(data_path)?;
+            let data = Spectrum::from_csv(data_path).map_err(|e| e.input("--fit"))?;
             // Two numbers (real, imaginary) per frequency; a fit needs more than it has unknowns.
             if data.len() <= variables.len() {
                 return Err(Error::InvalidSetting {
@@ -126,7 +129,7 @@ pub fn run_eis(run: &EisRun) -> Result<EisOutcome, Error> {
             }
             let bounds = Bounds::new(x0.iter().map(|x| x / 10.0).collect(), x0.iter().map(|x| x * 10.0).collect())?;
             let problem = Problem::new(&objective, bounds.clone())?.with_transforms(vec![Transform::Log; x0.len()])?;
-            let options = OptimOptions::default().with_seed(1).with_max_evaluations(2000)?.with_f_tolerance(1e-12)?;
+            let options = OptimOptions::default().with_seed(1).with_max_evaluations(EIS_FIT_EVALUATIONS)?.with_f_tolerance(1e-12)?;
             let start = std::time::Instant::now();
             let mut progress = ProgressObserver::new("EIS fit", options.max_iterations, |f| format!("cost {f:.4e}"));
             let result = by_name(&run.optimiser, options)?.minimise(&problem, &x0, &mut progress)?;
@@ -141,9 +144,23 @@ pub fn run_eis(run: &EisRun) -> Result<EisOutcome, Error> {
                     reason: format!("{}; it searches one decade either side of the set's value: set a starting value nearer the data with --set (nothing written)", on_bound.join("; ")),
                 });
             }
-            warnings.extend(super::truncation_warning("the impedance fit", &result.stop, result.iterations, result.evaluations));
+            let remedy = format!("its cap of {EIS_FIT_EVALUATIONS} evaluations is fixed: fit fewer --parameters or choose another --optimiser");
+            warnings.extend(super::truncation_warning_with("the impedance fit", &result.stop, result.iterations, result.evaluations, &remedy));
             let (initial, fitted) = (spectrum_of(variables, &x0)?, spectrum_of(variables, &result.x)?);
             nyquist_plot(&nyquist, &title, Some(("data", &data)), &[("initial", &initial), ("fitted", &fitted)])?;
+            // The fitted values on file, with how the search ended: a truncated fit says so.
+            let json = serde_json::json!({
+                "data": data_path.display().to_string(),
+                "parameters": variables.iter().zip(&result.x).map(|(n, v)| (n.clone(), serde_json::json!(v))).collect::<serde_json::Map<_, _>>(),
+                "start": variables.iter().zip(&x0).map(|(n, v)| (n.clone(), serde_json::json!(v))).collect::<serde_json::Map<_, _>>(),
+                "cost": result.f,
+                "stop": format!("{:?}", result.stop),
+                "iterations": result.iterations,
+                "evaluations": result.evaluations,
+                "optimiser": run.optimiser,
+                "warnings": warnings,
+            });
+            super::write_output(out.path(), "fit.json", serde_json::to_string_pretty(&json).unwrap_or_default(), &mut files)?;
             (fitted, Some(EisFitted { names: variables.clone(), values: result.x.clone(), result, seconds }))
         }
     };

@@ -67,7 +67,7 @@ impl FadeFitSpec {
     /// Fits the parameters to the curve for the cell `base` (at its starting state) cycled
     /// through `cycle`; returns the fitted set and the outcome.
     pub fn fit(&self, base: &ParameterSet, kind: ModelKind, submodels: Submodels, cycle: &Protocol, options: &SimOptions) -> Result<(ParameterSet, FadeFitOutcome), Error> {
-        let data = CapacityFade::from_csv(&self.data)?;
+        let data = CapacityFade::from_csv(&self.data).map_err(|e| e.input("fit.data"))?;
         let problem = FadeProblem { base: base.clone(), kind, submodels, cycle: cycle.clone(), options: options.clone(), parameters: self.parameters.clone(), data };
         let start = problem.initial();
         let start_ah = problem.run(&start)?;

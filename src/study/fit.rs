@@ -211,7 +211,8 @@ impl FitStudy {
     pub fn recording(&self, k: usize, data: Option<&Path>) -> Result<Recording, Error> {
         let d = &self.data[k];
         let data = data.filter(|_| k == 0);
-        let mut rec = crate::data::cycler::read_recording(data.unwrap_or(&d.file), &d.format)?;
+        let field = if data.is_some() { "--data".to_string() } else { format!("data.{}.file", d.label(k)) };
+        let mut rec = crate::data::cycler::read_recording(data.unwrap_or(&d.file), &d.format).map_err(|e| e.input(&field))?;
         if data.is_none() && d.synthetic_noise > 0.0 {
             let mut rng = rand::rngs::StdRng::seed_from_u64(d.noise_seed);
             let noise = Normal::new(0.0, d.synthetic_noise).expect("checked non-negative");
@@ -251,7 +252,7 @@ impl FitStudy {
             problem = problem.starting_at_rest()?;
         }
         if let Some(path) = &d.protocol {
-            let text = std::fs::read_to_string(path).map_err(Error::io(path))?;
+            let text = std::fs::read_to_string(path).map_err(|e| Error::io(path)(e).input(&format!("data.{}.protocol", d.label(k))))?;
             let protocol = toml::from_str(&text).map_err(|e| Error::Parse { path: path.display().to_string(), message: e.to_string() })?;
             problem = problem.with_protocol(protocol)?;
         }

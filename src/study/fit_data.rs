@@ -91,10 +91,8 @@ impl DataChoice {
         if !(self.weight >= 0.0 && self.weight.is_finite()) {
             return Err(Error::invalid(field("weight"), self.weight, "must be non-negative and finite"));
         }
-        if let Some(t) = self.temperature
-            && !(t > 0.0 && t < 1000.0)
-        {
-            return Err(Error::invalid(field("temperature"), t, "must be a temperature in kelvin"));
+        if let Some(t) = self.temperature {
+            crate::params::check::temperature(&field("temperature"), t)?;
         }
         match self.initial_soc {
             Some(_) if self.start_at_rest_voltage => Err(Error::InvalidSetting {

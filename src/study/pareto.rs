@@ -50,6 +50,10 @@ fn nsga2_options(study: &Study) -> Result<Nsga2Options, Error> {
     }
     let opts: Nsga2Options = table.try_into().map_err(|e: toml::de::Error| Error::InvalidSetting { field: "optimiser".into(), reason: e.to_string() })?;
     opts.validate()?;
+    // Every design of every generation is kept (the archive behind the plots and counts).
+    let designs = opts.population as f64 * (opts.generations as f64 + 1.0);
+    let given = format!("population = {} with {} generations", opts.population, opts.generations);
+    super::check_design_count("optimiser.population", &given, designs)?;
     Ok(opts)
 }
 

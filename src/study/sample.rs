@@ -91,6 +91,21 @@ pub fn run_sample(study: &FitStudy, data: Option<&Path>) -> Result<SampleOutcome
     let mut centre = fitted.result.x[..problem.dim()].to_vec();
     let mut spread: Vec<f64> = centre.iter().zip(&fitted.result.std_errors).map(|(x, e)| e.min(0.1 * x.abs())).collect();
     if names.len() > problem.dim() {
+        // The noise level is sampled within its prior's range; a fit whose residual lies
+        // outside it (a model-made, noise-free recording) leaves no start with a density.
+        let (lo, hi) = crate::problem::identification::SIGMA_BOUNDS;
+        if !(lo..=hi).contains(&fitted.result.rmse) {
+            return Err(Error::InvalidSetting {
+                field: "cost".into(),
+                reason: format!(
+                    "the fit's RMS residual, {} V, lies outside the range [{}, {}] V in which `sample` searches the noise level sigma (the recording is {} for a sampled noise level); give it instead: [cost] kind = \"gaussian_log_likelihood\", sigma = ... (V)",
+                    crate::error::number(fitted.result.rmse),
+                    crate::error::number(lo),
+                    crate::error::number(hi),
+                    if fitted.result.rmse < lo { "too clean, probably model-made," } else { "too far from the model" }
+                ),
+            });
+        }
         let n = problem.weights.iter().filter(|w| **w > 0.0).count() as f64;
         centre.push(fitted.result.rmse);
         spread.push(fitted.result.rmse / (2.0 * n).sqrt());

@@ -85,7 +85,7 @@ impl ProtocolSource {
             }
             ProtocolSource::Experiment(steps) => crate::protocol::experiment::parse(steps, p.cell.nominal_capacity),
             ProtocolSource::File(path) => {
-                let text = std::fs::read_to_string(path).map_err(Error::io(path))?;
+                let text = std::fs::read_to_string(path).map_err(|e| Error::io(path)(e).input("--protocol"))?;
                 toml::from_str(&text).map_err(|e| Error::Parse { path: path.display().to_string(), message: e.to_string() })
             }
         }
@@ -104,6 +104,9 @@ impl ProtocolSource {
 
 /// Builds the model, solves `run.repeat` times (timed), and writes the outputs (all or none).
 pub fn run_simulate(run: &SimulateRun) -> Result<SimulateOutcome, Error> {
+    if run.repeat == 0 {
+        return Err(Error::invalid("--repeat", 0.0, "must be at least 1"));
+    }
     if run.mesh < 2 {
         return Err(Error::invalid("--mesh", run.mesh as f64, "must be at least 2 volumes"));
     }
@@ -123,7 +126,7 @@ pub fn run_simulate(run: &SimulateRun) -> Result<SimulateOutcome, Error> {
     let opts = SimOptions::for_cell(p);
     let mut times = Vec::new();
     let mut solution = None;
-    for _ in 0..run.repeat.max(1) {
+    for _ in 0..run.repeat {
         let t = Instant::now();
         solution = Some(simulate(built.model.as_ref(), &mut built.workspace, &protocol, &opts, None).map_err(|e| run.protocol.name_failure(e))?);
         times.push(t.elapsed().as_secs_f64());

@@ -108,6 +108,11 @@ impl Study {
                     reason: format!("needs one count >= 2 per variable ({} variables), got {:?}", self.variables.len(), s.points),
                 });
             }
+            let (field, given, size) = match s.design {
+                SweepDesign::Grid => ("sweep.points", format!("{:?}", s.points), s.points.iter().map(|&k| k as f64).product::<f64>()),
+                SweepDesign::LatinHypercube => ("sweep.samples", s.samples.unwrap_or(0).to_string(), s.samples.unwrap_or(0) as f64),
+            };
+            super::check_design_count(field, &given, size)?;
         }
         for (k, c) in self.constraints.iter().enumerate() {
             for path in c.terms.keys() {

@@ -49,13 +49,25 @@ pub fn at_bound_warnings(what: &str, names: &[String], x: &[f64], lower: &[f64],
 /// A warning when an optimiser stopped on its iteration or evaluation cap rather than on
 /// convergence: the result is the best found so far, not an optimum.
 pub fn truncation_warning(what: &str, stop: &crate::optim::StopReason, iterations: usize, evaluations: usize) -> Option<String> {
-    use crate::optim::StopReason;
-    let cap = match stop {
-        StopReason::MaxIterations => "iteration",
-        StopReason::MaxEvaluations => "evaluation",
-        _ => return None,
-    };
+    let cap = cap_name(stop)?;
+    truncation_warning_with(what, stop, iterations, evaluations, &format!("raise [optimiser] max_{cap}s to go on"))
+}
+
+/// [`truncation_warning`] for a search whose cap the user cannot raise: `remedy` says what to
+/// do instead.
+pub fn truncation_warning_with(what: &str, stop: &crate::optim::StopReason, iterations: usize, evaluations: usize, remedy: &str) -> Option<String> {
+    let cap = cap_name(stop)?;
     Some(format!(
-        "{what} stopped on its {cap} cap ({iterations} iterations, {evaluations} evaluations) before converging: the result is the best found so far; raise [optimiser] max_{cap}s to go on"
+        "{what} stopped on its {cap} cap ({iterations} iterations, {evaluations} evaluations) before converging: the result is the best found so far; {remedy}"
     ))
+}
+
+/// `iteration` or `evaluation` for a search stopped on that cap; `None` for any other end.
+fn cap_name(stop: &crate::optim::StopReason) -> Option<&'static str> {
+    use crate::optim::StopReason;
+    match stop {
+        StopReason::MaxIterations => Some("iteration"),
+        StopReason::MaxEvaluations => Some("evaluation"),
+        _ => None,
+    }
 }

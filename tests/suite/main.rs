@@ -48,6 +48,8 @@ mod profile_likelihood;
 mod pulse_power;
 mod readers_never_panic;
 mod readme;
+mod refused_inputs;
+mod reported_searches;
 mod recording_sign;
 mod reference_curves;
 mod samplers;

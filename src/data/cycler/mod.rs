@@ -121,9 +121,16 @@ pub fn read_str(name: &str, text: &str) -> Result<CyclerData, Error> {
         .iter()
         .find_map(|(f, header, layout)| header(head).map(|k| (*f, k, layout)))
         .ok_or_else(|| {
+            if lines.iter().all(|l| l.trim().is_empty()) {
+                return parse_err("the file is empty".into());
+            }
+            let first = lines.first().copied().unwrap_or_default();
+            // Our columns separated by something else (a spreadsheet's `;` or a tab).
+            let separator = [';', '\t'].into_iter().find(|&c| ["time_s", "current_A", "voltage_V"].iter().all(|n| first.split(c).any(|f| f.trim().trim_matches('"') == *n)));
+            let hint = separator.map_or(String::new(), |c| format!("; its columns are separated by {c:?}: save it with commas (and `.` decimals)"));
             parse_err(format!(
-                "not a known cycler export: no Basytec, BioLogic, Maccor, Neware, Arbin or time_s,current_A,voltage_V header in the first {HEADER_SEARCH_LINES} lines (first line: `{}`)",
-                lines.first().map(|l| l.chars().take(80).collect::<String>()).unwrap_or_default()
+                "not a known cycler export: no Basytec, BioLogic, Maccor, Neware, Arbin or time_s,current_A,voltage_V header in the first {HEADER_SEARCH_LINES} lines (first line: `{}`){hint}",
+                first.chars().take(80).collect::<String>()
             ))
         })?;
     let table = table::table(&lines, header, 0);

@@ -206,7 +206,9 @@ pub fn read_rows(table: &Table, layout: &Layout) -> Result<Rows, String> {
     let mut step: Option<Vec<i64>> = layout.step.map(|_| Vec::new());
     let mut dropped = 0;
     let mut t0 = None;
-    for (line, fields) in &table.rows {
+    // The table row of every kept row, for the time checks after the loop.
+    let mut kept = Vec::new();
+    for (row, (line, fields)) in table.rows.iter().enumerate() {
         let text = |col: usize| fields.get(col).copied().unwrap_or("");
         let number = |col: usize| -> Result<f64, String> {
             let s = text(col);
@@ -256,6 +258,7 @@ pub fn read_rows(table: &Table, layout: &Layout) -> Result<Rows, String> {
                 continue;
             }
         }
+        kept.push(row);
         rec.time.push(t);
         rec.current.push(i);
         rec.voltage.push(v);
@@ -277,6 +280,10 @@ pub fn read_rows(table: &Table, layout: &Layout) -> Result<Rows, String> {
     }
     if rec.time.len() < 2 {
         return Err(format!("needs at least 2 data rows, found {}", rec.time.len()));
+    }
+    if let Some((k, reason)) = rec.time_shape_error() {
+        let ((ct, _), (line, fields)) = (layout.time, &table.rows[kept[k]]);
+        return Err(format!("line {line}: `{}` = `{}` {reason}", h[ct], fields.get(ct).copied().unwrap_or("")));
     }
     Ok(Rows { recording: rec, step, time_offset: t0.unwrap_or(0.0), dropped_repeats: dropped })
 }
