@@ -183,10 +183,16 @@ fn fit_pair(a: &CandidateOutcome, b: &CandidateOutcome, round: &Round, start: Pa
     let clears = round.options.margins.cleared_by(&comparison, round.noise);
     let (names, values): (Vec<String>, Vec<f64>) =
         fit.names.iter().zip(&fit.values).filter(|(n, _)| !round.baseline.names.contains(n)).map(|(n, v)| (n.clone(), *v)).unzip();
-    // Twice the parameters: each must also be determined by the recording.
+    // Twice the parameters: each must also be determined by the recording, its standard
+    // error within its value; for a signed parameter (its search range spans zero, as an
+    // initial hysteresis state does) within half its range: near zero is a value there.
+    let scale = |n: &str, v: f64| {
+        let signed = next.as_ref().and_then(|m| m.fitted.iter().find(|p| p.path == n)).filter(|p| p.lower < 0.0 && p.upper > 0.0);
+        signed.map_or(v.abs(), |p| 0.5 * (p.upper - p.lower))
+    };
     let undetermined = names.iter().zip(&values).filter_map(|(n, v)| {
         let se = fit.std_errors[fit.names.iter().position(|m| m == n)?];
-        let relative = se / v.abs().max(f64::MIN_POSITIVE);
+        let relative = se / scale(n, *v).max(f64::MIN_POSITIVE);
         (!(relative <= crate::problem::verdict::MAX_RELATIVE_ERROR)).then(|| format!("{n} is not determined by this recording (±{:.0} %)", 100.0 * relative))
     });
     // A parameter-mismatch partner whose fitted values are the set's own (within two
