@@ -623,7 +623,9 @@ fn m8_a_pair_member_that_stood_in_is_dropped_from_the_conclusion_spme() {
     // lithium, C/3 deep cycle with 1 h rests. Round 1 named negative LAM with hysteresis,
     // round 2 the lithium; the final model puts the active fractions back at the set's
     // values, but the conclusion still listed the LAM: a pair's effects are now taken out
-    // one at a time by the backward check.
+    // one at a time by the backward check. Since the tenth session round 1 names the true
+    // pair itself (inventory with hysteresis; its initial hysteresis state, near zero, is
+    // judged against its range).
     let rounds = run_case("diagnosis-extra/m8_hysteresis_and_inventory_c3_cycle_rests_spme");
     let conclusion = report::conclusion(&rounds).to_lowercase();
     let kept = conclusion.split("superseded").next().unwrap_or_default();
