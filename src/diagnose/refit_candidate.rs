@@ -117,7 +117,6 @@ pub(super) fn refit_candidate(
     }
 }
 
-
 /// `base` with its initial concentrations at state of charge `soc` (when there is one and it
 /// lies in [0, 1]): where a candidate that frees the stoichiometry window starts, the
 /// previous model's state (no effect).
