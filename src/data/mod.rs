@@ -2,6 +2,7 @@
 //! comparison of simulated voltage against a recording.
 
 pub mod cycler;
+mod current_noise;
 mod fade;
 mod format;
 mod pseudo_ocv;

@@ -11,13 +11,26 @@ use crate::protocol::{Protocol, Step};
 /// change between 1 s samples of a drive cycle.
 pub const CONSTANT_CURRENT_TOLERANCE: f64 = 2e-3;
 
+/// Spread within which recorded currents count as one constant step on a noisy channel, in
+/// standard deviations of its noise ([`Recording::current_noise`]): two samples of one step
+/// differ by more than this with odds of 1 in 2000.
+pub const CONSTANT_CURRENT_IN_NOISE: f64 = 5.0;
+
+/// Standard errors within which the mean current of a constant stretch on a noisy channel
+/// counts as zero (a rest).
+const REST_IN_STANDARD_ERRORS: f64 = 3.0;
+
 impl Recording {
     /// The recorded current (A, discharge positive) as a protocol, linear between samples.
     /// Samples whose currents agree within [`CONSTANT_CURRENT_TOLERANCE`] of the largest
-    /// current are one constant step at their mean (a cycler's constant current carries a
-    /// few mA of measurement noise); a rest is a stretch of zero current.
+    /// current, or within [`CONSTANT_CURRENT_IN_NOISE`] standard deviations of the channel's
+    /// noise where that is larger, are one constant step at their mean (a cycler's constant
+    /// current carries measurement noise); a rest is a stretch of zero current, or on a noisy
+    /// channel one whose mean is zero within its standard error.
     pub fn protocol(&self) -> Protocol {
-        let tol = CONSTANT_CURRENT_TOLERANCE * self.current.iter().fold(0.0f64, |m, v| m.max(v.abs())).max(1e-12);
+        let noise = self.current_noise();
+        let largest = self.current.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        let tol = (CONSTANT_CURRENT_TOLERANCE * largest).max(CONSTANT_CURRENT_IN_NOISE * noise).max(1e-12);
         let (t, i) = &self.with_triggered_jumps(tol);
         let mut steps = Vec::new();
         // The open stretch: start index and whether it is constant.
@@ -27,14 +40,15 @@ impl Recording {
                 return;
             }
             let duration = t[end] - t[start];
+            // The charge-weighted mean over the stretch (trapezoids).
+            let mean = (start..end).map(|k| 0.5 * (i[k] + i[k + 1]) * (t[k + 1] - t[k])).sum::<f64>() / duration;
+            let zero_in_noise = mean.abs() <= REST_IN_STANDARD_ERRORS * noise / ((end + 1 - start) as f64).sqrt();
             steps.push(if !constant {
                 Step::Table { time: t[start..=end].iter().map(|v| v - t[start]).collect(), current: i[start..=end].to_vec() }
-            } else if i[start..=end].iter().all(|v| *v == 0.0) {
+            } else if i[start..=end].iter().all(|v| *v == 0.0) || zero_in_noise {
                 Step::Rest { duration }
             } else {
-                // The charge-weighted mean over the stretch (trapezoids).
-                let charge: f64 = (start..end).map(|k| 0.5 * (i[k] + i[k + 1]) * (t[k + 1] - t[k])).sum();
-                Step::Current { current: charge / duration, duration, until_voltage: None }
+                Step::Current { current: mean, duration, until_voltage: None }
             });
         };
         for k in 0..t.len() - 1 {
@@ -128,6 +142,31 @@ mod tests {
             ]
         );
         assert_eq!(p.duration(), 50.0);
+    }
+
+    #[test]
+    fn steps_on_a_noisy_current_channel_are_read_at_their_means() {
+        use rand::SeedableRng;
+        use rand_distr::{Distribution, Normal};
+        // 10 s rest, then 40 steps of 5 A or -3 A, 12 s each, 1 s samples, 25 mA sensor noise.
+        let levels: Vec<f64> = (0..40).map(|k| if (k * 7) % 3 == 0 { -3.0 } else { 5.0 }).collect();
+        let set: Vec<f64> = std::iter::repeat_n(0.0, 11).chain(levels.iter().flat_map(|l| std::iter::repeat_n(*l, 12))).collect();
+        let mut rng = rand::rngs::StdRng::seed_from_u64(3);
+        let noise = Normal::new(0.0, 0.025).unwrap();
+        let time: Vec<f64> = (0..set.len()).map(|k| k as f64).collect();
+        let current: Vec<f64> = set.iter().map(|i| i + noise.sample(&mut rng)).collect();
+        let steps = rec(&time, &current).protocol().steps;
+        // One rest, then per change of level a one-second ramp between two constant steps.
+        let constant: Vec<&Step> = steps.iter().filter(|s| !matches!(s, Step::Table { .. })).collect();
+        let changes = 1 + levels.windows(2).filter(|w| w[0] != w[1]).count();
+        assert_eq!(constant.len(), changes + 1, "{steps:?}");
+        assert!(matches!(constant[0], Step::Rest { .. }), "{:?}", constant[0]);
+        for step in &constant[1..] {
+            let Step::Current { current, .. } = step else { panic!("{step:?}") };
+            // A mean of about 11 samples: within 3 standard errors (23 mA) of its level.
+            let off = (current - 5.0).abs().min((current + 3.0).abs());
+            assert!(off < 0.023, "{step:?}");
+        }
     }
 
     #[test]

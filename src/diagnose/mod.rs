@@ -341,6 +341,13 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
         let r: Vec<f64> = data.voltage.iter().zip(&f.voltage).map(|(d, m)| m - d).collect();
         locate::analyse(&data, &features, &r, q)
     });
+    let current_noise = data.current_noise();
+    if current_noise > 0.0 {
+        notes.push(format!(
+            "The current channel carries {:.1} mA RMS of white noise; stretches constant within it are driven at their mean current, not sample by sample.",
+            current_noise * 1e3
+        ));
+    }
     if data.temperature.is_some() {
         notes.push(format!("The model runs at (or starts from) the recording's first temperature, {:.2} K.", base.thermal.ambient_temperature));
     }
