@@ -13,6 +13,9 @@ each with PyBaMM's option "loss of active material" set to
   electrode's stress-driven law alone, with plain particle diffusion (the diagnosis's
   progressive-LAM candidate; OKane2022's positive mechanics without stress-induced diffusion
   drive the positive fraction below zero within five cycles, so the positive is left out);
+- "current-driven" (throughput-driven), both electrodes, with the "current-driven LAM rate"
+  function `-K |i|` of the applied current density `i` (A/m^2), K = CURRENT_RATE m^2/(A s)
+  (PyBaMM's sets define no such function; K takes about 1 % of each electrode per cycle);
 x-averaged states in the SPM and SPMe, an active material volume fraction per electrode x
 volume in the DFN (PyBaMM's defaults); PyBaMM's default mesh (20 volumes per x-domain and per
 particle, as ours), IDAKLU at rtol = atol = 1e-8.
@@ -32,10 +35,10 @@ Writes into the folder given (default tests/data/lam):
 - `meta.json`: versions, options, parameters, protocol, timings.
 
     python3.11 -m venv /tmp/pyb && /tmp/pyb/bin/pip install -r scripts/requirements.txt
-    /tmp/pyb/bin/python scripts/make_lam_reference.py tests/data/lam [spm,spme,dfn]
+    /tmp/pyb/bin/python scripts/make_lam_reference.py tests/data/lam [spm,spme,dfn] [current_driven,...]
 
-(the optional second argument names the models to (re)make; the other cases stay in
-`meta.json`.)
+(the optional second and third arguments name the models and the options to (re)make; the
+other cases stay in `meta.json`.)
 """
 
 import json
@@ -60,7 +63,9 @@ OPTIONS = {
     "reaction_driven": {"loss of active material": "reaction-driven", "SEI": "reaction limited"},
     "stress_and_reaction_driven": {"loss of active material": "stress and reaction-driven", "SEI": "reaction limited"},
     "negative_stress_driven_plain_diffusion": {"loss of active material": ("stress-driven", "none"), "stress-induced diffusion": "false"},
+    "current_driven": {"loss of active material": "current-driven"},
 }
+CURRENT_RATE = 3e-8
 REACTION_FACTOR = 1e-4
 # The largest "LAM constant proportional term [s-1]" of the notebook's sweep (1e-2 per hour,
 # 10x OKane2022's): enough to see in a few cycles.
@@ -78,6 +83,9 @@ def parameters():
     for d in ["Negative", "Positive"]:
         extra[f"{d} electrode LAM constant proportional term [s-1]"] = PROPORTIONAL_TERM
     p.update(extra, check_already_exists=False)
+    for d in ["Negative", "Positive"]:
+        p.update({f"{d} electrode current-driven LAM rate": lambda i, T: -CURRENT_RATE * abs(i)}, check_already_exists=False)
+    extra["current-driven LAM rate"] = f"-{CURRENT_RATE:g} * |i| (both electrodes)"
     return p, extra
 
 
@@ -91,7 +99,8 @@ def main(root):
         with open(os.path.join(root, "meta.json")) as f:
             meta["cases"] = json.load(f)["cases"]
     for mname, cls in ((m, MODELS[m]) for m in models):
-        for oname, options in OPTIONS.items():
+        chosen = sys.argv[3].split(",") if len(sys.argv) > 3 else list(OPTIONS)
+        for oname, options in ((o, OPTIONS[o]) for o in chosen):
             model = cls(dict(options))  # PyBaMM writes its defaults into the dict it is given
             sim = pybamm.Simulation(model, parameter_values=params.copy(),
                                     experiment=pybamm.Experiment([tuple(CYCLE)] * CYCLES, period="60 seconds"),

@@ -15,7 +15,7 @@ use super::electrochem::{Electrochem, Side};
 use super::electrolyte::ElectrolyteOp;
 use super::kinetics::{electrolyte_factor, log_mean, mean_overpotential};
 use super::submodels::plating::Site;
-use super::submodels::{LamLayer, PlatingLayer, SeiLayer};
+use super::submodels::{LamDrivers, LamLayer, PlatingLayer, SeiLayer};
 use super::submodels::thermal::bernardi_heat;
 use super::{Model, PhysicsModel, push_tridiagonal};
 use crate::params::{FARADAY, GAS_CONSTANT, ParameterSet};
@@ -380,7 +380,7 @@ impl Model for Spme {
         let (sn, _) = ec.single_particle_surfaces(&cn, &cp);
         let [j_sei, j_plating] = self.side_rhs(y, sn, current, temp, out);
         let a_j_sei = self.lam.surface_area_density(ec, Side::Negative, y, 0) * j_sei;
-        let rates = self.lam.rhs(ec, [&cn, &cp], a_j_sei, out);
+        let rates = self.lam.rhs(ec, [&cn, &cp], LamDrivers { a_j_sei, current_density: current / ec.area() }, out);
         for (side, c, range, side_reaction, rate) in [(Side::Negative, &cn, 0..nn, j_sei + j_plating, rates[0]), (Side::Positive, &cp, nn..nn + np, 0.0, rates[1])] {
             let flux = Electrochem::molar_flux(self.lam.interfacial_current(ec, side, y, current) - side_reaction);
             self.lam.particle_rhs(ec, side, 0, y, c, flux, rate, temp, &mut out[range]);

@@ -42,6 +42,11 @@ pub struct LamElectrode {
     pub reference_concentration: f64,
     /// "reaction-driven LAM factor [m3.mol-1]" `beta_LAM_sei` (reaction-driven).
     pub reaction_factor: f64,
+    /// Current-driven LAM coefficient `k_I` (m^2/(A s)): `d eps / dt = -k_I |I / A|`, PyBaMM's
+    /// "current-driven LAM rate" function `-k_I |i|` (PyBaMM's sets define no such function;
+    /// 0 here, so that turning the law on changes nothing until it is given).
+    #[serde(default)]
+    pub current_rate: f64,
 }
 
 impl Default for Lam {
@@ -55,6 +60,7 @@ impl Default for Lam {
             poisson_ratio: 0.3,
             reference_concentration: 0.0,
             reaction_factor: 1e-4,
+            current_rate: 0.0,
         };
         let positive = LamElectrode {
             critical_stress: 3.75e8,
@@ -79,7 +85,8 @@ impl LamElectrode {
         non_negative(&f("youngs_modulus"), self.youngs_modulus)?;
         check(&f("poisson_ratio"), self.poisson_ratio, self.poisson_ratio > -1.0 && self.poisson_ratio < 0.5, "must lie in (-1, 0.5)")?;
         non_negative(&f("reference_concentration"), self.reference_concentration)?;
-        non_negative(&f("reaction_factor"), self.reaction_factor)
+        non_negative(&f("reaction_factor"), self.reaction_factor)?;
+        non_negative(&f("current_rate"), self.current_rate)
     }
 
     /// The coefficient `theta_M = Omega / (R T) * 2 Omega E / (9 (1 - nu))` (m^3/mol) of
@@ -107,6 +114,7 @@ impl LamElectrode {
             "poisson_ratio" => &mut self.poisson_ratio,
             "reference_concentration" => &mut self.reference_concentration,
             "reaction_factor" => &mut self.reaction_factor,
+            "current_rate" => &mut self.current_rate,
             _ => return None,
         })
     }

@@ -5,7 +5,9 @@
 //! and "reaction-driven" (with the SEI "reaction limited", reaction-driven LAM factor 1e-4
 //! m^3/mol), both ("stress and reaction-driven", with the SEI), and the negative electrode's
 //! stress-driven law alone with plain particle diffusion (`stress_induced_diffusion = false`,
-//! PyBaMM's ("stress-driven", "none") with "stress-induced diffusion" "false"), through 5
+//! PyBaMM's ("stress-driven", "none") with "stress-induced diffusion" "false"), and
+//! "current-driven" in both electrodes (PyBaMM's "current-driven LAM rate" `-K |i|`, K =
+//! [`CURRENT_RATE`]), through 5
 //! CC-CV cycles, the same mesh, PyBaMM's IDAKLU at rtol = atol = 1e-8 and
 //! ours at 1e-8. Compared: the voltage outside the holds, the current in the holds, the
 //! active material volume fractions and the lithium lost with them against time, and the
@@ -21,15 +23,19 @@ use cellstudio::protocol::{Protocol, Step, experiment};
 const CYCLE: [&str; 5] = ["Discharge at 1C until 3.0 V", "Rest for 10 minutes", "Charge at 1C until 4.1 V", "Hold at 4.1 V until C/20", "Rest for 10 minutes"];
 const CYCLES: usize = 5;
 /// The reference's cases: submodels and file name.
-fn cases() -> [(Submodels, &'static str); 4] {
+fn cases() -> [(Submodels, &'static str); 5] {
     let on = |lam, sei| Submodels { lam, sei, ..Default::default() };
     [
         (on(LamModel::StressDriven, SeiModel::None), "stress_driven"),
         (on(LamModel::ReactionDriven, SeiModel::ReactionLimited), "reaction_driven"),
         (on(LamModel::StressAndReactionDriven, SeiModel::ReactionLimited), "stress_and_reaction_driven"),
         (Submodels { stress_induced_diffusion: Some(false), ..on(LamModel::StressDriven, SeiModel::None) }, NEGATIVE_ONLY),
+        (on(LamModel::CurrentDriven, SeiModel::None), "current_driven"),
     ]
 }
+
+/// The reference's current-driven LAM coefficient (m^2/(A s)), both electrodes.
+const CURRENT_RATE: f64 = 3e-8;
 
 /// The case whose positive electrode loses no active material (PyBaMM's option "none").
 const NEGATIVE_ONLY: &str = "negative_stress_driven_plain_diffusion";
@@ -49,6 +55,7 @@ fn params(name: &str) -> ParameterSet {
     for side in ["negative", "positive"] {
         let beta = if side == "positive" && name == NEGATIVE_ONLY { 0.0 } else { 1e-2 / 3600.0 };
         p.set(&format!("lam.{side}.proportional_term"), beta).unwrap();
+        p.set(&format!("lam.{side}.current_rate"), CURRENT_RATE).unwrap();
     }
     p
 }

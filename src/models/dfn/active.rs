@@ -6,6 +6,7 @@
 
 use super::Dfn;
 use crate::models::electrochem::Side;
+use crate::models::submodels::LamDrivers;
 
 impl Dfn {
     /// Zeroes the rates of the lithium lost with each electrode's active material in
@@ -21,18 +22,18 @@ impl Dfn {
 
     /// Loss of active material in electrode volume `(side, k, i)` (`k` within the
     /// electrode, `i` over the cell) whose particle has shell concentrations `c` (mol/m^3),
-    /// outward molar surface flux `flux` (mol/(m^2 s)) and volumetric SEI current `a_j_sei`
-    /// (A/m^3), at temperature `temp` (K): writes the rates of its particle states (`eps c`)
+    /// outward molar surface flux `flux` (mol/(m^2 s)) and `drivers` (with its volumetric SEI
+    /// current), at temperature `temp` (K): writes the rates of its particle states (`eps c`)
     /// into `out.0` and of its volume fraction into `out.1` (the outputs from the negative
     /// solid potential's first row on), and adds the lithium it loses to its electrode's.
     #[allow(clippy::too_many_arguments)]
-    pub(super) fn lose_active_material(&self, y: &[f64], (side, k, i): (Side, usize, usize), c: &[f64], flux: f64, a_j_sei: f64, temp: f64, out: (&mut [f64], &mut [f64])) {
+    pub(super) fn lose_active_material(&self, y: &[f64], (side, k, i): (Side, usize, usize), c: &[f64], flux: f64, drivers: LamDrivers, temp: f64, out: (&mut [f64], &mut [f64])) {
         let (out_particle, out_phis) = out;
         let (fraction, loss) = match (self.lam.fraction_index(side, k), self.lam.loss_index(side)) {
             (Some(f), Some(l)) => (f - self.layout.phis_n, l - self.layout.phis_n),
             _ => return,
         };
-        let (rate, lost) = self.lam.volume_rates(&self.ec, side, c, a_j_sei, self.electrolyte.vols[i].dx);
+        let (rate, lost) = self.lam.volume_rates(&self.ec, side, c, drivers, self.electrolyte.vols[i].dx);
         out_phis[fraction] = rate;
         out_phis[loss] += lost;
         self.lam.particle_rhs(&self.ec, side, k, y, c, flux, rate, temp, out_particle);

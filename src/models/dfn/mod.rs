@@ -36,7 +36,7 @@
 use super::electrochem::{Electrochem, Side};
 use super::electrolyte::ElectrolyteOp;
 use super::kinetics::{butler_volmer, exchange_current};
-use super::submodels::{LamLayer, PlatingLayer, SeiLayer};
+use super::submodels::{LamDrivers, LamLayer, PlatingLayer, SeiLayer};
 use super::submodels::thermal::bernardi_heat;
 use super::{Model, PhysicsModel, push_tridiagonal};
 use crate::params::ParameterSet;
@@ -263,7 +263,10 @@ impl Model for Dfn {
                 let out_particle = &mut out_cs[start..start + nr];
                 match self.lam.fraction_index(side, k) {
                     None => sphere.diffusion(shells, diff, flux, out_particle),
-                    Some(_) => self.lose_active_material(y, (side, k, i), &c, flux, a * j_sei, temp, (out_particle, out_phis)),
+                    Some(_) => {
+                        let drivers = LamDrivers { a_j_sei: a * j_sei, current_density: current / ec.area() };
+                        self.lose_active_material(y, (side, k, i), &c, flux, drivers, temp, (out_particle, out_phis))
+                    }
                 }
             }
         }

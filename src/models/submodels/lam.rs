@@ -21,6 +21,9 @@
 //!   `stress_induced_diffusion = false`);
 //! - reaction-driven (negative electrode, needs an SEI submodel):
 //!   `d eps_n / dt = beta_LAM_sei a j_sei / F` (`j_sei` < 0 while the SEI grows);
+//! - current-driven (throughput-driven), both electrodes: `d eps / dt = -k_I |i|` with the
+//!   applied current density `i = I / A` (A/m^2); PyBaMM's "current-driven" option with the
+//!   "current-driven LAM rate" function `f(i, T) = -k_I |i|`;
 //! - lithium lost: `d Q / dt = -A sum_x dx c_av d eps / dt` (mol/s) over the electrode's
 //!   volumes (`-L A c_av d eps / dt` when x-averaged);
 //! - particles: `d n_k / dt = eps (d c_k / dt)_diffusion + c_k d eps / dt` with `c = n / eps`
@@ -52,6 +55,9 @@ pub enum LamModel {
     /// The sum of both.
     #[serde(rename = "stress and reaction-driven")]
     StressAndReactionDriven,
+    /// Proportional to the applied current's magnitude (charge throughput), both electrodes.
+    #[serde(rename = "current-driven")]
+    CurrentDriven,
 }
 
 impl LamModel {
@@ -64,6 +70,20 @@ impl LamModel {
     pub fn reaction(self) -> bool {
         matches!(self, Self::ReactionDriven | Self::StressAndReactionDriven)
     }
+
+    /// Whether the applied current drives it.
+    pub fn current(self) -> bool {
+        self == Self::CurrentDriven
+    }
+}
+
+/// What drives loss of active material besides the particle's surface stress.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct LamDrivers {
+    /// Volumetric SEI current `a j_sei` (A/m^3, negative while the SEI grows).
+    pub a_j_sei: f64,
+    /// Applied current density `I / A` (A/m^2) over the electrode area.
+    pub current_density: f64,
 }
 
 /// What loss of active material has done to the electrodes, at one state.
@@ -209,8 +229,8 @@ impl LamLayer {
     }
 
     /// `d eps_s / dt` (1/s) of an electrode's particle with shell concentrations `c`
-    /// (mol/m^3), and volumetric SEI current `a_j_sei` (A/m^3, negative while the SEI grows).
-    fn fraction_rate(&self, ec: &Electrochem, side: Side, c: &[f64], a_j_sei: f64) -> f64 {
+    /// (mol/m^3), driven also by `drivers`.
+    fn fraction_rate(&self, ec: &Electrochem, side: Side, c: &[f64], drivers: LamDrivers) -> f64 {
         let p = Self::params(ec, side);
         let mut rate = 0.0;
         if self.model.stress() {
@@ -219,30 +239,32 @@ impl LamLayer {
             rate -= p.proportional_term * (hydrostatic.max(0.0) / p.critical_stress).powf(p.exponential_term);
         }
         if self.model.reaction() && side == Side::Negative {
-            rate += p.reaction_factor * a_j_sei / FARADAY;
+            rate += p.reaction_factor * drivers.a_j_sei / FARADAY;
+        }
+        if self.model.current() {
+            rate -= p.current_rate * drivers.current_density.abs();
         }
         rate
     }
 
     /// Writes the rates of the states of an x-averaged model into `out` from the two
-    /// electrodes' shell concentrations `c` (mol/m^3) and the x-averaged volumetric SEI
-    /// current `a_j_sei` (A/m^3), and returns `d eps_s / dt` of each electrode (zeros when
-    /// off).
-    pub fn rhs(&self, ec: &Electrochem, c: [&[f64]; 2], a_j_sei: f64, out: &mut [f64]) -> [f64; 2] {
+    /// electrodes' shell concentrations `c` (mol/m^3) and `drivers` (with the x-averaged
+    /// volumetric SEI current), and returns `d eps_s / dt` of each electrode (zeros when off).
+    pub fn rhs(&self, ec: &Electrochem, c: [&[f64]; 2], drivers: LamDrivers, out: &mut [f64]) -> [f64; 2] {
         [Side::Negative, Side::Positive].map(|side| {
             let (Some(fraction), Some(loss)) = (self.fraction_index(side, 0), self.loss_index(side)) else { return 0.0 };
-            let (rate, lost) = self.volume_rates(ec, side, c[slot(side)], a_j_sei, ec.electrode(side).thickness);
+            let (rate, lost) = self.volume_rates(ec, side, c[slot(side)], drivers, ec.electrode(side).thickness);
             (out[fraction], out[loss]) = (rate, lost);
             rate
         })
     }
 
     /// `d eps_s / dt` (1/s) of an electrode's x volume of thickness `dx` (m) from its
-    /// particle's shell concentrations `c` (mol/m^3) and its volumetric SEI current `a_j_sei`
-    /// (A/m^3), and the rate (mol/s) at which it loses lithium with its active material,
+    /// particle's shell concentrations `c` (mol/m^3) and `drivers` (with its own volumetric
+    /// SEI current), and the rate (mol/s) at which it loses lithium with its active material,
     /// `-dx A c_av d eps_s / dt`.
-    pub fn volume_rates(&self, ec: &Electrochem, side: Side, c: &[f64], a_j_sei: f64, dx: f64) -> (f64, f64) {
-        let rate = self.fraction_rate(ec, side, c, a_j_sei);
+    pub fn volume_rates(&self, ec: &Electrochem, side: Side, c: &[f64], drivers: LamDrivers, dx: f64) -> (f64, f64) {
+        let rate = self.fraction_rate(ec, side, c, drivers);
         (rate, -dx * ec.area() * ec.sphere(side).average(c) * rate)
     }
 

@@ -10,7 +10,7 @@ pub mod sei;
 pub mod thermal;
 
 pub use augmented::Augmented;
-pub use lam::{LamLayer, LamModel};
+pub use lam::{LamDrivers, LamLayer, LamModel};
 pub use plating::{PlatingLayer, PlatingModel};
 pub use sei::{SeiLayer, SeiModel};
 pub use thermal::LumpedThermal;
