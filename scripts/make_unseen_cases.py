@@ -2503,7 +2503,23 @@ def batch_d(root):
     self-heating of a poorly cooled cell (h = 4, to about 62 degC) at 37 degC, the temperature
     recorded by a thermocouple reading 0.8 K high (DFN). Lithium and active-material loss are
     accepted only by their own words, as since batch r; the particle diffusivity by "particle" /
-    "solid diffusiv" words."""
+    "solid diffusiv" words.
+
+    First run (2026-11-27, binary /work/bin/s11start, sha256 857fc9f8857c, load average 2.3
+    before, 3.3-3.7 during, 3.4 after, on 2 cores shared with other sessions): 8 of 8, 173 s in
+    all. d1 no missing physics (0.99 mV, noise 0.99; the 602 s gap reported and bridged by a
+    linear current), 1 s; d2 the pair in round 1 at the truth (rate constants 1.938e-7 /
+    1.035e-6, the truth's 0.3x being 1.944e-7 / 1.026e-6; hysteresis 18.29 mV, truth 18), 28.50
+    -> 0.99 mV, 45 s; d3 lithium inventory (initial concentrations 12680 / 34938 mol/m3, the
+    truth's volume averages at the recording's start 12672 / 34716), 56.25 -> 7.99 mV, then
+    "unexplained structure in 0-450 s" (7.99 mV, noise 1.09: the unrelaxed start; closest
+    series/contact, dBIC -1.1), 5 s; d4 positive LAM "4 %" (fraction 0.6384, the truth; negative
+    0.75 on its bound), 10.77 -> 1.00 mV, 2 s; d5 series/contact 25.00 mOhm (truth 25), 61.88 ->
+    1.04 mV, 104 s; d6 particle diffusivities (positive 2.002e-15 m2/s, truth 2.0e-15; negative
+    3.296e-14, the set's 3.3e-14), 2.56 -> 0.99 mV, 3 s; d7 electrolyte properties (diffusivity
+    0.4498x, conductivity 1.001x), 12.82 -> 0.97 mV, 5 s; d8 thermal (h 3.874, truth 4; ambient
+    310.63 K, between the true 310.15 and the thermocouple's 310.95), 19.73 -> 1.33 mV, then
+    "unexplained" (1.33 mV, noise 0.97; closest an RC of 0.75 s, under the 2 s sampling), 8 s."""
     # d1: control, SPMe at 27 degC, the USABC DST at high SOC only, a jittering logger clock with two drop-outs
     p = chen()
     p.update({"Ambient temperature [K]": 300.15, "Initial temperature [K]": 300.15})
