@@ -1,5 +1,5 @@
-//! The ageing candidates: SEI growth, lithium plating and progressive (stress-driven) loss of
-//! active material. Each changes the cell from cycle to cycle, so a recording identifies it
+//! The ageing candidates: SEI growth, lithium plating and progressive (stress-driven or
+//! throughput-driven) loss of active material. Each changes the cell from cycle to cycle, so a recording identifies it
 //! only over several cycles; each is added as its PyBaMM submodel with its rate fitted.
 
 use super::features::Features;
@@ -34,26 +34,29 @@ const LAM_LOWER_LOSS: f64 = 1e-6;
 pub(super) const LAM_MAX_LOSS: f64 = 0.5;
 
 /// What the candidates read from the recording besides the model: its first temperature (K)
-/// when it holds one, its RMS current (A) and its duration (s).
+/// when it holds one, its RMS current (A), its charge throughput `int |I| dt` (C) and its
+/// duration (s).
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Load {
     pub start_temperature: Option<f64>,
     pub rms_current: f64,
+    pub throughput: f64,
     pub duration: f64,
 }
 
 impl Load {
     pub fn of(rec: &Recording) -> Self {
-        let (mut i2t, mut span) = (0.0, 0.0);
+        let (mut i2t, mut throughput, mut span) = (0.0, 0.0, 0.0);
         for k in 1..rec.time.len() {
             let dt = rec.time[k] - rec.time[k - 1];
             if dt.is_finite() && dt > 0.0 {
                 i2t += dt * 0.5 * (rec.current[k].powi(2) + rec.current[k - 1].powi(2));
+                throughput += dt * 0.5 * (rec.current[k].abs() + rec.current[k - 1].abs());
                 span += dt;
             }
         }
         let rms_current = if span > 0.0 { (i2t / span).sqrt() } else { 0.0 };
-        Self { start_temperature: rec.temperature.as_ref().and_then(|t| t.first().copied()), rms_current, duration: span }
+        Self { start_temperature: rec.temperature.as_ref().and_then(|t| t.first().copied()), rms_current, throughput, duration: span }
     }
 }
 
@@ -114,6 +117,13 @@ pub fn lam_loss_per_unit(e: &Electrode, lam: &LamElectrode, area: f64, load: &Lo
     (sigma_h / lam.critical_stress).powf(lam.exponential_term) * 0.5 * load.duration / e.active_fraction
 }
 
+/// The share of electrode `e`'s active material (-) that throughput-driven LAM removes over
+/// the recording per unit coefficient (per m^2/(A s)): `d eps / dt = -k_I |I| / A` integrates
+/// to `k_I Q / A` for a throughput `Q` (C), taken from `eps_0`.
+pub fn throughput_loss_per_unit(e: &Electrode, area: f64, load: &Load) -> f64 {
+    load.throughput / area / e.active_fraction
+}
+
 /// The model change, fitted parameters, fixed parameters brought in and the change in words
 /// of an ageing candidate, with the base parameters when the candidate changes them.
 pub(super) type AgeingChange = (Vec<FitParameter>, usize, String, Option<ParameterSet>);
@@ -124,7 +134,8 @@ pub(super) fn augment(c: super::Candidate, spec: &mut ModelSpec, p: &ParameterSe
         super::Candidate::SeiGrowth => sei(spec, p),
         super::Candidate::LithiumPlating => plating(spec, p, PlatingModel::Irreversible),
         super::Candidate::LithiumPlatingPartial => plating(spec, p, PlatingModel::PartiallyReversible),
-        super::Candidate::ActiveMaterialGrowth => lam_growth(spec, p, load),
+        super::Candidate::ActiveMaterialGrowth => lam_growth(spec, p, LamModel::StressDriven, load),
+        super::Candidate::ActiveMaterialThroughput => lam_growth(spec, p, LamModel::CurrentDriven, load),
         _ => None,
     }
 }
@@ -167,36 +178,58 @@ fn plating(spec: &mut ModelSpec, p: &ParameterSet, law: PlatingModel) -> Option<
     Some((fit, 1, change.into(), None))
 }
 
-/// Stress-driven LAM with plain particle diffusion, each electrode's
-/// proportional term fitted in log space over the range that loses `LAM_LOWER_LOSS` to
-/// `LAM_MAX_LOSS` of its material over this recording, from `LAM_START_LOSS`; the base
-/// holds the terms at no effect (their lower bounds).
-fn lam_growth(spec: &mut ModelSpec, p: &ParameterSet, load: &Load) -> Option<AgeingChange> {
+/// Progressive LAM by `law`: stress-driven with plain particle diffusion (each electrode's
+/// proportional term fitted), or current-driven (each electrode's coefficient `k_I`), fitted
+/// in log space over the range that loses `LAM_LOWER_LOSS` to `LAM_MAX_LOSS` of its
+/// material over this recording, from `LAM_START_LOSS`; the base holds them at no effect
+/// (their lower bounds).
+fn lam_growth(spec: &mut ModelSpec, p: &ParameterSet, law: LamModel, load: &Load) -> Option<AgeingChange> {
     if spec.submodels.lam != LamModel::None {
         return None;
     }
-    spec.submodels.lam = LamModel::StressDriven;
-    spec.submodels.stress_induced_diffusion = Some(false);
+    spec.submodels.lam = law;
+    if law.stress() {
+        spec.submodels.stress_induced_diffusion = Some(false);
+    }
     let mut base = p.clone();
     let mut extra = Vec::new();
     for (side, e, lam) in [("negative", &p.negative, &p.lam.negative), ("positive", &p.positive, &p.lam.positive)] {
-        let per_unit = lam_loss_per_unit(e, lam, p.cell.area(), load);
+        let per_unit = loss_per_unit(law, e, lam, p.cell.area(), load);
         if !(per_unit.is_finite() && per_unit > 0.0) {
             return None;
         }
-        let path = format!("lam.{side}.proportional_term");
+        let path = format!("lam.{side}.{}", rate_name(law));
         extra.push(FitParameter::log(&path, LAM_START_LOSS / per_unit, LAM_LOWER_LOSS / per_unit, LAM_MAX_LOSS / per_unit));
         base.set(&path, LAM_LOWER_LOSS / per_unit).ok()?;
     }
-    // Fixed parameters per electrode: the exponent and the stress scale (partial molar
-    // volume, Young's modulus, Poisson's ratio and critical stress enter as one product).
-    Some((extra, 4, "stress-driven loss of active material on (plain particle diffusion), both proportional terms fitted".into(), Some(base)))
+    if law.stress() {
+        // Fixed parameters per electrode: the exponent and the stress scale (partial molar
+        // volume, Young's modulus, Poisson's ratio and critical stress enter as one product).
+        Some((extra, 4, "stress-driven loss of active material on (plain particle diffusion), both proportional terms fitted".into(), Some(base)))
+    } else {
+        Some((extra, 0, "current-driven (throughput-driven) loss of active material on, both coefficients fitted".into(), Some(base)))
+    }
+}
+
+/// The fitted rate parameter of a LAM law (`lam.SIDE.` + this).
+fn rate_name(law: LamModel) -> &'static str {
+    if law.stress() { "proportional_term" } else { "current_rate" }
+}
+
+/// Share of an electrode's active material lost over the recording per unit rate parameter.
+fn loss_per_unit(law: LamModel, e: &Electrode, lam: &LamElectrode, area: f64, load: &Load) -> f64 {
+    if law.stress() { lam_loss_per_unit(e, lam, area, load) } else { throughput_loss_per_unit(e, area, load) }
 }
 
 /// The estimated share of each electrode's active material lost over the recording,
-/// (negative, positive), at the fitted proportional terms (0 where one is not fitted).
+/// (negative, positive), at the fitted rates of either law (0 where none is fitted).
 pub(super) fn lam_losses(get: impl Fn(&str) -> Option<f64>, base: &ParameterSet, load: &Load) -> (f64, f64) {
-    let loss = |side: &str, e: &Electrode, lam: &LamElectrode| get(&format!("lam.{side}.proportional_term")).map_or(0.0, |b| b * lam_loss_per_unit(e, lam, base.cell.area(), load));
+    let loss = |side: &str, e: &Electrode, lam: &LamElectrode| {
+        [LamModel::StressDriven, LamModel::CurrentDriven]
+            .into_iter()
+            .find_map(|law| get(&format!("lam.{side}.{}", rate_name(law))).map(|k| k * loss_per_unit(law, e, lam, base.cell.area(), load)))
+            .unwrap_or(0.0)
+    };
     (loss("negative", &base.negative, &base.lam.negative), loss("positive", &base.positive, &base.lam.positive))
 }
 
@@ -212,7 +245,7 @@ pub(super) fn implausible(c: super::Candidate, get: impl Fn(&str) -> Option<f64>
             let ratio = get("plating.kinetic_rate_constant")? / base.plating.kinetic_rate_constant;
             (!(1.0 / PLATING_RANGE..=PLATING_RANGE).contains(&ratio)).then(|| format!("plating rate constant at {ratio:.3e} times the set's is outside 0.001 to 1000"))
         }
-        ActiveMaterialGrowth => {
+        ActiveMaterialGrowth | ActiveMaterialThroughput => {
             let (n, p) = lam_losses(get, base, load);
             let (side, loss) = if p > n { ("positive", p) } else { ("negative", n) };
             (loss > LAM_MAX_LOSS).then(|| format!("the {side} electrode loses about {:.0} % of its active material over the recording, more than 50 %", 100.0 * loss))

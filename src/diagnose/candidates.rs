@@ -33,6 +33,7 @@ pub enum Candidate {
     LithiumPlating,
     LithiumPlatingPartial,
     ActiveMaterialGrowth,
+    ActiveMaterialThroughput,
     Leak,
     VoltageOffset,
 }
@@ -94,7 +95,7 @@ const HYSTERESIS_START_RATE: f64 = 10.0;
 const HYSTERESIS_BRANCH: f64 = 0.5;
 
 impl Candidate {
-    pub const ALL: [Candidate; 17] = [
+    pub const ALL: [Candidate; 18] = [
         Candidate::SeriesResistance,
         Candidate::Electrolyte,
         Candidate::ElectrolyteComposite,
@@ -110,13 +111,14 @@ impl Candidate {
         Candidate::LithiumPlating,
         Candidate::LithiumPlatingPartial,
         Candidate::ActiveMaterialGrowth,
+        Candidate::ActiveMaterialThroughput,
         Candidate::Leak,
         Candidate::VoltageOffset,
     ];
 
     /// An ageing candidate: it changes the cell from cycle to cycle ([`ageing`]).
     pub fn is_ageing(self) -> bool {
-        matches!(self, Candidate::SeiGrowth | Candidate::LithiumPlating | Candidate::LithiumPlatingPartial | Candidate::ActiveMaterialGrowth)
+        matches!(self, Candidate::SeiGrowth | Candidate::LithiumPlating | Candidate::LithiumPlatingPartial | Candidate::ActiveMaterialGrowth | Candidate::ActiveMaterialThroughput)
     }
 
     /// Short name, as the verdict uses it.
@@ -137,6 +139,7 @@ impl Candidate {
             Candidate::LithiumPlating => "lithium plating (lithium lost to irreversible plating during the charges)",
             Candidate::LithiumPlatingPartial => "lithium plating, partially reversible (plated lithium strips back after the charges and part of it turns dead)",
             Candidate::ActiveMaterialGrowth => "progressive loss of active material (stress-driven, over the cycles)",
+            Candidate::ActiveMaterialThroughput => "progressive loss of active material (throughput-driven, over the cycles)",
             Candidate::Leak => "self-discharge or current offset (a leak current the cycler does not record: soft short or sensor bias)",
             Candidate::VoltageOffset => "voltage offset (the voltage channel's calibration, or an open-circuit potential shifted against the set's)",
         }
@@ -154,6 +157,7 @@ impl Candidate {
             | Candidate::LithiumPlating
             | Candidate::LithiumPlatingPartial
             | Candidate::ActiveMaterialGrowth
+            | Candidate::ActiveMaterialThroughput
             | Candidate::Leak
             | Candidate::VoltageOffset => {
                 Class::MissingPhysics
@@ -180,6 +184,7 @@ impl Candidate {
             Candidate::LithiumPlating => "capacity and the knee drift from cycle to cycle as lithium plates while the negative electrode's potential is low (late in fast charges), with no film resistance; grows steeply with the charge rate and at low temperature",
             Candidate::LithiumPlatingPartial => "as irreversible plating, but the plated lithium strips back in the rest or discharge after each charge (a voltage plateau there), and only the part that turned dead is lost from cycle to cycle",
             Candidate::ActiveMaterialGrowth => "one electrode's OCV features are compressed more from cycle to cycle (its capacity shrinks as it cycles), faster where the current stresses its particles most",
+            Candidate::ActiveMaterialThroughput => "one electrode's OCV features are compressed more from cycle to cycle (its capacity shrinks as it cycles), in proportion to the charge passed in either direction",
             Candidate::VoltageOffset => "a constant difference, the same under load and at rest, at every state of charge and current",
             Candidate::Leak => "the state of charge drifts at a constant rate whatever the load: the voltage keeps sliding in rests instead of settling, and the charge put back differs from the charge taken out by the leak times the time",
         }
@@ -200,6 +205,7 @@ impl Candidate {
             Candidate::LithiumPlating => "plating rate constant 0.001 to 1000 times the set's",
             Candidate::LithiumPlatingPartial => "plating rate constant 0.001 to 1000 times the set's, dead-lithium decay constant 1e-8 to 1e-2 1/s",
             Candidate::ActiveMaterialGrowth => "up to 50 % of an electrode's active material lost over the recording (steady-profile estimate)",
+            Candidate::ActiveMaterialThroughput => "up to 50 % of an electrode's active material lost over the recording",
             Candidate::Leak => "up to C/100 either way (a leak or a sensor offset of 1 % of the 1C current)",
             Candidate::VoltageOffset => "up to 20 mV either way",
         }
@@ -227,8 +233,11 @@ impl Candidate {
                 "a rest of an hour after a fast charge, sampled every few seconds (reversible plated lithium strips back there, a voltage plateau irreversible plating lacks)".into()
             }
             (LithiumPlating | LithiumPlatingPartial, SeiGrowth) | (SeiGrowth, LithiumPlating | LithiumPlatingPartial) => "cycles at a second charge rate, or a storage period at high state of charge (both are cathodic side reactions on the same potential difference: plating grows steeply with the charge rate and at low temperature, SEI growth with time at high state of charge)".into(),
-            (ActiveMaterialGrowth, LithiumInventory | SeiGrowth | LithiumPlating | LithiumPlatingPartial | ActiveMaterial)
-            | (LithiumInventory | SeiGrowth | LithiumPlating | LithiumPlatingPartial | ActiveMaterial, ActiveMaterialGrowth) => {
+            (ActiveMaterialGrowth, ActiveMaterialThroughput) | (ActiveMaterialThroughput, ActiveMaterialGrowth) => {
+                "cycles at a second rate (stress-driven loss per charge passed grows with the current, throughput-driven loss does not), or a cycle whose charge and discharge differ in rate".into()
+            }
+            (ActiveMaterialGrowth | ActiveMaterialThroughput, LithiumInventory | SeiGrowth | LithiumPlating | LithiumPlatingPartial | ActiveMaterial)
+            | (LithiumInventory | SeiGrowth | LithiumPlating | LithiumPlatingPartial | ActiveMaterial, ActiveMaterialGrowth | ActiveMaterialThroughput) => {
                 "a slow (C/20) cycle at the start and the end, read by differential voltage analysis".into()
             }
             (VoltageOffset, _) | (_, VoltageOffset) => "a slow (C/20) charge and discharge over the full window with the voltage channel checked against a reference: a shifted stoichiometry moves the OCV's features along the capacity axis, an offset moves the whole curve up or down".into(),
@@ -277,7 +286,7 @@ impl Candidate {
                 Some("needs current steps or loads at two or more rates".into())
             }
             Candidate::SeiGrowth => ageing::too_short_for_sei(f),
-            Candidate::LithiumPlating | Candidate::LithiumPlatingPartial | Candidate::ActiveMaterialGrowth => ageing::too_few_cycles(f),
+            Candidate::LithiumPlating | Candidate::LithiumPlatingPartial | Candidate::ActiveMaterialGrowth | Candidate::ActiveMaterialThroughput => ageing::too_few_cycles(f),
             // In one uninterrupted run a leak only rescales the charge passed (a capacity or
             // stoichiometry change); a rest, or charge and discharge both, sets it apart.
             Candidate::Leak if f.rests_after_charge + f.rests_after_discharge == 0 && !(rec.current.iter().any(|i| *i > 0.0) && rec.current.iter().any(|i| *i < 0.0)) => {
@@ -343,7 +352,7 @@ impl Candidate {
                     (factors, "electrolyte diffusivity and conductivity factors refitted".into())
                 }
             }
-            Candidate::SeiGrowth | Candidate::LithiumPlating | Candidate::LithiumPlatingPartial | Candidate::ActiveMaterialGrowth => {
+            Candidate::SeiGrowth | Candidate::LithiumPlating | Candidate::LithiumPlatingPartial | Candidate::ActiveMaterialGrowth | Candidate::ActiveMaterialThroughput => {
                 let (extra, fixed, change, changed_base) = ageing::augment(self, &mut spec, &p, load)?;
                 (structural_parameters, aged) = (fixed, changed_base);
                 (extra, change)
@@ -499,7 +508,9 @@ impl Candidate {
                 let h = get("cell.hysteresis_voltage")?;
                 (h > 0.05).then(|| format!("hysteresis half-width {:.1} mV exceeds 50 mV", h * 1e3))
             }
-            Candidate::SeiGrowth | Candidate::LithiumPlating | Candidate::LithiumPlatingPartial | Candidate::ActiveMaterialGrowth => ageing::implausible(self, get, base, load),
+            Candidate::SeiGrowth | Candidate::LithiumPlating | Candidate::LithiumPlatingPartial | Candidate::ActiveMaterialGrowth | Candidate::ActiveMaterialThroughput => {
+                ageing::implausible(self, get, base, load)
+            }
             Candidate::VoltageOffset => {
                 let v = get("cell.voltage_offset")?;
                 (v.abs() > VOLTAGE_OFFSET_PLAUSIBLE).then(|| format!("an offset of {:.1} mV exceeds 20 mV", v * 1e3))
@@ -540,7 +551,7 @@ impl Candidate {
                 let (which, l) = if p >= n { ("positive", p) } else { ("negative", n) };
                 format!("loss of active material, {which} electrode ({:.0} % of its capacity)", 100.0 * l)
             }
-            Candidate::ActiveMaterialGrowth => {
+            Candidate::ActiveMaterialGrowth | Candidate::ActiveMaterialThroughput => {
                 let (n, p) = ageing::lam_losses(get, base, load);
                 let (which, l) = if p > n { ("positive", p) } else { ("negative", n) };
                 format!("progressive loss of active material, {which} electrode (about {:.1} % of its capacity over the recording)", 100.0 * l)

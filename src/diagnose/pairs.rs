@@ -225,12 +225,13 @@ fn fit_pair(a: &CandidateOutcome, b: &CandidateOutcome, round: &Round, start: Pa
 }
 
 /// Whether two candidates describe one physics (the electrolyte model and its properties, or
-/// two laws of lithium plating): a pair of them is one effect, not two.
+/// two laws of lithium plating or of progressive loss of active material): a pair of them is one effect, not two.
 fn one_physics(a: Candidate, b: Candidate) -> bool {
     use Candidate::*;
     let family = |c: Candidate| match c {
         Electrolyte | ElectrolyteComposite | ElectrolyteTransport => Some(0),
         LithiumPlating | LithiumPlatingPartial => Some(1),
+        ActiveMaterialGrowth | ActiveMaterialThroughput => Some(2),
         _ => None,
     };
     family(a).is_some() && family(a) == family(b)
