@@ -481,13 +481,29 @@ fn g3_fixed_inventory_loss_is_not_sei_growth_spm() {
 #[ignore = "slow (1-2 min): CI skips it; run with --include-ignored, see the module doc"]
 fn g4_progressive_negative_active_material_loss_spm() {
     // Truth: PyBaMM's stress-driven LAM with plain diffusion in the negative electrode only,
-    // proportional term 2.78e-5 1/s (about 1 % of its capacity over 11 cycles).
-    let rounds = run_case("diagnosis-ageing/g4_lam_growth_12_cycles_spm");
+    // proportional term 2.78e-5 1/s: the negative loses 2.39 % of its active material over the
+    // 12 cycles (PyBaMM's x-averaged volume fraction 0.75 -> 0.7321, the script's setup).
+    progressive_negative_lam_named(&run_case("diagnosis-ageing/g4_lam_growth_12_cycles_spm"), 0.0239, 2.78e-5);
+}
+
+/// Progressive loss of active material named in round 1, in the negative electrode, by either
+/// law: over a recording at one rate the stress-driven and the throughput-driven laws differ
+/// only in how the loss spreads over each cycle, and the recorded current (the CV holds
+/// sampled every 30-60 s) does not hold that apart (our stress-driven law, fitted from
+/// PyBaMM's term on g4, leaves 1.09 mV to the throughput law's 1.05). The loss the name
+/// states is within 15 % of PyBaMM's `loss` (achieved: 9 %); when the stress-driven law is
+/// named, its proportional term within 15 % of PyBaMM's `beta` too.
+fn progressive_negative_lam_named(rounds: &[Diagnosis], loss: f64, beta: f64) {
     let cellstudio::diagnose::Verdict::Found { candidate, .. } = rounds[0].verdict else { panic!("not found: {}", rounds[0].summary) };
-    assert_eq!(candidate, Candidate::ActiveMaterialGrowth, "{}", rounds[0].summary);
-    assert!(report::verdict_in_words(&rounds[0]).contains("negative electrode"), "{}", rounds[0].summary);
-    let beta = first_fitted(&rounds, "lam.negative.proportional_term");
-    assert!((beta / 2.78e-5 - 1.0).abs() < 0.15, "negative LAM proportional term {beta:.4e} vs PyBaMM's 2.78e-5");
+    assert!(matches!(candidate, Candidate::ActiveMaterialGrowth | Candidate::ActiveMaterialThroughput), "{}", rounds[0].summary);
+    let name = &rounds[0].best().expect("a named candidate").name;
+    assert!(name.contains("negative electrode"), "{name}");
+    let stated: f64 = name.split("about ").nth(1).and_then(|t| t.split(" %").next()).and_then(|v| v.parse().ok()).unwrap_or_else(|| panic!("no loss in {name}"));
+    assert!((stated / 100.0 / loss - 1.0).abs() < 0.15, "{name}: PyBaMM loses {:.2} %", 100.0 * loss);
+    if candidate == Candidate::ActiveMaterialGrowth {
+        let fitted = first_fitted(rounds, "lam.negative.proportional_term");
+        assert!((fitted / beta - 1.0).abs() < 0.15, "negative LAM proportional term {fitted:.4e} vs PyBaMM's {beta:.3e}");
+    }
 }
 
 #[test]
@@ -778,6 +794,48 @@ fn f5_negative_lam_and_lithium_loss_in_one_round_spme() {
     let (eps_true, c0_true) = (0.92 * p.negative.active_fraction, 0.95 * p.negative.initial_concentration);
     assert!((eps / eps_true - 1.0).abs() < 0.02, "negative active fraction {eps:.4} vs {eps_true:.4}");
     assert!((c0 / c0_true - 1.0).abs() < 0.02, "negative initial concentration {c0:.0} vs {c0_true:.0}");
+}
+
+#[test]
+fn g4_throughput_driven_negative_lam_is_named_by_its_own_law_spm() {
+    // Blind batch g: PyBaMM's "current-driven" LAM in the negative electrode, d eps/dt =
+    // -3e-8 |i| (i the current density, A/m^2), 4 full 1C CC-CV cycles at 35 degC, 30 s
+    // logging. Its first run named it through the stress-driven law (4.2 % of 5.5 %, 3.58 mV
+    // left) and a lithium stand-in; the throughput-driven law is now a candidate of its own.
+    let rounds = run_case("diagnosis-extra/g4_lam_negative_current_driven_4_cycles_35C_30s_spm");
+    let cellstudio::diagnose::Verdict::Found { candidate, .. } = rounds[0].verdict else { panic!("not found: {}", rounds[0].summary) };
+    assert_eq!(candidate, Candidate::ActiveMaterialThroughput, "{}", rounds[0].summary);
+    let k = first_fitted(&rounds, "lam.negative.current_rate");
+    assert!((k / 3e-8 - 1.0).abs() < 0.02, "negative current-driven LAM rate {k:.4e} vs PyBaMM's 3e-8");
+    assert!(!rounds.iter().skip(1).any(|d| d.found), "{}", report::conclusion(&rounds));
+}
+
+#[test]
+fn d3_an_unrelaxed_start_is_pointed_to_after_the_lithium_loss_spm() {
+    // Blind batch d: 11 % of the negative's lithium lost; the recording begins under C/3 right
+    // after an unrecorded 30 min at 1C, the particles not relaxed. Round 1 names the lithium
+    // loss (concentrations within 1 % of the truth's averages at t = 0, 12672 / 34716); what
+    // the relaxed start leaves sits at the start, and the verdict says so.
+    let rounds = run_case("diagnosis-extra/d3_inventory_11pct_unrelaxed_mid_protocol_start_23C_spm");
+    let c_n = first_fitted(&rounds, "negative.initial_concentration");
+    assert!((c_n / 12672.0 - 1.0).abs() < 0.01, "negative initial concentration {c_n:.0} vs 12672");
+    let last = report::verdict_in_words(rounds.last().unwrap());
+    assert!(last.contains("not at rest when the recording began"), "{last}");
+}
+
+#[test]
+#[ignore = "slow (1-2 min): CI skips it; run with --include-ignored, see the module doc"]
+fn g6_an_aged_electrolyte_under_a_noisy_current_channel_dfn() {
+    // Blind batch g: electrolyte diffusivity x0.35 and conductivity x0.7 under a pseudo-random
+    // binary current (4 s bits), the current channel carrying 25 mA of white noise. Read
+    // sample by sample the noise made every second a table point (259 s, diffusivity 0.3504x,
+    // 1.19 mV left); read as constant steps within the measured noise, 99 s, 0.3499x, 1.02 mV.
+    let name = "diagnosis-extra/g6_electrolyte_aged_prbs_noisy_current_30C_dfn";
+    let rounds = run_case(name);
+    let d = first_fitted(&rounds, "electrolyte.diffusivity_factor");
+    let k = first_fitted(&rounds, "electrolyte.conductivity_factor");
+    assert!((d / 0.35 - 1.0).abs() < 0.005 && (k / 0.7 - 1.0).abs() < 0.005, "factors {d:.4} / {k:.4} vs 0.35 / 0.7");
+    assert!(rounds[0].notes.iter().any(|n| n.contains("white noise")), "{:?}", rounds[0].notes);
 }
 
 #[test]

@@ -188,6 +188,10 @@ fn truncated(f: &FitOutcome) -> &'static str {
 /// unexplained verdict to point at the open-circuit voltage (a dynamic effect relaxes at rest).
 const OCV_AT_REST: f64 = 0.5;
 
+/// Share of the squared residual that a stretch at the very start of the recording must hold
+/// for an unexplained verdict to point at an unrelaxed start.
+const AT_THE_START: f64 = 0.5;
+
 /// The verdict sentence(s), first in the summary.
 pub fn verdict_in_words(d: &Diagnosis) -> String {
     let b = &d.baseline;
@@ -266,13 +270,25 @@ pub fn verdict_in_words(d: &Diagnosis) -> String {
                     mv(r.load_rms)
                 )
             });
+            // A cell still relaxing from a load before the recording began leaves the model,
+            // started relaxed, off at the start only.
+            let t0 = d.data.time.first().copied().unwrap_or(0.0);
+            let start = r.segments.first().filter(|seg| seg.start <= t0 && seg.error_share >= AT_THE_START).map(|seg| {
+                format!(
+                    " The mismatch sits at the start ({:.0}-{:.0} s, {:.0} % of the squared error): the cell was likely not at rest when the recording began (a load just before it left gradients in the particles and electrolyte that the model, started relaxed, lacks); diagnose a recording that begins with a rest.",
+                    seg.start,
+                    seg.end,
+                    100.0 * seg.error_share
+                )
+            });
             format!(
-                "Unexplained structure in {}: the user's model misses by {} RMS (noise {}), and no plausible candidate removes it on held-out data; see the residual plot.{}{}",
+                "Unexplained structure in {}: the user's model misses by {} RMS (noise {}), and no plausible candidate removes it on held-out data; see the residual plot.{}{}{}",
                 if windows.is_empty() { "the recording".to_string() } else { windows.join(", ") },
                 mv(b.rmse_all),
                 mv(d.noise),
                 best.unwrap_or_default(),
-                ocv.unwrap_or_default()
+                ocv.unwrap_or_default(),
+                start.unwrap_or_default()
             )
         }
         Verdict::NoMissingPhysics => {
