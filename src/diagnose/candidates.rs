@@ -13,6 +13,7 @@ use crate::data::Recording;
 use crate::models::ModelKind;
 use crate::params::ParameterSet;
 use crate::problem::fitting::{FitParameter, INITIAL_SOC, ModelSpec};
+use crate::problem::history::{HISTORY_CURRENT, HISTORY_DURATION};
 
 /// A candidate explanation.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
@@ -36,6 +37,7 @@ pub enum Candidate {
     ActiveMaterialThroughput,
     Leak,
     VoltageOffset,
+    UnrelaxedStart,
 }
 
 /// Missing physics or a parameter the model has but with the wrong value.
@@ -44,6 +46,8 @@ pub enum Candidate {
 pub enum Class {
     MissingPhysics,
     ParameterMismatch,
+    /// How the recording was made, not the cell (it began part-way through a test).
+    RecordingCondition,
 }
 
 /// A candidate added to a model: the model to build, its base parameters, the parameters to
@@ -82,6 +86,12 @@ const SPME_TO_DFN_FIXED: usize = 2;
 const LEAK_SEARCH_C_RATE: f64 = 0.02;
 const LEAK_PLAUSIBLE_C_RATE: f64 = 0.01;
 
+/// The unrelaxed-start candidate's search: a load of up to 3C either way (1/h), held for 10 s
+/// to 2 h (from 10 min) before the first recorded point.
+const HISTORY_C_RATE: f64 = 3.0;
+const HISTORY_START_S: f64 = 600.0;
+const HISTORY_RANGE_S: (f64, f64) = (10.0, 7200.0);
+
 /// The voltage-offset candidate's search range and plausible size (V).
 const VOLTAGE_OFFSET_SEARCH: f64 = 0.05;
 const VOLTAGE_OFFSET_PLAUSIBLE: f64 = 0.02;
@@ -95,7 +105,7 @@ const HYSTERESIS_START_RATE: f64 = 10.0;
 const HYSTERESIS_BRANCH: f64 = 0.5;
 
 impl Candidate {
-    pub const ALL: [Candidate; 18] = [
+    pub const ALL: [Candidate; 19] = [
         Candidate::SeriesResistance,
         Candidate::Electrolyte,
         Candidate::ElectrolyteComposite,
@@ -114,6 +124,7 @@ impl Candidate {
         Candidate::ActiveMaterialThroughput,
         Candidate::Leak,
         Candidate::VoltageOffset,
+        Candidate::UnrelaxedStart,
     ];
 
     /// An ageing candidate: it changes the cell from cycle to cycle ([`ageing`]).
@@ -142,6 +153,7 @@ impl Candidate {
             Candidate::ActiveMaterialThroughput => "progressive loss of active material (throughput-driven, over the cycles)",
             Candidate::Leak => "self-discharge or current offset (a leak current the cycler does not record: soft short or sensor bias)",
             Candidate::VoltageOffset => "voltage offset (the voltage channel's calibration, or an open-circuit potential shifted against the set's)",
+            Candidate::UnrelaxedStart => "an unrelaxed start (a load just before the first recorded point: the recording began part-way through a test)",
         }
     }
 
@@ -162,6 +174,7 @@ impl Candidate {
             | Candidate::VoltageOffset => {
                 Class::MissingPhysics
             }
+            Candidate::UnrelaxedStart => Class::RecordingCondition,
             _ => Class::ParameterMismatch,
         }
     }
@@ -186,6 +199,7 @@ impl Candidate {
             Candidate::ActiveMaterialGrowth => "one electrode's OCV features are compressed more from cycle to cycle (its capacity shrinks as it cycles), faster where the current stresses its particles most",
             Candidate::ActiveMaterialThroughput => "one electrode's OCV features are compressed more from cycle to cycle (its capacity shrinks as it cycles), in proportion to the charge passed in either direction",
             Candidate::VoltageOffset => "a constant difference, the same under load and at rest, at every state of charge and current",
+            Candidate::UnrelaxedStart => "a transient at the start only, fading over minutes whatever the load, as the particles and electrolyte relax from a load the recording did not hold",
             Candidate::Leak => "the state of charge drifts at a constant rate whatever the load: the voltage keeps sliding in rests instead of settling, and the charge put back differs from the charge taken out by the leak times the time",
         }
     }
@@ -208,6 +222,7 @@ impl Candidate {
             Candidate::ActiveMaterialThroughput => "up to 50 % of an electrode's active material lost over the recording",
             Candidate::Leak => "up to C/100 either way (a leak or a sensor offset of 1 % of the 1C current)",
             Candidate::VoltageOffset => "up to 20 mV either way",
+            Candidate::UnrelaxedStart => "a load of up to 3C either way, held 10 s to 2 h before the first point",
         }
     }
 
@@ -407,6 +422,16 @@ impl Candidate {
                 spec.submodels.voltage_offset = true;
                 (vec![FitParameter::linear("cell.voltage_offset", 0.0, -VOLTAGE_OFFSET_SEARCH, VOLTAGE_OFFSET_SEARCH)], "voltage-offset submodel on".into())
             }
+            Candidate::UnrelaxedStart => {
+                if fitted.iter().any(|f| f == HISTORY_CURRENT) {
+                    return None;
+                }
+                let most = HISTORY_C_RATE * p.cell.nominal_capacity;
+                (
+                    vec![FitParameter::linear(HISTORY_CURRENT, 0.0, -most, most), FitParameter::log(HISTORY_DURATION, HISTORY_START_S, HISTORY_RANGE_S.0, HISTORY_RANGE_S.1)],
+                    "a constant load before the first point fitted (its current and duration), from the rest state".into(),
+                )
+            }
             Candidate::Leak => {
                 if spec.submodels.leak {
                     return None;
@@ -520,7 +545,7 @@ impl Candidate {
                 let most = LEAK_PLAUSIBLE_C_RATE * base.cell.nominal_capacity;
                 (leak.abs() > most).then(|| format!("a leak of {:.1} mA exceeds C/100 ({:.1} mA)", leak * 1e3, most * 1e3))
             }
-            Candidate::Electrolyte | Candidate::ElectrolyteComposite => None,
+            Candidate::Electrolyte | Candidate::ElectrolyteComposite | Candidate::UnrelaxedStart => None,
         }
     }
 

@@ -280,6 +280,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
         .take(options.max_refits)
         .map(|&c| {
             let aug = match c.not_identifiable(&data, &features, q) {
+                _ if c == Candidate::UnrelaxedStart && options.fit.start_at_rest => Err("not refitted: the recording is taken to start at rest (--start-at-rest)".to_string()),
                 _ if no_room => Err(format!("not refitted: the user's model leaves {} RMS above the noise, less than the {} a named effect must remove", report::mv(room), report::mv(options.margins.size_floor(noise)))),
                 Some(why) => Err(format!("not identifiable from this recording: {why}")),
                 None => c.augment(&options.spec, base, &fitted_paths, &load).ok_or_else(|| "not applicable to this model".to_string()),

@@ -210,7 +210,7 @@ fn fit_pair(a: &CandidateOutcome, b: &CandidateOutcome, round: &Round, start: Pa
         candidate: a.candidate,
         partner: Some(b.candidate),
         name,
-        class: if a.class == b.class { a.class } else { super::Class::MissingPhysics },
+        class: pair_class(a.class, b.class),
         signature: format!("{}; {}", a.signature, b.signature),
         plausible_range: format!("{}; {}", a.plausible_range, b.plausible_range),
         change,
@@ -222,6 +222,17 @@ fn fit_pair(a: &CandidateOutcome, b: &CandidateOutcome, round: &Round, start: Pa
         implausible,
         next,
     })
+}
+
+/// The class of a pair: its members' when they share one; the cell's member's beside a
+/// recording condition; else missing physics (a parameter off together with physics missing).
+fn pair_class(a: super::Class, b: super::Class) -> super::Class {
+    use super::Class::*;
+    match (a, b) {
+        _ if a == b => a,
+        (RecordingCondition, c) | (c, RecordingCondition) => c,
+        _ => MissingPhysics,
+    }
 }
 
 /// Whether two candidates describe one physics (the electrolyte model and its properties, or

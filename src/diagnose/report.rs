@@ -166,6 +166,7 @@ fn class_words(class: Class) -> &'static str {
     match class {
         Class::MissingPhysics => "Missing physics",
         Class::ParameterMismatch => "Parameter mismatch",
+        Class::RecordingCondition => "Recording condition",
     }
 }
 
@@ -366,6 +367,7 @@ fn candidate_row(c: &CandidateOutcome, rank: usize) -> String {
     let kind = match c.class {
         Class::MissingPhysics => "physics",
         Class::ParameterMismatch => "parameter",
+        Class::RecordingCondition => "recording",
     };
     match &c.fit {
         Some(f) => format!(

@@ -5,6 +5,7 @@ use std::sync::Mutex;
 
 use serde::{Deserialize, Serialize};
 
+use super::history::{history_step, is_history, state_after};
 use super::sensitivity::{PARAMETER_STEP, Sensitivities};
 use crate::cost::Prior;
 use crate::data::Recording;
@@ -44,11 +45,16 @@ impl ModelSpec {
 /// other fitted values are set.
 pub const INITIAL_SOC: &str = "initial_soc";
 
-/// Sets `values` of `parameters` in `p`, the initial state of charge last.
+/// Sets `values` of `parameters` in `p`, the initial state of charge last (a load before the
+/// recording, [`super::history`], is not a parameter of the set).
 fn apply(p: &mut ParameterSet, parameters: &[FitParameter], values: &[f64]) -> Result<(), Error> {
     let mut soc = None;
     for (fp, &v) in parameters.iter().zip(values) {
-        if fp.path == INITIAL_SOC { soc = Some(v) } else { p.set(&fp.path, v)? }
+        if fp.path == INITIAL_SOC {
+            soc = Some(v)
+        } else if !is_history(&fp.path) {
+            p.set(&fp.path, v)?
+        }
     }
     if let Some(v) = soc {
         crate::params::set_initial_soc(p, v)?;
@@ -85,7 +91,7 @@ impl FitParameter {
     }
 
     pub(crate) fn validate(&self, base: &ParameterSet) -> Result<(), Error> {
-        if self.path != INITIAL_SOC {
+        if self.path != INITIAL_SOC && !is_history(&self.path) {
             base.get(&self.path)?;
         }
         let field = |name: &str| format!("parameters.{}.{name}", self.path);
@@ -371,20 +377,30 @@ impl FittingProblem {
         }
     }
 
+    /// The load before the recording at `x`, when one is fitted.
+    fn history(&self, x: &[f64]) -> Result<Option<crate::protocol::Step>, Error> {
+        history_step(&self.parameters, x, &self.pinned)
+    }
+
     fn run(&self, x: &[f64], sensitivities: bool) -> Result<Simulated, Error> {
         let p = self.parameters_at(x)?;
         let mut worker = self.pool.lock().expect("builder pool").pop().unwrap_or_else(|| Worker {
             builders: (0..=self.dim()).map(|_| self.spec.builder()).collect(),
             sensitivity_workspace: None,
         });
-        let result = if sensitivities { self.run_sensitivities(&mut worker, x, &p) } else { self.run_plain(&mut worker, &p) };
+        let result = if sensitivities { self.run_sensitivities(&mut worker, x, &p) } else { self.run_plain(&mut worker, x, &p) };
         self.pool.lock().expect("builder pool").push(worker);
         result
     }
 
-    fn run_plain(&self, worker: &mut Worker, p: &ParameterSet) -> Result<Simulated, Error> {
+    fn run_plain(&self, worker: &mut Worker, x: &[f64], p: &ParameterSet) -> Result<Simulated, Error> {
         let built = worker.builders[0].build(p)?;
-        let sol = simulate(built.model.as_ref(), &mut built.workspace, &self.protocol, &self.options(p), None)?;
+        let opts = self.options(p);
+        let y0 = match self.history(x)? {
+            Some(step) => Some(state_after(built.model.as_ref(), &mut built.workspace, &step, &opts)?),
+            None => None,
+        };
+        let sol = simulate(built.model.as_ref(), &mut built.workspace, &self.protocol, &opts, y0)?;
         let voltage = self.at_points(&sol)?;
         let temperature = match self.temperature_weight {
             Some(_) => self.output_of_point.iter().map(|&k| sol.temperature[k]).collect(),
@@ -404,8 +420,16 @@ impl FittingProblem {
             .map(|((s, v), p)| if v + PARAMETER_STEP * s > p.upper { -PARAMETER_STEP * s } else { PARAMETER_STEP * s })
             .collect();
         let (first, rest) = worker.builders.split_at_mut(1);
+        let opts = self.options(p);
+        let history = self.history(x)?;
         let base = first[0].build(p)?;
+        // With a load before the recording, every copy starts where its own history ends.
+        let base_start = match &history {
+            Some(step) => Some(state_after(base.model.as_ref(), &mut base.workspace, step, &opts)?),
+            None => None,
+        };
         let mut perturbed: Vec<&dyn Model> = Vec::with_capacity(rest.len());
+        let mut starts: Vec<Vec<f64>> = Vec::new();
         for (k, b) in rest.iter_mut().enumerate() {
             let mut q = self.base.clone();
             if let Some(v) = self.initial_ocv {
@@ -414,9 +438,18 @@ impl FittingProblem {
             let mut xk = x.to_vec();
             xk[k] += steps[k];
             self.apply_all(&mut q, &xk)?;
-            perturbed.push(b.build(&q)?.model.as_ref());
+            let built = b.build(&q)?;
+            if base_start.is_some() {
+                let step = self.history(&xk)?.expect("the history is fitted");
+                starts.push(state_after(built.model.as_ref(), &mut built.workspace, &step, &opts)?);
+            }
+            perturbed.push(built.model.as_ref());
         }
         let model = Sensitivities::new(base.model.as_ref(), perturbed, scales.clone(), steps);
+        let z0 = match base_start {
+            Some(y) => model.augmented(y, &starts),
+            None => model.initial_state(),
+        };
         let ws = match &mut worker.sensitivity_workspace {
             Some(ws) => ws,
             slot => slot.insert(Workspace::new(model.len(), model.jacobian_pattern())?),
@@ -425,7 +458,7 @@ impl FittingProblem {
         // a 10^6-point recording.
         let mut rows: Vec<f64> = Vec::with_capacity(self.t_eval.len() * scales.len());
         let mut derive = |z: &[f64], i: f64| rows.extend(model.voltage_sensitivities(z, i).iter().zip(&scales).map(|(d, s)| d / s));
-        let sol = simulate_observed(&model, ws, &self.protocol, &self.options(p), Some(model.initial_state()), &mut derive)?;
+        let sol = simulate_observed(&model, ws, &self.protocol, &opts, Some(z0), &mut derive)?;
         let voltage = self.at_points(&sol)?;
         let dim = scales.len();
         let sensitivity = self.output_of_point.iter().flat_map(|&k| rows[k * dim..(k + 1) * dim].iter().copied()).collect();

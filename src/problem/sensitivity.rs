@@ -57,11 +57,17 @@ impl<'a> Sensitivities<'a> {
 
     /// Initial augmented state: the base model's, with `s_k(0) = p̄_k dy0/dθ_k`.
     pub fn initial_state(&self) -> Vec<f64> {
-        let y0 = self.base.initial_state();
-        let mut z = y0.clone();
-        for (k, m) in self.perturbed.iter().enumerate() {
+        let perturbed: Vec<Vec<f64>> = self.perturbed.iter().map(|m| m.initial_state()).collect();
+        self.augmented(self.base.initial_state(), &perturbed)
+    }
+
+    /// The augmented state of base state `y` and the perturbed copies' states `perturbed`
+    /// (one per parameter, each reached as `y` was, at its own parameter values).
+    pub fn augmented(&self, y: Vec<f64>, perturbed: &[Vec<f64>]) -> Vec<f64> {
+        let mut z = y.clone();
+        for (k, yk) in perturbed.iter().enumerate() {
             let f = self.scales[k] / self.steps[k];
-            z.extend(m.initial_state().iter().zip(&y0).map(|(a, b)| f * (a - b)));
+            z.extend(yk.iter().zip(&y).map(|(a, b)| f * (a - b)));
         }
         z
     }
