@@ -44,3 +44,25 @@ pub fn state_after(model: &dyn Model, ws: &mut Workspace, step: &Step, opts: &Si
     let opts = SimOptions { t_eval: None, keep_states: false, ..opts.clone() };
     Ok(simulate(model, ws, &Protocol { steps: vec![step.clone()] }, &opts, None)?.final_state)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn param(path: &str) -> FitParameter {
+        FitParameter::linear(path, 1.0, 0.0, 10.0)
+    }
+
+    #[test]
+    fn a_history_needs_its_current_and_its_duration() {
+        assert_eq!(history_step(&[param("cell.contact_resistance")], &[1.0], &[]).unwrap(), None);
+        let both = [param(HISTORY_CURRENT), param(HISTORY_DURATION)];
+        assert_eq!(history_step(&both, &[2.5, 60.0], &[]).unwrap(), Some(Step::Current { current: 2.5, duration: 60.0, until_voltage: None }));
+        // A held (pinned) duration counts as given.
+        assert!(history_step(&both[..1], &[2.5], &[(param(HISTORY_DURATION), 30.0)]).unwrap().is_some());
+        let e = history_step(&both[..1], &[2.5], &[]).unwrap_err().to_string();
+        assert!(e.contains(HISTORY_DURATION), "{e}");
+        let e = history_step(&both, &[2.5, 0.0], &[]).unwrap_err().to_string();
+        assert!(e.contains(HISTORY_DURATION) && e.contains("positive"), "{e}");
+    }
+}
