@@ -179,16 +179,17 @@ pub(super) fn check_destinations(dir: &Path, names: &BTreeSet<String>, listed: &
 mod tests {
     use super::*;
 
-    fn scratch(tag: &str) -> PathBuf {
-        let d = std::env::temp_dir().join(format!("cellstudio-manifest-{tag}-{}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&d);
-        std::fs::create_dir_all(d.join("out/sub")).unwrap();
+    /// A fresh temporary folder holding `out/sub`, removed when dropped.
+    fn scratch() -> tempfile::TempDir {
+        let d = tempfile::tempdir().unwrap();
+        std::fs::create_dir_all(d.path().join("out/sub")).unwrap();
         d
     }
 
     #[test]
     fn only_plain_regular_files_of_the_folder_itself_are_removable() {
-        let root = scratch("rules");
+        let tmp = scratch();
+        let root = tmp.path();
         let out = root.join("out");
         std::fs::write(root.join("outside.txt"), "x").unwrap();
         std::fs::write(out.join("old.svg"), "x").unwrap();
@@ -214,7 +215,6 @@ mod tests {
         assert_eq!(removable(&out, "old.svg", Some(&written), &[]), Ok(Some(out.join("old.svg"))));
         std::fs::write(out.join("old.svg"), "edited").unwrap();
         assert!(removable(&out, "old.svg", Some(&written), &[]).unwrap_err().starts_with("changed since cellstudio wrote it"));
-        std::fs::remove_dir_all(&root).unwrap();
     }
 
     #[test]
@@ -227,7 +227,8 @@ mod tests {
 
     #[test]
     fn a_destination_must_be_absent_or_a_listed_regular_file() {
-        let root = scratch("dest");
+        let tmp = scratch();
+        let root = tmp.path();
         let out = root.join("out");
         std::fs::write(out.join("ours.svg"), "x").unwrap();
         std::fs::write(out.join("mine.txt"), "x").unwrap();
@@ -251,6 +252,5 @@ mod tests {
         std::fs::create_dir(out.join(MANIFEST)).unwrap();
         let e = check_destinations(&out, &new, &listed).unwrap_err().to_string();
         assert!(e.contains(".cellstudio-outputs` is not a regular file") && e.contains("nothing was moved"), "{e}");
-        std::fs::remove_dir_all(&root).unwrap();
     }
 }

@@ -186,16 +186,11 @@ fn relative_files(dir: &Path) -> Result<BTreeSet<String>> {
 mod tests {
     use super::*;
 
-    fn scratch(tag: &str) -> PathBuf {
-        let d = std::env::temp_dir().join(format!("cellstudio-output-{tag}-{}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&d);
-        std::fs::create_dir_all(&d).unwrap();
-        d
-    }
 
     #[test]
     fn failed_run_leaves_previous_results_and_no_partial_folder() {
-        let root = scratch("fail");
+        let tmp = tempfile::tempdir().unwrap();
+        let root = tmp.path();
         let target = root.join("out");
         let out = OutputDir::create(&target, &[]).unwrap();
         crate::error::write_file(&out.path().join("report.md"), "first").unwrap();
@@ -206,14 +201,14 @@ mod tests {
             // dropped without commit: the run failed
         }
         assert_eq!(std::fs::read_to_string(target.join("report.md")).unwrap(), "first");
-        let names: Vec<_> = std::fs::read_dir(&root).unwrap().map(|e| e.unwrap().file_name()).collect();
+        let names: Vec<_> = std::fs::read_dir(root).unwrap().map(|e| e.unwrap().file_name()).collect();
         assert_eq!(names, vec![std::ffi::OsString::from("out")]);
-        std::fs::remove_dir_all(&root).unwrap();
     }
 
     #[test]
     fn a_rejected_run_goes_to_name_rejected_and_leaves_the_results() {
-        let root = scratch("reject");
+        let tmp = tempfile::tempdir().unwrap();
+        let root = tmp.path();
         let target = root.join("out");
         let out = OutputDir::create(&target, &[]).unwrap();
         crate::error::write_file(&out.path().join("report.md"), "good").unwrap();
@@ -225,12 +220,12 @@ mod tests {
         assert_eq!(out.reject(&[report]).unwrap(), vec![root.join("out.rejected/report.md")]);
         assert_eq!(std::fs::read_to_string(target.join("report.md")).unwrap(), "good");
         assert_eq!(std::fs::read_to_string(root.join("out.rejected/report.md")).unwrap(), "pinned");
-        std::fs::remove_dir_all(&root).unwrap();
     }
 
     #[test]
     fn stale_results_go_user_files_stay_and_are_never_replaced() {
-        let root = scratch("merge");
+        let tmp = tempfile::tempdir().unwrap();
+        let root = tmp.path();
         let target = root.join("out");
         let out = OutputDir::create(&target, &[]).unwrap();
         crate::error::write_file(&out.path().join("a.svg"), "a").unwrap();
@@ -249,12 +244,12 @@ mod tests {
         let e = out.commit(&[]).unwrap_err().to_string();
         assert!(e.contains("notes.txt") && e.contains("no earlier cellstudio run wrote it"), "{e}");
         assert_eq!(std::fs::read_to_string(target.join("notes.txt")).unwrap(), "mine");
-        std::fs::remove_dir_all(&root).unwrap();
     }
 
     #[test]
     fn a_folder_in_the_way_of_an_output_fails_before_anything_moves() {
-        let root = scratch("dir");
+        let tmp = tempfile::tempdir().unwrap();
+        let root = tmp.path();
         let target = root.join("out");
         std::fs::create_dir_all(target.join("report.md")).unwrap();
         let out = OutputDir::create(&target, &[]).unwrap();
@@ -263,8 +258,7 @@ mod tests {
         let e = out.commit(&[]).unwrap_err().to_string();
         assert!(e.contains("report.md"), "{e}");
         assert!(!target.join("design.json").exists(), "half the results were moved in");
-        let names: Vec<_> = std::fs::read_dir(&root).unwrap().map(|e| e.unwrap().file_name()).collect();
+        let names: Vec<_> = std::fs::read_dir(root).unwrap().map(|e| e.unwrap().file_name()).collect();
         assert_eq!(names, vec![std::ffi::OsString::from("out")]);
-        std::fs::remove_dir_all(&root).unwrap();
     }
 }

@@ -55,24 +55,23 @@ mod tests {
 
     #[test]
     fn only_the_folders_of_gone_processes_of_the_same_target_go() {
-        let root = std::env::temp_dir().join(format!("cellstudio-partial-{}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&root);
+        let tmp = tempfile::tempdir().unwrap();
+        let root = tmp.path();
         // 2147483646 is above any Linux pid_max: no such process.
         let names = [".out.partial-2147483646", ".out.partial-02147483646", ".other.partial-2147483646", ".out.partial-1", ".out.partial-x"];
         for name in names {
             std::fs::create_dir_all(root.join(name)).unwrap();
         }
-        let own = staging(&root, "out");
+        let own = staging(root, "out");
         std::fs::create_dir_all(&own).unwrap();
         std::os::unix::fs::symlink(&own, root.join(".out.partial-2147483645")).unwrap();
-        remove_abandoned(&root, "out");
-        let mut left: Vec<String> = std::fs::read_dir(&root).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+        remove_abandoned(root, "out");
+        let mut left: Vec<String> = std::fs::read_dir(root).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
         left.sort();
         let mut expected: Vec<String> = names[1..].iter().map(|n| n.to_string()).collect();
         expected.push(".out.partial-2147483645".into());
         expected.push(own.file_name().unwrap().to_string_lossy().into_owned());
         expected.sort();
         assert_eq!(left, expected);
-        std::fs::remove_dir_all(&root).unwrap();
     }
 }

@@ -42,14 +42,13 @@ pub fn canonical(path: &Path) -> PathBuf {
 /// Refuses an output folder that holds (or is) one of the run's inputs.
 ///
 /// ```
-/// let dir = std::env::temp_dir().join(format!("cellstudio-doc-inputs-{}", std::process::id()));
-/// std::fs::create_dir_all(&dir).unwrap();
+/// let tmp = tempfile::tempdir().unwrap();
+/// let dir = tmp.path();
 /// let input = dir.join("spectrum.csv");
 /// std::fs::write(&input, "f").unwrap();
-/// let e = cellstudio::output::check_inputs(&dir, &[input.as_path()]).unwrap_err().to_string();
+/// let e = cellstudio::output::check_inputs(dir, &[input.as_path()]).unwrap_err().to_string();
 /// assert!(e.contains("spectrum.csv") && e.contains("lies inside the output folder"), "{e}");
 /// assert!(cellstudio::output::check_inputs(&dir.join("elsewhere"), &[input.as_path()]).is_ok());
-/// std::fs::remove_dir_all(&dir).unwrap();
 /// ```
 pub fn check_inputs(target: &Path, inputs: &[&Path]) -> Result<()> {
     let out = canonical(target);
@@ -91,10 +90,9 @@ mod tests {
 
     #[test]
     fn canonical_handles_missing_tails_and_dot_dot() {
-        let root = std::env::temp_dir().join(format!("cellstudio-output-canon-{}", std::process::id()));
-        std::fs::create_dir_all(&root).unwrap();
+        let tmp = tempfile::tempdir().unwrap();
+        let root = tmp.path();
         let a = canonical(&root.join("x/../y/z"));
         assert_eq!(a, root.canonicalize().unwrap().join("y/z"));
-        std::fs::remove_dir_all(&root).unwrap();
     }
 }

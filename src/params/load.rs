@@ -47,20 +47,18 @@ mod tests {
 
     #[test]
     fn json_round_trip_and_bpx_detection() {
-        let dir = std::env::temp_dir().join(format!("cellstudio_load_{}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
-        let path = dir.join("set.json");
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("set.json");
         let mut p = chen2020();
         p.negative.diffusivity = 2.5e-14;
         std::fs::write(&path, serde_json::to_string(&p).unwrap()).unwrap();
         assert_eq!(ParameterSet::from_file(&path).unwrap(), p);
-        let bpx = dir.join("bpx.json");
+        let bpx = dir.path().join("bpx.json");
         std::fs::copy(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/bpx_example.json"), &bpx).unwrap();
         let direct = from_bpx_json(&std::fs::read_to_string(&bpx).unwrap()).unwrap().params;
         assert_eq!(ParameterSet::from_file(&bpx).unwrap(), direct);
         p.negative.thickness = -1.0;
         std::fs::write(&path, serde_json::to_string(&p).unwrap()).unwrap();
         assert!(ParameterSet::from_file(&path).unwrap_err().to_string().contains("negative.thickness"));
-        std::fs::remove_dir_all(&dir).ok();
     }
 }

@@ -57,8 +57,8 @@ fn unknown_parameter_path_is_named() {
 
 #[test]
 fn recording_with_nan_or_backwards_time_is_rejected() {
-    let dir = std::env::temp_dir().join(format!("cellstudio-bad-input-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
     let nan = dir.join("nan.csv");
     std::fs::write(&nan, "time_s,current_A,voltage_V\n0,5,4.1\n1,5,NaN\n").unwrap();
     let e = Recording::from_csv(&nan).unwrap_err().to_string();
@@ -89,9 +89,8 @@ fn protocol_with_negative_duration_is_named() {
 fn temperatures_in_celsius_are_named() {
     let e = build_error(|p| p.thermal.ambient_temperature = 25.0);
     assert!(e.contains("thermal.ambient_temperature") && e.contains("25") && e.contains("kelvin"), "{e}");
-    let dir = std::env::temp_dir().join(format!("cellstudio-bad-temperature-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let celsius = dir.join("celsius.csv");
+    let dir = tempfile::tempdir().unwrap();
+    let celsius = dir.path().join("celsius.csv");
     std::fs::write(&celsius, "time_s,current_A,voltage_V,temperature_K\n0,5,4.1,298.1\n1,5,4.0,25.3\n").unwrap();
     let e = Recording::from_csv(&celsius).unwrap_err().to_string();
     assert!(e.contains("line 3") && e.contains("temperature_K") && e.contains("25.3"), "{e}");

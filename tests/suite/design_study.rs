@@ -8,7 +8,8 @@ use cellstudio::study::design::run_design;
 fn seed_study_improves_gravimetric_energy_density() {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/designs/gravimetric_chen2020.toml");
     let mut study = Study::from_file(path.as_ref()).unwrap();
-    study.output.dir = std::env::temp_dir().join(format!("cellstudio-design-{}", std::process::id()));
+    let tmp = tempfile::tempdir().unwrap();
+    study.output.dir = tmp.path().join("out");
     let out = run_design(&study).unwrap();
     println!(
         "{:.2} -> {:.2} W h/kg ({:+.2} %), {} evaluations, {} builds, {:.2} s",
@@ -38,7 +39,8 @@ fn seed_study_improves_gravimetric_energy_density() {
 fn more_starts_keep_the_best_end_and_report_every_one() {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/designs/gravimetric_chen2020.toml");
     let mut study = Study::from_file(path.as_ref()).unwrap();
-    study.output.dir = std::env::temp_dir().join(format!("cellstudio-multistart-{}", std::process::id()));
+    let tmp = tempfile::tempdir().unwrap();
+    study.output.dir = tmp.path().join("out");
     study.optimiser.insert("starts".into(), toml::Value::Integer(3));
     let out = run_design(&study).unwrap();
     assert_eq!(out.start_values.len(), 3);

@@ -41,9 +41,8 @@ fn recording(name: &str, kind: ModelKind, submodels: Submodels, params: Paramete
     spec.temperature = temperature;
     spec.period = 2.0;
     let rec = synthetic_recording(&spec).unwrap();
-    let dir = std::env::temp_dir().join("cellstudio_diagnose_tests");
-    std::fs::create_dir_all(&dir).unwrap();
-    let path = dir.join(format!("{name}.csv"));
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join(format!("{name}.csv"));
     rec.write_csv(&path).unwrap();
     Recording::from_csv(&path).unwrap()
 }
@@ -63,8 +62,8 @@ fn run(name: &str, rec: &Recording, user: ModelKind) -> Diagnosis {
     let t = std::time::Instant::now();
     let d = diagnose(rec, &chen2020(), &DiagnoseOptions::new(ModelSpec::new(user, Submodels::default()))).unwrap();
     print_outcome(name, &d, t.elapsed().as_secs_f64());
-    let dir = std::env::temp_dir().join("cellstudio_diagnose_tests").join(name);
-    let files = cellstudio::report::diagnosis_files::write(std::slice::from_ref(&d), &dir).unwrap();
+    let dir = tempfile::tempdir().unwrap();
+    let files = cellstudio::report::diagnosis_files::write(std::slice::from_ref(&d), &dir.path().join(name)).unwrap();
     assert!(files.iter().all(|f| f.exists()));
     d
 }
@@ -209,8 +208,8 @@ fn two_concealed_effects_are_named_in_successive_rounds() {
         print_outcome(&format!("two effects, round {}", k + 1), d, d.seconds);
     }
     println!("two rounds: {:.1} s", t.elapsed().as_secs_f64());
-    let dir = std::env::temp_dir().join("cellstudio_diagnose_tests").join("two_effects");
-    cellstudio::report::diagnosis_files::write(&rounds, &dir).unwrap();
+    let dir = tempfile::tempdir().unwrap();
+    cellstudio::report::diagnosis_files::write(&rounds, &dir.path().join("two_effects")).unwrap();
     assert_eq!(rounds.len(), 2);
     assert_found(&rounds[0], Candidate::SeriesResistance);
     // The second effect is smaller (2.2 mV RMSE over 1 mV noise): it must bring the RMSE to

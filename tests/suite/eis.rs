@@ -180,15 +180,10 @@ mod impedance {
 
 mod csv {
     use cellstudio::eis::Spectrum;
+    use std::path::Path;
 
-    fn dir() -> std::path::PathBuf {
-        let d = std::env::temp_dir().join(format!("cellstudio-eis-csv-{}", std::process::id()));
-        std::fs::create_dir_all(&d).unwrap();
-        d
-    }
-
-    fn read(name: &str, text: &str) -> Result<Spectrum, String> {
-        let path = dir().join(name);
+    fn read(dir: &Path, name: &str, text: &str) -> Result<Spectrum, String> {
+        let path = dir.join(name);
         std::fs::write(&path, text).unwrap();
         Spectrum::from_csv(&path).map_err(|e| e.to_string())
     }
@@ -196,27 +191,29 @@ mod csv {
     #[test]
     fn round_trip() {
         let s = Spectrum::new(vec![1e3, 1.0, 1e-3], vec![0.03, 0.031, 0.05], vec![-1e-6, -2e-4, -0.02]).unwrap();
-        let path = dir().join("round.csv");
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("round.csv");
         s.write_csv(&path).unwrap();
         assert_eq!(Spectrum::from_csv(&path).unwrap(), s);
         // Columns are found by name, in any order, extra columns ignored.
-        let t = read("order.csv", "z_im_ohm,note,frequency_Hz,z_re_ohm\n-0.5,a,2,0.25\n").unwrap();
+        let t = read(dir.path(), "order.csv", "z_im_ohm,note,frequency_Hz,z_re_ohm\n-0.5,a,2,0.25\n").unwrap();
         assert_eq!((t.frequency[0], t.z_re[0], t.z_im[0]), (2.0, 0.25, -0.5));
     }
 
     #[test]
     fn bad_files_name_the_line_and_value() {
-        let err = read("nan.csv", "frequency_Hz,z_re_ohm,z_im_ohm\n1,0.1,-0.1\n2,NaN,-0.1\n").unwrap_err();
+        let dir = tempfile::tempdir().unwrap();
+        let err = read(dir.path(), "nan.csv", "frequency_Hz,z_re_ohm,z_im_ohm\n1,0.1,-0.1\n2,NaN,-0.1\n").unwrap_err();
         assert!(err.contains("line 3") && err.contains("z_re_ohm") && err.contains("NaN"), "{err}");
-        let err = read("empty.csv", "frequency_Hz,z_re_ohm,z_im_ohm\n").unwrap_err();
+        let err = read(dir.path(), "empty.csv", "frequency_Hz,z_re_ohm,z_im_ohm\n").unwrap_err();
         assert!(err.contains("no data rows"), "{err}");
-        let err = read("missing.csv", "frequency_Hz,z_re_ohm\n1,0.1\n").unwrap_err();
+        let err = read(dir.path(), "missing.csv", "frequency_Hz,z_re_ohm\n1,0.1\n").unwrap_err();
         assert!(err.contains("missing column `z_im_ohm`"), "{err}");
-        let err = read("zero.csv", "frequency_Hz,z_re_ohm,z_im_ohm\n1,0.1,-0.1\n0,0.1,-0.1\n").unwrap_err();
+        let err = read(dir.path(), "zero.csv", "frequency_Hz,z_re_ohm,z_im_ohm\n1,0.1,-0.1\n0,0.1,-0.1\n").unwrap_err();
         assert!(err.contains("line 3") && err.contains("frequency_Hz") && err.contains("= 0"), "{err}");
-        let err = read("neg.csv", "frequency_Hz,z_re_ohm,z_im_ohm\n-5,0.1,-0.1\n").unwrap_err();
+        let err = read(dir.path(), "neg.csv", "frequency_Hz,z_re_ohm,z_im_ohm\n-5,0.1,-0.1\n").unwrap_err();
         assert!(err.contains("line 2") && err.contains("-5"), "{err}");
-        let err = read("text.csv", "frequency_Hz,z_re_ohm,z_im_ohm\n1,abc,-0.1\n").unwrap_err();
+        let err = read(dir.path(), "text.csv", "frequency_Hz,z_re_ohm,z_im_ohm\n1,abc,-0.1\n").unwrap_err();
         assert!(err.contains("line 2") && err.contains("`abc`"), "{err}");
         assert!(Spectrum::new(vec![1.0], vec![0.1, 0.2], vec![0.0]).is_err());
         assert!(Spectrum::new(vec![1.0], vec![f64::INFINITY], vec![0.0]).unwrap_err().to_string().contains("z_re[0]"));

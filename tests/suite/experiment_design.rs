@@ -16,8 +16,8 @@ const REPO: &str = env!("CARGO_MANIFEST_DIR");
 
 #[test]
 fn a_second_rate_separates_kinetics_from_resistance() {
-    let dir = std::env::temp_dir().join(format!("cellstudio-oed-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
     let study = format!(
         "name = \"oed\"\n[model]\nkind = \"spm\"\nsubmodels = {{ contact_resistance = true }}\n[data]\nfile = \"{REPO}/tests/data/spm_contact_resistance_seed.csv\"\nsynthetic_noise = 0.002\nnoise_seed = 7\n\
          [[parameters]]\npath = \"positive.rate_constant\"\ninitial = 5e-6\nlower = 1e-7\nupper = 1e-4\nlog = true\n\
@@ -31,7 +31,6 @@ fn a_second_rate_separates_kinetics_from_resistance() {
     let stderr = String::from_utf8_lossy(&out.stderr).to_string();
     let text = std::fs::read_to_string(dir.join("out/experiment_design.json")).unwrap_or_else(|_| panic!("{stderr}"));
     let report = std::fs::read_to_string(dir.join("out/report.md")).unwrap();
-    std::fs::remove_dir_all(&dir).unwrap();
     let d: serde_json::Value = serde_json::from_str(&text).unwrap();
     let numbers = |v: &serde_json::Value| -> Vec<f64> { v.as_array().unwrap().iter().map(|x| x.as_f64().unwrap_or(f64::INFINITY)).collect() };
     let before = numbers(&d["before"]);

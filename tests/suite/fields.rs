@@ -65,8 +65,8 @@ fn simulate_writes_the_fields_csv_and_one_plot_per_field() {
     let (_, sol) = run(ModelKind::Spm, &p);
     let mut b = ModelBuilder::new(ModelKind::Spm, Submodels::default(), MeshSizes::default());
     let built = b.build(&p).unwrap();
-    let dir = std::env::temp_dir().join(format!("cellstudio_fields_{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
     let written = cellstudio::report::fields::write_fields(built.model.as_ref(), &sol, &dir, "spm").unwrap();
     assert_eq!(written.len(), 3, "{written:?}");
     let csv = std::fs::read_to_string(&written[0]).unwrap();
@@ -78,5 +78,4 @@ fn simulate_writes_the_fields_csv_and_one_plot_per_field() {
     let bare = Solution { states: Vec::new(), ..sol };
     let err = cellstudio::report::fields::write_fields(built.model.as_ref(), &bare, &dir, "spm").unwrap_err().to_string();
     assert!(err.contains("keep_states"), "{err}");
-    std::fs::remove_dir_all(&dir).unwrap();
 }

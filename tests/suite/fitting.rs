@@ -152,9 +152,8 @@ fn bad_fit_parameters_are_named() {
 #[test]
 fn csv_format_maps_columns_units_and_sign() {
     use cellstudio::data::CsvFormat;
-    let dir = std::env::temp_dir().join(format!("cellstudio_fmt_{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let path = dir.join("cycler.csv");
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("cycler.csv");
     std::fs::write(&path, "Test_Time(min),Current(mA),Voltage(V),T(C)\n0,-5000,4.0,25\n1,-5000,3.9,26\n").unwrap();
     let format: CsvFormat = toml::from_str(
         "time = \"Test_Time(min)\"\ncurrent = \"Current(mA)\"\nvoltage = \"Voltage(V)\"\ntemperature = \"T(C)\"\n\
@@ -174,7 +173,6 @@ fn csv_format_maps_columns_units_and_sign() {
     assert!(e.contains("at least 2 data rows, found 0"), "{e}");
     let e = Recording::from_csv_with(&path, &format).unwrap_err().to_string();
     assert!(e.contains("missing column `Test_Time(min)`"), "{e}");
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 /// Every optimiser of the design work applies to fitting: in at most 400 evaluations each cuts

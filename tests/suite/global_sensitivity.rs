@@ -10,8 +10,8 @@ const REPO: &str = env!("CARGO_MANIFEST_DIR");
 
 #[test]
 fn a_parameter_the_model_ignores_has_zero_indices() {
-    let dir = std::env::temp_dir().join(format!("cellstudio-sobol-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
     let parameter = |path: &str, initial: f64, lower: f64, upper: f64| format!("[[parameters]]\npath = \"{path}\"\ninitial = {initial:e}\nlower = {lower:e}\nupper = {upper:e}\nlog = true\n");
     let study = format!(
         "name = \"sobol\"\n[model]\nkind = \"spm\"\nsubmodels = {{ contact_resistance = true }}\n[data]\nfile = \"{REPO}/tests/data/spm_contact_resistance_seed.csv\"\nsynthetic_noise = 0.002\nnoise_seed = 7\n{}{}{}[cost]\nkind = \"sse\"\n[optimiser]\nmethod = \"lbfgsb\"\nseed = 1\n[sobol]\nsamples = 256\nseed = 2\nbootstrap = 100\n[output]\ndir = \"{}\"\n",
@@ -25,7 +25,6 @@ fn a_parameter_the_model_ignores_has_zero_indices() {
     let stderr = String::from_utf8_lossy(&out.stderr).to_string();
     let json: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(dir.join("out/sobol.json")).unwrap_or_else(|_| panic!("{stderr}"))).unwrap();
     let report = std::fs::read_to_string(dir.join("out/report.md")).unwrap();
-    std::fs::remove_dir_all(&dir).unwrap();
     let values = |key: &str| -> Vec<f64> { json["indices"][key].as_array().unwrap().iter().map(|v| v.as_f64().unwrap()).collect() };
     let (first, total) = (values("first"), values("total"));
     println!("first {first:?}\ntotal {total:?}\n{report}");

@@ -12,8 +12,8 @@ use cellstudio::problem::verdict::Standing;
 const REPO: &str = env!("CARGO_MANIFEST_DIR");
 
 fn fit(name: &str, first: &str, initial: f64, lower: f64, upper: f64) -> Vec<Standing> {
-    let dir = std::env::temp_dir().join(format!("cellstudio-ident-{name}-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
     let study = format!(
         r#"name = "{name}"
 [model]
@@ -51,7 +51,6 @@ dir = "{}"
     let json: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(dir.join("out/fit.json")).unwrap()).unwrap();
     let report = std::fs::read_to_string(dir.join("out/report.md")).unwrap();
     assert!(report.contains("| verdict |") && report.contains("Least determined combination"));
-    std::fs::remove_dir_all(&dir).unwrap();
     json["standings"]
         .as_array()
         .unwrap()

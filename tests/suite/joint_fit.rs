@@ -1,7 +1,7 @@
 //! Multi-experiment fitting (`[[data]]`): a known answer from two synthetic recordings at
 //! different C-rates, and a joint fit of the measured LG M50 C/2 and 1C discharges.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use cellstudio::data::Recording;
 use cellstudio::models::{ModelKind, Submodels};
@@ -46,15 +46,10 @@ fn synthetic(current: f64, duration: f64, soc: Option<f64>) -> Recording {
     rec
 }
 
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("cellstudio_joint_{}_{name}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
 #[test]
 fn two_c_rates_recover_the_known_parameters() {
-    let dir = scratch("synthetic");
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
     let (a, b) = (dir.join("half_c.csv"), dir.join("one_and_half_c_soc80.csv"));
     synthetic(2.5, 3600.0, None).write_csv(&a).unwrap();
     synthetic(7.5, 1200.0, Some(SOC_B)).write_csv(&b).unwrap();
@@ -118,15 +113,14 @@ dir = "{}"
     let Err(e) = study.problem(Some(Path::new("x.csv"))) else { panic!("--data accepted for two experiments") };
     let e = e.to_string();
     assert!(e.contains("--data") && e.contains("2 [[data]] entries"), "{e}");
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 #[test]
 fn data_entries_are_checked_by_name() {
     let base = "name = \"x\"\n[model]\nkind = \"spm\"\n[[parameters]]\npath = \"negative.diffusivity\"\ninitial = 3e-14\nlower = 1e-15\nupper = 1e-12\n";
     let parse = |data: &str| -> String {
-        let dir = scratch("errors");
-        let f = dir.join("s.toml");
+        let dir = tempfile::tempdir().unwrap();
+        let f = dir.path().join("s.toml");
         std::fs::write(&f, format!("{base}{data}")).unwrap();
         FitStudy::from_file(&f).map(|_| String::new()).unwrap_or_else(|e| e.to_string())
     };
@@ -156,8 +150,8 @@ fn measured_lgm50_half_c_and_one_c_jointly() {
         eprintln!("skipped: {} is absent (the team's shared folder is not beside the repo)", d.file.display());
         return;
     }
-    let dir = scratch("measured");
-    study.output.dir = dir.join("out");
+    let dir = tempfile::tempdir().unwrap();
+    study.output.dir = dir.path().join("out");
     let out = run_fit(&study, None).unwrap();
     let r = &out.result;
     for (k, name) in r.names.iter().enumerate() {
@@ -176,7 +170,6 @@ fn measured_lgm50_half_c_and_one_c_jointly() {
         eprintln!("{}: joint fit RMSE {:.2} mV, Chen 2020 {:.2} mV", e.name, e.rmse * 1e3, chen_rmse * 1e3);
         assert!(e.rmse < chen_rmse, "{}: {} V vs Chen 2020 {} V", e.name, e.rmse, chen_rmse);
     }
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 /// An experiment's `protocol` drives the model instead of the recorded current: the set
@@ -184,7 +177,8 @@ fn measured_lgm50_half_c_and_one_c_jointly() {
 /// recording is refused.
 #[test]
 fn an_experiment_protocol_replaces_the_recorded_current() {
-    let dir = scratch("protocol");
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
     let data = dir.join("half_c.csv");
     synthetic(2.5, 3600.0, None).write_csv(&data).unwrap();
     let protocol = |name: &str, rest: f64| {
@@ -209,7 +203,6 @@ fn an_experiment_protocol_replaces_the_recorded_current() {
     assert!(largest < 1e-6, "{largest} V");
     let Err(e) = study(Some(&protocol("short.toml", 300.0))).problem(None) else { panic!("a short protocol was accepted") };
     assert!(e.to_string().contains("lasts less than the recording"), "{e}");
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 /// At an upper bound the sensitivities step inwards: a fitted initial state of charge of

@@ -45,7 +45,8 @@ fn retention_matches_pybamm_and_is_one_without_ageing() {
     assert!((ten / two - 1.0).abs() < 5e-11, "{ten} vs {two}");
 }
 
-fn life_study(limit: Option<f64>) -> Study {
+/// The study with its output in a fresh temporary folder, kept while the guard lives.
+fn life_study(limit: Option<f64>) -> (Study, tempfile::TempDir) {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/designs/life_limited_chen2020.toml");
     let text = std::fs::read_to_string(path).unwrap().replace("cycles = 500", "cycles = 60");
     let text = match limit {
@@ -53,20 +54,23 @@ fn life_study(limit: Option<f64>) -> Study {
         None => text.replace("[[limits]]\nmetric = \"capacity_retention\"\nlower = 0.91\n", ""),
     };
     let mut study = Study::from_toml(&text, "life.toml").unwrap();
-    study.output.dir = std::env::temp_dir().join(format!("cellstudio-life-{}-{}", std::process::id(), limit.is_some()));
-    study
+    let tmp = tempfile::tempdir().unwrap();
+    study.output.dir = tmp.path().join("out");
+    (study, tmp)
 }
 
 #[test]
 fn a_retention_limit_moves_the_optimum_inside_it() {
-    let free = run_design(&life_study(None)).unwrap();
+    let (free_study, _free_tmp) = life_study(None);
+    let free = run_design(&free_study).unwrap();
     let r = |m: &cellstudio::problem::design::DesignMetrics| m.capacity_retention.unwrap();
     let (r0, r_free) = (r(&free.initial), r(&free.optimised));
     println!("unconstrained: {:.2} W h/kg, retention {r_free:.5} (baseline {r0:.5})", free.optimised.gravimetric_energy_density);
     // The densest design has the smallest particles, whose surface grows the most SEI.
     assert!(r_free < r0, "the unconstrained optimum should fade faster than the baseline: {r_free} vs {r0}");
     let limit = 0.5 * (r0 + r_free);
-    let bound = run_design(&life_study(Some(limit))).unwrap();
+    let (bound_study, _bound_tmp) = life_study(Some(limit));
+    let bound = run_design(&bound_study).unwrap();
     let r_bound = r(&bound.optimised);
     println!("limit {limit:.5}: {:.2} W h/kg, retention {r_bound:.5}, active {:?}", bound.optimised.gravimetric_energy_density, bound.active_limits);
     assert!(r_bound >= limit, "{r_bound} < {limit}");

@@ -46,7 +46,8 @@ const LIMIT: &str = "[[limits]]\nmetric = \"fast_charge_rate\"\nlower = 0.65";
 
 #[test]
 fn design_and_sweep_keep_a_plating_free_charge_limit() {
-    let dir = std::env::temp_dir().join(format!("cellstudio-limits-{}", std::process::id()));
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
     let s = study(LIMIT, &dir.join("design")).unwrap();
     let out = run_design(&s).unwrap();
     let rate = out.optimised.fast_charge.unwrap().rate;
@@ -66,7 +67,6 @@ fn design_and_sweep_keep_a_plating_free_charge_limit() {
     assert!(best.metrics.unwrap().fast_charge.unwrap().rate >= 0.65);
     // The search's optimum is at least the sweep's best inside the limit (to a grid step).
     assert!(out.optimised.gravimetric_energy_density >= best.metrics.unwrap().gravimetric_energy_density - 1e-9);
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 #[test]

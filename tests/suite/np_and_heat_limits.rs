@@ -18,8 +18,8 @@ fn study(model: &str, operating: &str, limit: &str, out: &std::path::Path) -> Re
 
 #[test]
 fn np_ratio_is_one_over_the_negative_window_and_its_limit_holds() {
-    let dir = std::env::temp_dir().join(format!("cellstudio-np-{}", std::process::id()));
-    let s = study("kind = \"spm\"", "c_rate = 1.0", "[[limits]]\nmetric = \"np_ratio\"\nlower = 1.2", &dir).unwrap();
+    let dir = tempfile::tempdir().unwrap();
+    let s = study("kind = \"spm\"", "c_rate = 1.0", "[[limits]]\nmetric = \"np_ratio\"\nlower = 1.2", &dir.path().join("out")).unwrap();
     let out = run_design(&s).unwrap();
     // Chen 2020: the negative electrode cycles between x0 and x100 of its capacity.
     let w = StoichiometryWindow::within_reach(&chen2020());
@@ -32,7 +32,8 @@ fn np_ratio_is_one_over_the_negative_window_and_its_limit_holds() {
 
 #[test]
 fn temperature_rise_limit_needs_the_thermal_submodel_and_holds() {
-    let dir = std::env::temp_dir().join(format!("cellstudio-heat-{}", std::process::id()));
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path().join("out");
     // 2C of each design's own capacity: thinner electrodes carry less current and heat less.
     let operating = "c_rate = 2.0\nrate_from_theoretical_capacity = true";
     let limit = "[[limits]]\nmetric = \"temperature_rise\"\nupper = 15.0";

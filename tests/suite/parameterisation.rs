@@ -2,7 +2,7 @@
 //! (`tests/data/parameterisation/`, made by `scripts/make_parameterisation_reference.py`: the
 //! DFN of Chen 2020 through a C/20 discharge and charge, and a GITT).
 
-use std::path::PathBuf;
+use std::path::Path;
 
 use cellstudio::study::parameterise::{ParameterisationStudy, run_parameterisation};
 
@@ -12,19 +12,14 @@ fn meta() -> serde_json::Value {
     serde_json::from_str(&std::fs::read_to_string(format!("{REPO}/tests/data/parameterisation/meta.json")).unwrap()).unwrap()
 }
 
-fn out(name: &str) -> PathBuf {
-    std::env::temp_dir().join(format!("cellstudio-param-{name}-{}", std::process::id()))
-}
-
-/// Runs study text (paths relative to the repository) into a fresh folder; returns the JSON.
-fn run(name: &str, body: &str) -> serde_json::Value {
-    run_with(name, body, &[])
+/// Runs study text (paths relative to the repository) into the fresh folder `dir` (absent
+/// before the run); returns the JSON.
+fn run(dir: &Path, name: &str, body: &str) -> serde_json::Value {
+    run_with(dir, name, body, &[])
 }
 
 /// [`run`] with `--set` overrides of the cell.
-fn run_with(name: &str, body: &str, overrides: &[&str]) -> serde_json::Value {
-    let dir = out(name);
-    let _ = std::fs::remove_dir_all(&dir);
+fn run_with(dir: &Path, name: &str, body: &str, overrides: &[&str]) -> serde_json::Value {
     let text = format!("name = \"{name}\"\n{}\n[output]\ndir = \"{}\"\n", body.replace("tests/data", &format!("{REPO}/tests/data")), dir.display());
     let study = ParameterisationStudy::from_toml(&text, name).unwrap().with_overrides(overrides.iter().map(|o| o.parse().unwrap()).collect()).unwrap();
     let outcome = run_parameterisation(&study).unwrap();
@@ -46,13 +41,14 @@ fn true_ocv(soc: f64) -> f64 {
 /// mean of the branches is the true OCV to a few millivolts away from the ends.
 #[test]
 fn pseudo_ocv_of_the_c20_pair() {
-    let json = run("ocv", "[ocv]\nfile = \"tests/data/parameterisation/c20_discharge_charge.csv\"\npoints = 101");
+    let tmp = tempfile::tempdir().unwrap();
+    let json = run(&tmp.path().join("out"), "ocv", "[ocv]\nfile = \"tests/data/parameterisation/c20_discharge_charge.csv\"\npoints = 101");
     let m = meta();
     for (branch, key) in [("discharge", "discharge_capacity_Ah"), ("charge", "charge_capacity_Ah")] {
         let (got, want) = (json["ocv"][branch]["capacity"].as_f64().unwrap(), m["c20"][key].as_f64().unwrap());
         assert!((got / want - 1.0).abs() < 1e-5, "{branch}: {got} vs {want}");
     }
-    let table = std::fs::read_to_string(out("ocv").join("ocv.csv")).unwrap();
+    let table = std::fs::read_to_string(tmp.path().join("out/ocv.csv")).unwrap();
     let rows: Vec<Vec<f64>> = table.lines().skip(1).map(|l| l.split(',').map(|v| v.parse().unwrap()).collect()).collect();
     assert_eq!(rows.len(), 101);
     let (mut worst, mut sum, mut n) = (0.0f64, 0.0, 0);
@@ -79,7 +75,8 @@ const TRUE_OCV_MAX: f64 = 0.015;
 #[test]
 fn balance_of_the_c20_pseudo_ocv() {
     let body = "[ocv]\nfile = \"tests/data/parameterisation/c20_discharge_charge.csv\"\n[balancing]\n";
-    let json = run_with("balancing", body, &["negative.thickness=9.8e-5", "positive.thickness=6.43e-5"]);
+    let tmp = tempfile::tempdir().unwrap();
+    let json = run_with(&tmp.path().join("out"), "balancing", body, &["negative.thickness=9.8e-5", "positive.thickness=6.43e-5"]);
     let (m, b) = (meta(), &json["balancing"]);
     let truth = |k: &str| m["soh"][k].as_f64().unwrap();
     let fit = &b["fit"]["balance"];
@@ -113,7 +110,8 @@ const WINDOW_ABS: f64 = 0.005;
 /// state of charge of each pulse is PyBaMM's discharged charge over the capacity.
 #[test]
 fn pulse_resistance_of_the_gitt_pulses() {
-    let json = run("pulses", "[pulses]\nfile = \"tests/data/parameterisation/gitt.csv\"\ncapacity = 5.0");
+    let tmp = tempfile::tempdir().unwrap();
+    let json = run(&tmp.path().join("out"), "pulses", "[pulses]\nfile = \"tests/data/parameterisation/gitt.csv\"\ncapacity = 5.0");
     let m = meta();
     let truth = m["gitt"]["pulses"].as_array().unwrap();
     let got = json["pulses"]["pulses"].as_array().unwrap();
@@ -140,7 +138,8 @@ fn pulse_resistance_of_the_gitt_pulses() {
 fn gitt_diffusivity_of_each_pulse() {
     let body = "[gitt]\nfile = \"tests/data/parameterisation/gitt.csv\"\nmodel = { kind = \"dfn\" }\nparameter = { path = \"negative.diffusivity\", initial = 1e-14, lower = 1e-16, upper = 1e-12, log = true }";
     let start = std::time::Instant::now();
-    let json = run("gitt", body);
+    let tmp = tempfile::tempdir().unwrap();
+    let json = run(&tmp.path().join("out"), "gitt", body);
     let m = meta();
     let truth = m["gitt"]["pulses"].as_array().unwrap();
     let got = json["gitt"]["pulses"].as_array().unwrap();
@@ -169,7 +168,8 @@ const GITT_X_ABS: f64 = 5e-4;
 #[test]
 fn kinetics_of_the_first_gitt_pulse() {
     let body = "[kinetics]\nfile = \"tests/data/parameterisation/gitt.csv\"\nmodel = { kind = \"dfn\" }\nparameters = [{ path = \"positive.rate_constant\", initial = 1e-6, lower = 1e-8, upper = 1e-4, log = true }]";
-    let json = run("kinetics", body);
+    let tmp = tempfile::tempdir().unwrap();
+    let json = run(&tmp.path().join("out"), "kinetics", body);
     let k = json["kinetics"]["x"][0].as_f64().unwrap();
     eprintln!("k_p {k:.5e} ± {:.2e} (truth 3.42e-6, {:+.3} %), converged {}", json["kinetics"]["std_errors"][0].as_f64().unwrap(), 100.0 * (k / 3.42e-6 - 1.0), json["kinetics"]["converged"]);
     assert!((k / 3.42e-6 - 1.0).abs() < KINETICS_REL, "{k}");
@@ -199,12 +199,14 @@ fn bad_studies_name_the_field() {
     let e = err("[gitt]\nfile = \"a.csv\"\nmodel = { kind = \"spm\" }\nparameter = { path = \"negative.thickness\", initial = 1e-5, lower = 1e-6, upper = 1e-4 }");
     assert!(e.contains("gitt.parameter.path"), "{e}");
     // A constant-current discharge from t = 0 has no step after a rest.
-    let text = format!("name = \"x\"\n[pulses]\nfile = \"{REPO}/tests/data/spm_1C.csv\"\n[output]\ndir = \"{}\"\n", out("nopulse").display());
+    let tmp = tempfile::tempdir().unwrap();
+    let nopulse = tmp.path().join("nopulse");
+    let text = format!("name = \"x\"\n[pulses]\nfile = \"{REPO}/tests/data/spm_1C.csv\"\n[output]\ndir = \"{}\"\n", nopulse.display());
     let e = run_parameterisation(&ParameterisationStudy::from_toml(&text, "study").unwrap()).map(|_| ()).unwrap_err().to_string();
     assert!(e.contains("pulses.file") && e.contains("no constant-current step after a rest"), "{e}");
-    assert!(!out("nopulse").exists(), "a failed run leaves no output folder");
+    assert!(!nopulse.exists(), "a failed run leaves no output folder");
     // The GITT recording has no constant-current charge.
-    let text = format!("name = \"x\"\n[ocv]\ncharge = \"{REPO}/tests/data/parameterisation/gitt.csv\"\n[output]\ndir = \"{}\"\n", out("nocharge").display());
+    let text = format!("name = \"x\"\n[ocv]\ncharge = \"{REPO}/tests/data/parameterisation/gitt.csv\"\n[output]\ndir = \"{}\"\n", tmp.path().join("nocharge").display());
     let study = ParameterisationStudy::from_toml(&text, "study").unwrap();
     let e = run_parameterisation(&study).map(|_| ()).unwrap_err().to_string();
     assert!(e.contains("ocv.charge") && e.contains("no constant-current charge step"), "{e}");

@@ -9,17 +9,19 @@ fn text() -> String {
     std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/designs/energy_vs_power_chen2020.toml")).unwrap()
 }
 
-fn study(text: &str, tag: &str) -> Study {
+/// The study with its output in a fresh temporary folder, kept while the guard lives.
+fn study(text: &str) -> (Study, tempfile::TempDir) {
     let mut s = Study::from_toml(text, "pareto.toml").unwrap();
-    s.output.dir = std::env::temp_dir().join(format!("cellstudio-pareto-{tag}-{}", std::process::id()));
-    s
+    let tmp = tempfile::tempdir().unwrap();
+    s.output.dir = tmp.path().join("out");
+    (s, tmp)
 }
 
 #[test]
 fn designs_that_stop_early_are_counted_and_kept_off_the_front() {
     // Before the flag, 19 of the 32 front points delivered 12-49 W h/kg (discharges cut off
     // after about a minute); the baseline delivers 230 W h/kg.
-    let s = study(&text().replace("generations = 20", "generations = 8"), "early");
+    let (s, _tmp) = study(&text().replace("generations = 20", "generations = 8"));
     let out = run_pareto(&s).unwrap();
     println!("{} evaluated, {} stopped early, {} failed, front {}", out.evaluated, out.stopped_early, out.failed, out.front.len());
     assert!(out.stopped_early > 0, "the study has transport-limited designs");
@@ -31,7 +33,6 @@ fn designs_that_stop_early_are_counted_and_kept_off_the_front() {
     }
     let report = std::fs::read_to_string(s.output.dir.join("report.md")).unwrap();
     assert!(report.contains(&format!("{} stopped early", out.stopped_early)) && report.contains("Power is the mean power"));
-    let _ = std::fs::remove_dir_all(&s.output.dir);
 }
 
 #[test]
@@ -40,18 +41,17 @@ fn pareto_respects_linear_constraints_by_projection() {
         "[objective]",
         "[[constraints]]\nterms = { \"positive.active_fraction\" = 1.0 }\nupper = 0.6\n\n[objective]",
     );
-    let s = study(&t, "constrained");
+    let (s, _tmp) = study(&t);
     let out = run_pareto(&s).unwrap();
     assert!(out.repaired > 0, "some NSGA-II candidates start above 0.6");
     for ind in &out.front {
         assert!(ind.x[1] <= 0.6 + 1e-9, "front point with active fraction {}", ind.x[1]);
     }
-    let _ = std::fs::remove_dir_all(&s.output.dir);
 }
 
 #[test]
 fn pareto_refuses_a_single_objective_method() {
-    let s = study(&text().replace("method = \"nsga2\"", "method = \"cmaes\""), "method");
+    let (s, _tmp) = study(&text().replace("method = \"nsga2\"", "method = \"cmaes\""));
     let e = run_pareto(&s).err().expect("cmaes is not multi-objective").to_string();
     assert!(e.contains("optimiser.method") && e.contains("cmaes") && e.contains("NSGA-II"), "{e}");
 }

@@ -13,8 +13,8 @@ const REPO: &str = env!("CARGO_MANIFEST_DIR");
 /// Runs a fit with `[profile]` over `parameters` (TOML `[[parameters]]` tables) and returns
 /// `profiles.json`.
 fn profiles(name: &str, parameters: &str) -> serde_json::Value {
-    let dir = std::env::temp_dir().join(format!("cellstudio-profile-{name}-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
     let study = format!(
         "name = \"{name}\"\n[model]\nkind = \"spm\"\nsubmodels = {{ contact_resistance = true }}\n[data]\nfile = \"{REPO}/tests/data/spm_contact_resistance_seed.csv\"\nsynthetic_noise = 0.002\nnoise_seed = 7\n{parameters}\n[cost]\nkind = \"sse\"\n[optimiser]\nmethod = \"lbfgsb\"\nseed = 1\n[profile]\npoints = 6\n[output]\ndir = \"out\"\n"
     );
@@ -24,7 +24,6 @@ fn profiles(name: &str, parameters: &str) -> serde_json::Value {
     let report = std::fs::read_to_string(dir.join("out/report.md")).unwrap();
     assert!(report.contains("## Profile likelihoods") && dir.join("out/profile_0.svg").exists());
     let json = serde_json::from_str(&std::fs::read_to_string(dir.join("out/profiles.json")).unwrap()).unwrap();
-    std::fs::remove_dir_all(&dir).unwrap();
     json
 }
 

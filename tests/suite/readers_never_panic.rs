@@ -49,11 +49,6 @@ fn names_a_place(message: &str) -> bool {
     ["line", "column", "header", "`", "points", "empty", "time", "record"].iter().any(|w| message.contains(w))
 }
 
-fn scratch(name: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("cellstudio-proptest-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir.join(name)
-}
 
 /// `text` with the byte range `at..at+len` (clamped to char boundaries) replaced by `with`.
 fn splice(text: &str, at: usize, len: usize, with: &str) -> String {
@@ -77,7 +72,8 @@ proptest! {
 
     #[test]
     fn recordings_never_panic_and_refusals_say_where(text in csv_text()) {
-        let path = scratch("recording.csv");
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("recording.csv");
         std::fs::write(&path, &text).unwrap();
         if let Err(e) = Recording::from_csv(&path) {
             let message = e.to_string();

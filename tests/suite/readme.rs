@@ -2,7 +2,7 @@
 //! binary, in a scratch copy of the study files, in README order), except those listed in
 //! `SKIPPED` with the reason.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::Command;
 
 const REPO: &str = env!("CARGO_MANIFEST_DIR");
@@ -40,8 +40,8 @@ fn readme_commands_run_as_written() {
     }
     assert!(commands.len() >= 10, "README commands not found: {commands:?}");
 
-    let dir: PathBuf = std::env::temp_dir().join(format!("cellstudio-readme-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
+    let tmp = tempfile::tempdir().unwrap();
+    let dir: &Path = tmp.path();
     for sub in ["designs", "fits", "protocols", "examples", "tests/data/cycler", "tests/data/parameterisation", "tests/data/sei"] {
         copy_dir(&Path::new(REPO).join(sub), &dir.join(sub));
     }
@@ -71,7 +71,6 @@ fn readme_commands_run_as_written() {
         ran += 1;
     }
     assert!(ran + SKIPPED.len() >= commands.len());
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 /// `cmd` split into words as a shell would for these commands: on spaces outside double quotes.

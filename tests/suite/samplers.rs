@@ -251,10 +251,9 @@ fn summary_serialises_and_plots_are_written() {
     assert!(table.lines().nth(1).unwrap().starts_with("a "), "{table}");
     assert!(table.contains("R-hat") && table.contains("nuts: 3 chains x 400 draws"), "{table}");
 
-    let dir = std::env::temp_dir().join(format!("cellstudio-samplers-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let trace = dir.join("trace.svg");
-    let hist = dir.join("marginals.svg");
+    let dir = tempfile::tempdir().unwrap();
+    let trace = dir.path().join("trace.svg");
+    let hist = dir.path().join("marginals.svg");
     cellstudio::report::mcmc_plot::trace_plot(&trace, "NUTS on a Gaussian", &["a", "b"], &result.chains).unwrap();
     cellstudio::report::mcmc_plot::marginal_histograms(&hist, "marginals", &["a", "b"], &result.chains, Some(&MEAN), 30)
         .unwrap();
@@ -262,5 +261,4 @@ fn summary_serialises_and_plots_are_written() {
         let svg = std::fs::read_to_string(path).unwrap();
         assert!(svg.starts_with("<svg") && svg.contains(element), "{}", path.display());
     }
-    std::fs::remove_dir_all(&dir).unwrap();
 }

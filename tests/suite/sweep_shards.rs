@@ -27,11 +27,10 @@ fn study(dir: &Path, name: &str, out: &str) -> PathBuf {
 
 #[test]
 fn four_shards_merge_to_the_single_run_byte_for_byte() {
-    let dir = std::env::temp_dir().join(format!("cellstudio-shards-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    study(&dir, "single.toml", "single");
-    study(&dir, "sharded.toml", "sharded");
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    study(dir, "single.toml", "single");
+    study(dir, "sharded.toml", "sharded");
     ok(cellstudio(&dir, &["sweep", "single.toml"]));
     let shards: Vec<std::process::Child> = (1..=4)
         .map(|k| Command::new(env!("CARGO_BIN_EXE_cellstudio")).args(["sweep", "sharded.toml", "--shard", &format!("{k}/4")]).current_dir(&dir).spawn().unwrap())
@@ -60,5 +59,4 @@ fn four_shards_merge_to_the_single_run_byte_for_byte() {
     }
     let rows = std::fs::read_to_string(dir.join("sharded/sweep.csv")).unwrap().lines().count();
     assert_eq!(rows, 1 + 169);
-    std::fs::remove_dir_all(&dir).unwrap();
 }

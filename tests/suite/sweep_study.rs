@@ -13,7 +13,8 @@ fn sweep_skips_points_outside_the_constraints() {
         "[[constraints]]\nterms = { \"positive.active_fraction\" = 1.0 }\nupper = 0.6\n\n[objective]",
     );
     let mut study = Study::from_toml(&text, "constrained.toml").unwrap();
-    study.output.dir = std::env::temp_dir().join(format!("cellstudio-sweep-constrained-{}", std::process::id()));
+    let tmp = tempfile::tempdir().unwrap();
+    study.output.dir = tmp.path().join("out");
     let out = run_sweep(&study).unwrap();
     // 13 x 13 grid, active fraction 0.500, 0.525, ..., 0.800: 5 of 13 columns are feasible.
     assert_eq!(out.count(Status::Infeasible), 8 * 13);
@@ -34,5 +35,4 @@ fn sweep_skips_points_outside_the_constraints() {
         .expect("a boundary segment");
     let ends: Vec<(f64, f64)> = segment.split_whitespace().map(|p| p.split_once(',').map(|(x, y)| (x.parse().unwrap(), y.parse().unwrap())).unwrap()).collect();
     assert!(ends.len() == 2 && (ends[0].1 - ends[1].1).abs() <= 1.0 && ends[1].0 - ends[0].0 > 500.0, "{ends:?}");
-    let _ = std::fs::remove_dir_all(&study.output.dir);
 }

@@ -9,7 +9,8 @@ use cellstudio::study::design::run_design;
 /// The SPMe's optimum positive thickness (m) for `objective`; an SPM lacks the electrolyte
 /// whose transport limits a thick electrode at 6C, and puts the 10-minute optimum at 91 um.
 fn optimum(objective: &str) -> (f64, Option<f64>) {
-    let dir = std::env::temp_dir().join(format!("cellstudio-timed-{objective}-{}", std::process::id()));
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path().join("out");
     let text = format!(
         "name = \"timed\"\n[model]\nkind = \"spme\"\n[operating]\nc_rate = 1.0\n[[variables]]\npath = \"positive.thickness\"\nlower = 30e-6\nupper = 120e-6\n[objective]\nmaximise = [\"{objective}\"]\n[optimiser]\nmethod = \"nelder_mead\"\nmax_iterations = 40\nseed = 1\n[output]\ndir = \"{}\"\n",
         dir.display()

@@ -7,15 +7,13 @@ use std::process::{Command, Output};
 
 pub const REPO: &str = env!("CARGO_MANIFEST_DIR");
 
-/// A fresh scratch folder per test, removed when dropped.
-pub struct Scratch(pub PathBuf);
+/// A fresh scratch folder per test (uniquely named by `tempfile`), removed when dropped.
+pub struct Scratch(pub PathBuf, tempfile::TempDir);
 
 impl Scratch {
     pub fn new(tag: &str) -> Self {
-        let dir = std::env::temp_dir().join(format!("cellstudio-cli-{tag}-{}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
-        std::fs::create_dir_all(&dir).unwrap();
-        Self(dir)
+        let dir = tempfile::Builder::new().prefix(&format!("cellstudio-cli-{tag}-")).tempdir().unwrap();
+        Self(dir.path().to_path_buf(), dir)
     }
     pub fn path(&self, name: &str) -> PathBuf {
         self.0.join(name)
@@ -31,12 +29,6 @@ impl Scratch {
             std::fs::read_dir(&self.0).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
         v.sort();
         v
-    }
-}
-
-impl Drop for Scratch {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.0);
     }
 }
 
