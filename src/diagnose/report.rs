@@ -189,9 +189,12 @@ fn truncated(f: &FitOutcome) -> &'static str {
 /// unexplained verdict to point at the open-circuit voltage (a dynamic effect relaxes at rest).
 const OCV_AT_REST: f64 = 0.5;
 
-/// Share of the squared residual that a stretch at the very start of the recording must hold
-/// for an unexplained verdict to point at an unrelaxed start.
+/// Share of the squared residual that a stretch at the very start of the recording must hold,
+/// and the least time (s) it must last, for an unexplained verdict to point at an unrelaxed
+/// start: the particles relax over minutes (a shorter stretch is the first step's fast
+/// dynamics, as at a pulse that opens a recording).
 const AT_THE_START: f64 = 0.5;
+const START_RELAXATION_S: f64 = 60.0;
 
 /// The verdict sentence(s), first in the summary.
 pub fn verdict_in_words(d: &Diagnosis) -> String {
@@ -274,7 +277,7 @@ pub fn verdict_in_words(d: &Diagnosis) -> String {
             // A cell still relaxing from a load before the recording began leaves the model,
             // started relaxed, off at the start only.
             let t0 = d.data.time.first().copied().unwrap_or(0.0);
-            let start = r.segments.first().filter(|seg| seg.start <= t0 && seg.error_share >= AT_THE_START).map(|seg| {
+            let start = r.segments.first().filter(|seg| seg.start <= t0 && seg.end - t0 >= START_RELAXATION_S && seg.error_share >= AT_THE_START).map(|seg| {
                 format!(
                     " The mismatch sits at the start ({:.0}-{:.0} s, {:.0} % of the squared error): the cell was likely not at rest when the recording began (a load just before it left gradients in the particles and electrolyte that the model, started relaxed, lacks); diagnose a recording that begins with a rest.",
                     seg.start,
