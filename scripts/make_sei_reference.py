@@ -1,5 +1,6 @@
 """PyBaMM reference for SEI growth (tests/suite/sei.rs): SPM, SPMe and DFN on Chen 2020 (its SEI
-parameters), each with PyBaMM's SEI options "reaction limited" and "solvent-diffusion
+parameters), each with PyBaMM's SEI options "reaction limited", "solvent-diffusion
+limited", "electron-migration limited", "interstitial-diffusion limited" and "ec reaction
 limited" (SEI film resistance "distributed", PyBaMM's default with SEI, which in the DFN
 makes the total interfacial current density an algebraic state; side reactions x-averaged
 in the SPM, per x volume in the SPMe and DFN, PyBaMM's defaults; SEI porosity change
@@ -19,10 +20,10 @@ Writes into the folder given (default tests/data/sei):
 - `meta.json`: versions, options, protocol, timings.
 
     python -m venv .venv && .venv/bin/pip install pybamm==26.10.1.1
-    .venv/bin/python scripts/make_sei_reference.py tests/data/sei [spm,spme,dfn]
+    .venv/bin/python scripts/make_sei_reference.py tests/data/sei [spm,spme,dfn] [reaction_limited,...]
 
-(the optional second argument names the models to (re)make; the other cases stay in
-`meta.json`.)
+(the optional second and third arguments name the models and options to (re)make; the other
+cases stay in `meta.json`.)
 """
 
 import json
@@ -36,7 +37,9 @@ import pybamm
 # One cycle: the CC-CV experiment of tests/suite/cccv.rs.
 from make_cccv_reference import EXPERIMENT as CYCLE
 CYCLES = 10
-OPTIONS = {"reaction_limited": "reaction limited", "solvent_diffusion_limited": "solvent-diffusion limited"}
+OPTIONS = {"reaction_limited": "reaction limited", "solvent_diffusion_limited": "solvent-diffusion limited",
+           "electron_migration_limited": "electron-migration limited",
+           "interstitial_diffusion_limited": "interstitial-diffusion limited", "ec_reaction_limited": "ec reaction limited"}
 MODELS = {"spm": pybamm.lithium_ion.SPM, "spme": pybamm.lithium_ion.SPMe, "dfn": pybamm.lithium_ion.DFN}
 
 
@@ -75,8 +78,9 @@ def main(root):
     if os.path.exists(os.path.join(root, "meta.json")):
         with open(os.path.join(root, "meta.json")) as f:
             meta["cases"] = json.load(f)["cases"]
+    options = sys.argv[3].split(",") if len(sys.argv) > 3 else list(OPTIONS)
     for mname, cls in ((m, MODELS[m]) for m in models):
-        for oname, option in OPTIONS.items():
+        for oname, option in ((o, OPTIONS[o]) for o in options):
             sol, seconds = solve(cls, option)
             name = f"{mname}_{oname}"
             cols = [sol["Time [s]"].entries, sol["Current [A]"].entries, sol["Voltage [V]"].entries,

@@ -29,6 +29,19 @@ pub struct Sei {
     pub initial_thickness: f64,
     /// "SEI growth activation energy [J.mol-1]" `E_sei`.
     pub activation_energy: f64,
+    /// "SEI electron conductivity [S.m-1]" `kappa_inner` (electron-migration limited).
+    pub electron_conductivity: f64,
+    /// "SEI lithium interstitial diffusivity [m2.s-1]" `D_li` (interstitial-diffusion limited).
+    pub interstitial_diffusivity: f64,
+    /// "Lithium interstitial reference concentration [mol.m-3]" `c_li_0`
+    /// (interstitial-diffusion limited).
+    pub interstitial_concentration: f64,
+    /// "EC initial concentration in electrolyte [mol.m-3]" `c_ec_0` (EC reaction limited).
+    pub ec_concentration: f64,
+    /// "EC diffusivity [m2.s-1]" `D_ec` (EC reaction limited).
+    pub ec_diffusivity: f64,
+    /// "SEI kinetic rate constant [m.s-1]" `k_sei` (EC reaction limited).
+    pub kinetic_rate_constant: f64,
 }
 
 impl Default for Sei {
@@ -44,6 +57,12 @@ impl Default for Sei {
             open_circuit_potential: 0.4,
             initial_thickness: 5e-9,
             activation_energy: 0.0,
+            electron_conductivity: 8.95e-14,
+            interstitial_diffusivity: 1e-20,
+            interstitial_concentration: 15.0,
+            ec_concentration: 4541.0,
+            ec_diffusivity: 2e-18,
+            kinetic_rate_constant: 1e-12,
         }
     }
 }
@@ -59,7 +78,13 @@ impl Sei {
         non_negative("sei.solvent_concentration", self.solvent_concentration)?;
         super::check::check("sei.open_circuit_potential", self.open_circuit_potential, true, "must be finite")?;
         positive("sei.initial_thickness", self.initial_thickness)?;
-        non_negative("sei.activation_energy", self.activation_energy)
+        non_negative("sei.activation_energy", self.activation_energy)?;
+        non_negative("sei.electron_conductivity", self.electron_conductivity)?;
+        non_negative("sei.interstitial_diffusivity", self.interstitial_diffusivity)?;
+        non_negative("sei.interstitial_concentration", self.interstitial_concentration)?;
+        non_negative("sei.ec_concentration", self.ec_concentration)?;
+        positive("sei.ec_diffusivity", self.ec_diffusivity)?;
+        non_negative("sei.kinetic_rate_constant", self.kinetic_rate_constant)
     }
 
     /// The field named `name` (after `sei.`), for `--set sei.NAME=VALUE`.
@@ -74,6 +99,12 @@ impl Sei {
             "open_circuit_potential" => &mut self.open_circuit_potential,
             "initial_thickness" => &mut self.initial_thickness,
             "activation_energy" => &mut self.activation_energy,
+            "electron_conductivity" => &mut self.electron_conductivity,
+            "interstitial_diffusivity" => &mut self.interstitial_diffusivity,
+            "interstitial_concentration" => &mut self.interstitial_concentration,
+            "ec_concentration" => &mut self.ec_concentration,
+            "ec_diffusivity" => &mut self.ec_diffusivity,
+            "kinetic_rate_constant" => &mut self.kinetic_rate_constant,
             _ => return None,
         })
     }

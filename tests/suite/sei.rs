@@ -1,6 +1,7 @@
 //! SEI growth against PyBaMM 26.10 (`scripts/make_sei_reference.py`, curves in
 //! `tests/data/sei/`): the SPM, SPMe and DFN on Chen 2020 with PyBaMM's SEI options "reaction
-//! limited" and "solvent-diffusion limited" (film resistance on, side reaction x-averaged),
+//! limited", "solvent-diffusion limited", "electron-migration limited", "interstitial-diffusion
+//! limited" and "ec reaction limited" (film resistance on, side reaction x-averaged),
 //! through 10 CC-CV cycles ("Discharge at 1C until 3.0 V", rest 10 min, "Charge at 1C until
 //! 4.1 V", "Hold at 4.1 V until C/20", rest 10 min), the same mesh, PyBaMM's IDAKLU at
 //! rtol = atol = 1e-8 and ours at 1e-8. Compared: the voltage outside the holds, the current
@@ -18,9 +19,26 @@ use cellstudio::simulation::{SimOptions, simulate};
 
 const CYCLE: [&str; 5] = ["Discharge at 1C until 3.0 V", "Rest for 10 minutes", "Charge at 1C until 4.1 V", "Hold at 4.1 V until C/20", "Rest for 10 minutes"];
 const CYCLES: usize = 10;
-const OPTIONS: [(SeiModel, &str); 2] = [(SeiModel::ReactionLimited, "reaction_limited"), (SeiModel::SolventDiffusionLimited, "solvent_diffusion_limited")];
+const OPTIONS: [(SeiModel, &str); 5] = [
+    (SeiModel::ReactionLimited, "reaction_limited"),
+    (SeiModel::SolventDiffusionLimited, "solvent_diffusion_limited"),
+    (SeiModel::ElectronMigrationLimited, "electron_migration_limited"),
+    (SeiModel::InterstitialDiffusionLimited, "interstitial_diffusion_limited"),
+    (SeiModel::EcReactionLimited, "ec_reaction_limited"),
+];
 
 use crate::common;
+
+/// The limit on the thickness and lithium-lost gaps, relative to their growth over the run:
+/// PyBaMM's Chen 2020 rates make the electron-migration and interstitial-diffusion layers
+/// grow by only 4 % and 0.2 % of their 5 nm, so there the gap is the solvers' tolerance on
+/// the layer itself (achieved up to 5.4e-5 of the growth, 4e-16 m) and the limit is wider.
+fn growth_limit(sei: SeiModel, others: f64) -> f64 {
+    match sei {
+        SeiModel::ElectronMigrationLimited | SeiModel::InterstitialDiffusionLimited => 2e-4,
+        _ => others,
+    }
+}
 
 fn rows(file: &str) -> Vec<Vec<f64>> {
     common::csv_rows("sei", file)
@@ -79,9 +97,10 @@ fn compare(kind: ModelKind, sei: SeiModel, name: &str) -> Gaps {
     gaps
 }
 
-/// Limits about five times the achieved: voltage RMS / max 1.4e-5-2.6e-5 / 4.3e-5-1.2e-4 mV,
-/// hold current RMS / max 1.8e-4-2.6e-4 / 6.3e-4-1.8e-3 mA, thickness and lithium lost max
-/// 6.4e-6 (SPM reaction limited; 2.4e-8 to 8.8e-7 otherwise) of their growth, step ends
+/// Limits about five times the achieved: voltage RMS / max 1.4e-5-2.7e-5 / 4.3e-5-1.3e-4 mV,
+/// hold current RMS / max 1.8e-4-4.5e-4 / 6.3e-4-2.6e-3 mA, thickness and lithium lost max
+/// 6.4e-6 (SPM reaction limited; 2.4e-8 to 9.2e-6 otherwise, 3.5e-5 and 4.9e-5 for the
+/// electron-migration and interstitial-diffusion laws: see [`growth_limit`]) of their growth, step ends
 /// 1.8e-3-2.5e-3 s (the C/20 end of a hold, as sensitive to either solver's tolerance:
 /// ours moves by 1.8e-3 s from rtol 1e-8 to 1e-12).
 /// The DFN, its own limits about five times its achieved: voltage RMS / max
@@ -94,6 +113,7 @@ fn check(kind: ModelKind) {
         let g = compare(kind, sei, name);
         assert!(g.voltage.0 < voltage.0 && g.voltage.1 < voltage.1, "{kind} {name}: voltage {:?} mV", g.voltage);
         assert!(g.current.0 < current.0 && g.current.1 < current.1, "{kind} {name}: hold current {:?} mA", g.current);
+        let growth = growth_limit(sei, growth);
         assert!(g.thickness.1 < growth && g.lithium.1 < growth, "{kind} {name}: thickness {:?}, lithium {:?}", g.thickness, g.lithium);
         assert!(g.step_end < 0.012, "{kind} {name}: step ends {} s apart", g.step_end);
     }
@@ -145,11 +165,14 @@ fn cycle_summaries_match_pybamm() {
                 ours_fade * 1e3,
                 ref_fade * 1e3
             );
-            // Achieved: 3.5e-5-6.4e-5 mA h, 1.4e-7-6.2e-6, 2.5e-9-2.4e-6, fade 3e-7-2.4e-5
+            // Achieved: 2.4e-5-6.4e-5 mA h, 1.4e-7-6.2e-6 (5.4e-5 and 1.3e-4 for the
+            // electron-migration and interstitial-diffusion laws), 2.5e-9-2.4e-6, fade 3e-7-2.4e-5
             // (DFN: 2.0e-5-2.6e-5 mA h, 6.8e-8, 7e-9-1.8e-8, 1.4e-6-5.4e-6).
             assert_eq!(summaries.len(), CYCLES);
-            assert!(dq < 3e-4 && dli < 3e-5 && dl < 1.2e-5, "{kind} {name}: {dq} mA h, {dli}, {dl}");
-            assert!(fade_gap < 4e-5, "{kind} {name}: fade {ours_fade} vs {ref_fade}");
+            assert!(dq < 3e-4 && dli < growth_limit(sei, 3e-5) && dl < 1.2e-5, "{kind} {name}: {dq} mA h, {dli}, {dl}");
+            // Relative 4e-5 with an absolute floor of 1e-4 mA h (below the per-cycle capacity
+            // limit): the interstitial-diffusion layer fades the cell by only 0.014 mA h.
+            assert!((ours_fade - ref_fade).abs() * 1e3 < 4e-5 * ref_fade * 1e3 + 1e-4, "{kind} {name}: fade {ours_fade} vs {ref_fade}");
         }
     }
 }
@@ -171,9 +194,11 @@ fn lithium_in_particles_and_sei_is_conserved() {
             let worst = sol.states.iter().map(|y| (total(y) - li0).abs() / li0).fold(0.0, f64::max);
             let taken = m.sei_lithium(&sol.final_state) - m.sei_lithium(&sol.states[0]);
             println!("{kind} {name}: {li0:.6} mol, SEI took {taken:.3e} mol ({:.2e} of it), worst drift {worst:.2e}", taken / li0);
-            assert!(taken / li0 > 1e-6, "{kind} {name}: the SEI took {taken} mol");
-            // Achieved 5.9e-16 to 1.7e-14 (DFN 5.9e-16).
-            assert!(worst < 1e-13, "{kind} {name}: lithium drift {worst:e}");
+            // Measurable: a thousand times the drift allowed below.
+            assert!(taken / li0 > 1e-10, "{kind} {name}: the SEI took {taken} mol");
+            // Achieved 5.9e-16 to 7.8e-16 (1.7e-14 and 2.7e-12 in the SPMe before its SEI
+            // Jacobian pattern gave the particle surface the electrolyte its side reaction reads).
+            assert!(worst < 4e-15, "{kind} {name}: lithium drift {worst:e}");
         }
     }
 }

@@ -15,6 +15,10 @@
 //!   reaction limited `-j0_sei exp(-0.5 F eta_sei / (R T))` with
 //!   `eta_sei = phi_s - phi_e - U_sei - j_tot L R_sei` with the local `phi_s - phi_e` and `L`;
 //!   solvent-diffusion limited `-D_sol c_sol F / L`;
+//!   electron-migration limited `kappa_inner min(delta_phi - U_sei, 0) / L`;
+//!   interstitial-diffusion limited `-(D_li c_li_0 F / L) exp(-F delta_phi / (R T))`;
+//!   EC reaction limited `-F c_ec_0 k / (1 + L k / D_ec)` with
+//!   `k = k_sei exp(-0.5 F eta_sei / (R T))`;
 //! - `d c_sei / dt = -a j_sei / (F z_sei)`; the particles carry the intercalation current
 //!   `j_tot - j_sei` (`j_sei` x-averaged), so the lithium the SEI takes comes out of the negative particles and
 //!   the applied current is unchanged.
@@ -38,6 +42,16 @@ pub enum SeiModel {
     /// Growth limited by the solvent's diffusion through the layer.
     #[serde(rename = "solvent-diffusion limited")]
     SolventDiffusionLimited,
+    /// Growth limited by electrons migrating through the layer (a film conductor).
+    #[serde(rename = "electron-migration limited")]
+    ElectronMigrationLimited,
+    /// Growth limited by lithium interstitials diffusing through the layer.
+    #[serde(rename = "interstitial-diffusion limited")]
+    InterstitialDiffusionLimited,
+    /// Ethylene carbonate reacting at the surface after diffusing through the layer
+    /// (Yang 2017): kinetics and diffusion in series.
+    #[serde(rename = "ec reaction limited")]
+    EcReactionLimited,
 }
 
 /// The SEI layer of a single-particle model: off, or `count` states from `start`, one per
@@ -99,14 +113,24 @@ impl SeiLayer {
     /// layer of thickness `l` (m) at its `phi_s - phi_e` = `delta_phi` (V).
     fn current_at(&self, ec: &Electrochem, l: f64, delta_phi: f64, j_tot: f64, temp: f64) -> f64 {
         let s = &ec.params.sei;
+        let f_rt = FARADAY / (GAS_CONSTANT * temp);
+        // The side reaction's overpotential, past the film's drop.
+        let eta_sei = || delta_phi - s.open_circuit_potential - j_tot * l * s.resistivity;
         let j = match self.model {
             SeiModel::None => 0.0,
-            SeiModel::ReactionLimited => {
-                let film = j_tot * l * s.resistivity;
-                let eta = delta_phi - s.open_circuit_potential - film;
-                -s.exchange_current * (-0.5 * FARADAY / (GAS_CONSTANT * temp) * eta).exp()
-            }
+            SeiModel::ReactionLimited => -s.exchange_current * (-0.5 * f_rt * eta_sei()).exp(),
             SeiModel::SolventDiffusionLimited => -s.solvent_diffusivity * s.solvent_concentration * FARADAY / l,
+            SeiModel::ElectronMigrationLimited => {
+                let eta_inner = delta_phi - s.open_circuit_potential;
+                if eta_inner < 0.0 { s.electron_conductivity * eta_inner / l } else { 0.0 }
+            }
+            SeiModel::InterstitialDiffusionLimited => {
+                -s.interstitial_diffusivity * s.interstitial_concentration * FARADAY / l * (-f_rt * delta_phi).exp()
+            }
+            SeiModel::EcReactionLimited => {
+                let k = s.kinetic_rate_constant * (-0.5 * f_rt * eta_sei()).exp();
+                -FARADAY * s.ec_concentration * k / (1.0 + l / s.ec_diffusivity * k)
+            }
         };
         j * arrhenius(s.activation_energy, ec.t_ref(), temp)
     }
@@ -169,12 +193,15 @@ impl SeiLayer {
 
     /// Appends its Jacobian pattern: each of its rows reads the negative particle's last two
     /// shells `surface` (through `phi_s - phi_e`), all its states (the film), and `extra`
-    /// states (the electrolyte or the temperature); the last shell's row reads them all (the
-    /// side reaction's flux).
+    /// states (the electrolyte or the temperature); the last shell's row reads them and the
+    /// `extra` states (the side reaction's flux).
     pub fn push_pattern(&self, pattern: &mut Vec<(usize, usize)>, surface: [usize; 2], extra: &[usize]) {
+        if self.start.is_none() {
+            return;
+        }
         for k in self.indices() {
             pattern.extend(surface.iter().chain(extra).copied().chain(self.indices()).map(|c| (k, c)));
-            pattern.push((surface[1], k));
         }
+        pattern.extend(self.indices().chain(extra.iter().copied()).map(|c| (surface[1], c)));
     }
 }
