@@ -1,5 +1,5 @@
-//! The ageing candidates: SEI growth, lithium plating and progressive (stress-driven or
-//! throughput-driven) loss of active material. Each changes the cell from cycle to cycle, so a recording identifies it
+//! The ageing candidates: SEI growth (reaction- or transport-limited), lithium plating and
+//! progressive (stress-driven or throughput-driven) loss of active material. Each changes the cell from cycle to cycle, so a recording identifies it
 //! only over several cycles; each is added as its PyBaMM submodel with its rate fitted.
 
 use super::features::Features;
@@ -132,6 +132,7 @@ pub(super) type AgeingChange = (Vec<FitParameter>, usize, String, Option<Paramet
 pub(super) fn augment(c: super::Candidate, spec: &mut ModelSpec, p: &ParameterSet, load: &Load) -> Option<AgeingChange> {
     match c {
         super::Candidate::SeiGrowth => sei(spec, p),
+        super::Candidate::SeiGrowthTransport => sei_transport(spec, p, load),
         super::Candidate::LithiumPlating => plating(spec, p, PlatingModel::Irreversible),
         super::Candidate::LithiumPlatingPartial => plating(spec, p, PlatingModel::PartiallyReversible),
         super::Candidate::ActiveMaterialGrowth => lam_growth(spec, p, LamModel::StressDriven, load),
@@ -152,6 +153,54 @@ fn sei(spec: &mut ModelSpec, p: &ParameterSet) -> Option<AgeingChange> {
     // equilibrium potential.
     let k = p.sei.exchange_current;
     Some((vec![FitParameter::log("sei.exchange_current", k, k / SEI_RANGE, k * SEI_RANGE)], 4, "reaction-limited SEI submodel on".into(), None))
+}
+
+/// Transport-limited SEI growth (PyBaMM's "solvent-diffusion limited": the growth slows as the
+/// layer thickens, `L^2 - L_0^2` growing with time), its solvent diffusivity fitted in log
+/// space over the range that takes `LAM_LOWER_LOSS` to `LAM_MAX_LOSS` of the negative
+/// electrode's lithium capacity over the recording, from `LAM_START_LOSS`. It stands for
+/// every law whose rate falls as `1 / L` (electron migration, interstitial diffusion too).
+fn sei_transport(spec: &mut ModelSpec, p: &ParameterSet, load: &Load) -> Option<AgeingChange> {
+    if spec.submodels.sei != SeiModel::None || !(load.duration > 0.0) {
+        return None;
+    }
+    spec.submodels.sei = SeiModel::SolventDiffusionLimited;
+    let d = |share: f64| transport_diffusivity(p, share, load.duration);
+    let fit = FitParameter::log("sei.solvent_diffusivity", d(LAM_START_LOSS), d(LAM_LOWER_LOSS), d(LAM_MAX_LOSS));
+    // Fixed: initial thickness, molar volume, resistivity, solvent concentration.
+    Some((vec![fit], 4, "transport-limited (solvent-diffusion limited) SEI submodel on".into(), None))
+}
+
+/// Thickening (m) of the negative electrode's SEI that binds `share` of its lithium capacity
+/// `c_max eps L_n A`: `share c_max V_bar R / (3 z_sei)` (the layer covers `a = 3 eps / R`).
+fn transport_thickening(p: &ParameterSet, share: f64) -> f64 {
+    let e = &p.negative;
+    share * e.max_concentration * p.sei.partial_molar_volume * e.particle_radius / (3.0 * p.sei.lithium_per_sei)
+}
+
+/// Solvent diffusivity (m^2/s) at which the transport-limited layer takes `share` of the
+/// negative electrode's lithium capacity in `duration` (s), at the reference temperature:
+/// `L^2 = L_0^2 + 2 V_bar D c_sol t / z_sei`.
+fn transport_diffusivity(p: &ParameterSet, share: f64, duration: f64) -> f64 {
+    let (s, l0) = (&p.sei, p.sei.initial_thickness);
+    let l = l0 + transport_thickening(p, share);
+    s.lithium_per_sei * (l * l - l0 * l0) / (2.0 * s.partial_molar_volume * s.solvent_concentration * duration)
+}
+
+/// Share of the negative electrode's lithium capacity (-) the transport-limited layer takes
+/// over the recording at solvent diffusivity `d` (m^2/s): the inverse of
+/// [`transport_diffusivity`].
+pub(super) fn transport_loss(p: &ParameterSet, d: f64, duration: f64) -> f64 {
+    let (s, l0) = (&p.sei, p.sei.initial_thickness);
+    let l = (l0 * l0 + 2.0 * s.partial_molar_volume * d * s.solvent_concentration * duration / s.lithium_per_sei).sqrt();
+    (l - l0) / transport_thickening(p, 1.0)
+}
+
+/// Lithium (A h) the transport-limited layer takes over the recording at solvent diffusivity
+/// `d` (m^2/s).
+pub(super) fn transport_lithium_ah(p: &ParameterSet, d: f64, duration: f64) -> f64 {
+    let e = &p.negative;
+    transport_loss(p, d, duration) * e.max_concentration * e.active_fraction * e.thickness * p.cell.area() * FARADAY / 3600.0
 }
 
 /// Lithium plating by `law`, irreversible or partially reversible: the rate constant fitted,
@@ -241,6 +290,10 @@ pub(super) fn implausible(c: super::Candidate, get: impl Fn(&str) -> Option<f64>
             let ratio = get("sei.exchange_current")? / base.sei.exchange_current;
             (!(1.0 / SEI_RANGE..=SEI_RANGE).contains(&ratio)).then(|| format!("SEI exchange current at {ratio:.3e} times the set's is outside 0.001 to 1000"))
         }
+        SeiGrowthTransport => {
+            let loss = transport_loss(base, get("sei.solvent_diffusivity")?, load.duration);
+            (loss > LAM_MAX_LOSS).then(|| format!("the SEI takes about {:.0} % of the negative electrode's lithium over the recording, more than 50 %", 100.0 * loss))
+        }
         LithiumPlating | LithiumPlatingPartial => {
             let ratio = get("plating.kinetic_rate_constant")? / base.plating.kinetic_rate_constant;
             (!(1.0 / PLATING_RANGE..=PLATING_RANGE).contains(&ratio)).then(|| format!("plating rate constant at {ratio:.3e} times the set's is outside 0.001 to 1000"))
@@ -272,6 +325,31 @@ mod tests {
         assert_eq!(equivalent_cycles(&q), 3.0);
         // A drive's reversals smaller than half the range are not cycles.
         assert_eq!(half_cycles(&[0.0, 1.0, 0.8, 1.5, 1.3, 2.0], 1.0), 1);
+    }
+
+    /// The closed form of the transport-limited layer's loss against the SPM's own SEI
+    /// growth through a day's rest (where its rate does not depend on the potential).
+    #[test]
+    fn the_transport_limited_loss_is_the_layers_growth_over_the_recording() {
+        use crate::models::{ModelBuilder, ModelKind, Submodels};
+        use crate::simulation::{SimOptions, simulate};
+        let p = crate::params::chen2020();
+        let day = 86_400.0;
+        let mut q = p.clone();
+        q.sei.solvent_diffusivity = transport_diffusivity(&p, 0.01, day);
+        let sub = Submodels { sei: SeiModel::SolventDiffusionLimited, ..Default::default() };
+        let mut builder = ModelBuilder::new(ModelKind::Spm, sub, Default::default());
+        let built = builder.build(&q).unwrap();
+        let m = built.model.as_ref();
+        let rest = crate::protocol::experiment::parse(&["Rest for 24 hours"], p.cell.nominal_capacity).unwrap();
+        let mut opts = SimOptions::for_cell(&q);
+        (opts.solver.rtol, opts.solver.atol) = (1e-10, 1e-10);
+        let sol = simulate(m, &mut built.workspace, &rest, &opts, None).unwrap();
+        let taken = (m.sei_lithium(&sol.final_state) - m.sei_lithium(&m.initial_state())) * FARADAY / 3600.0;
+        let stated = transport_lithium_ah(&p, q.sei.solvent_diffusivity, day);
+        // Achieved 8.5e-9 (the solver's tolerance).
+        assert!((taken / stated - 1.0).abs() < 4e-8, "simulated {taken} A h, closed form {stated} A h");
+        assert!((transport_loss(&p, q.sei.solvent_diffusivity, day) - 0.01).abs() < 1e-12);
     }
 
     #[test]

@@ -236,13 +236,14 @@ fn pair_class(a: super::Class, b: super::Class) -> super::Class {
 }
 
 /// Whether two candidates describe one physics (the electrolyte model and its properties, or
-/// two laws of lithium plating or of progressive loss of active material): a pair of them is one effect, not two.
+/// two laws of SEI growth, of lithium plating or of progressive loss of active material): a pair of them is one effect, not two.
 fn one_physics(a: Candidate, b: Candidate) -> bool {
     use Candidate::*;
     let family = |c: Candidate| match c {
         Electrolyte | ElectrolyteComposite | ElectrolyteTransport => Some(0),
         LithiumPlating | LithiumPlatingPartial => Some(1),
         ActiveMaterialGrowth | ActiveMaterialThroughput => Some(2),
+        SeiGrowth | SeiGrowthTransport => Some(3),
         _ => None,
     };
     family(a).is_some() && family(a) == family(b)
@@ -257,6 +258,7 @@ mod tests {
         use Candidate::*;
         assert!(one_physics(LithiumPlating, LithiumPlatingPartial));
         assert!(one_physics(Electrolyte, ElectrolyteTransport));
+        assert!(one_physics(SeiGrowth, SeiGrowthTransport));
         assert!(!one_physics(LithiumPlating, SeiGrowth));
         assert!(!one_physics(SeriesResistance, LithiumInventory));
     }
