@@ -198,7 +198,7 @@ pub(super) fn transport_loss(p: &ParameterSet, d: f64, duration: f64) -> f64 {
 
 /// Lithium (A h) the transport-limited layer takes over the recording at solvent diffusivity
 /// `d` (m^2/s).
-pub(super) fn transport_lithium_ah(p: &ParameterSet, d: f64, duration: f64) -> f64 {
+pub fn transport_lithium_ah(p: &ParameterSet, d: f64, duration: f64) -> f64 {
     let e = &p.negative;
     transport_loss(p, d, duration) * e.max_concentration * e.active_fraction * e.thickness * p.cell.area() * FARADAY / 3600.0
 }

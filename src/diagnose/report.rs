@@ -274,17 +274,7 @@ pub fn verdict_in_words(d: &Diagnosis) -> String {
                     mv(r.load_rms)
                 )
             });
-            // A cell still relaxing from a load before the recording began leaves the model,
-            // started relaxed, off at the start only.
-            let t0 = d.data.time.first().copied().unwrap_or(0.0);
-            let start = r.segments.first().filter(|seg| seg.start <= t0 && seg.end - t0 >= START_RELAXATION_S && seg.error_share >= AT_THE_START).map(|seg| {
-                format!(
-                    " The mismatch sits at the start ({:.0}-{:.0} s, {:.0} % of the squared error): the cell was likely not at rest when the recording began (a load just before it left gradients in the particles and electrolyte that the model, started relaxed, lacks); diagnose a recording that begins with a rest.",
-                    seg.start,
-                    seg.end,
-                    100.0 * seg.error_share
-                )
-            });
+            let start = unrelaxed_start(d);
             format!(
                 "Unexplained structure in {}: the user's model misses by {} RMS (noise {}), and no plausible candidate removes it on held-out data; see the residual plot.{}{}{}",
                 if windows.is_empty() { "the recording".to_string() } else { windows.join(", ") },
@@ -301,9 +291,28 @@ pub fn verdict_in_words(d: &Diagnosis) -> String {
             } else {
                 format!("the residual (RMSE {}) is consistent with noise ({})", mv(b.rmse_all), mv(d.noise))
             };
-            format!("No missing physics: {why}.")
+            // Below the floor on held-out points, a remainder at the start still says how the
+            // recording began.
+            let start = (d.residual.structured || b.rmse_all > 1.5 * d.noise).then(|| unrelaxed_start(d)).flatten();
+            format!("No missing physics: {why}.{}", start.unwrap_or_default())
         }
     }
+}
+
+/// A pointer to an unrelaxed start when the largest mismatch sits at the very start (from the
+/// first point, at least [`START_RELAXATION_S`] long, at least [`AT_THE_START`] of the squared
+/// error): a cell still relaxing from a load before the recording began leaves the model,
+/// started relaxed, off there only.
+fn unrelaxed_start(d: &Diagnosis) -> Option<String> {
+    let t0 = d.data.time.first().copied().unwrap_or(0.0);
+    d.residual.segments.first().filter(|seg| seg.start <= t0 && seg.end - t0 >= START_RELAXATION_S && seg.error_share >= AT_THE_START).map(|seg| {
+        format!(
+            " The mismatch sits at the start ({:.0}-{:.0} s, {:.0} % of the squared error): the cell was likely not at rest when the recording began (a load just before it left gradients in the particles and electrolyte that the model, started relaxed, lacks); diagnose a recording that begins with a rest.",
+            seg.start,
+            seg.end,
+            100.0 * seg.error_share
+        )
+    })
 }
 
 /// The conclusion over all rounds: the effects named and kept (not superseded), and the fit
