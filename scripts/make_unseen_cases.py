@@ -2841,7 +2841,209 @@ def batch_c(root):
                initial_soc=0.75, seed=248, period=1, cycler={"current_noise_A": 3e-3, "quantum_A": 1e-4, "quantum_V": 1e-4}, compare=lion.DFN())
 
 
-BATCHES = {"u": batch_u, "v": batch_v, "w": batch_w, "x": batch_x, "y": batch_y, "z": batch_z, "q": batch_q, "r": batch_r, "s": batch_s, "t": batch_t, "p": batch_p, "o": batch_o, "n": batch_n, "m": batch_m, "l": batch_l, "k": batch_k, "j": batch_j, "i": batch_i, "h": batch_h, "f": batch_f, "e": batch_e, "g": batch_g, "d": batch_d, "c": batch_c}
+
+def batch_a(root):
+    """Twenty-fifth batch, made blind (a helper session that did not read the diagnosis code,
+    judged once on the binary /work/bin/s12start before anything else), harder than batch c in
+    other ways: an SEI law no batch used, a pair whose smaller member is near the noise, a
+    concealed kinetic effect in a real-world drive, a voltage channel out of calibration by a
+    gain (not an offset), DFN data handed to the SPMe, 2.5 mV noise, and a control at -10 degC,
+    the coldest ambient of any batch. The Chen 2020 cell throughout. SEI growth limited by the
+    EC reaction with EC diffusion through the film (PyBaMM "ec reaction limited", both limits
+    active) over 5 CC-CV cycles with rests at 40 degC (SPMe); a negative OCP hysteresis of +-10
+    mV together with an electrolyte diffusivity x0.5 in a day of driving at 10 degC (a hill
+    drive with regeneration, a CC-CV charge, a town drive; SPMe, 0.5 mV noise); a positive
+    exchange current x0.3 together with 5 % lithium loss in a CC-CV charge then a four-level
+    HPPC at 15 degC, cycler artefacts (DFN); a voltage channel reading 0.3 % high (gain 1.003)
+    under DST cycling, a CC-CV charge and a C/3 discharge at 30 degC, cycler artefacts (SPM); a
+    negative exchange current x0.7 (a 7.2 mV effect) in a WLTP-like drive and a 1C charge at 45
+    degC (SPMe); self-heating of a well-cooled cell (h = 25, temperature recorded) in a cold
+    CC-CV charge and 1.5C discharge at 0 degC, DFN data handed to the SPMe (whose own error there
+    is about 4 mV against the effect's 12); a positive particle diffusivity x0.7 under CC-CV,
+    2C / 1C partial discharges and a C/5 discharge at 22 degC, 2.5 mV noise and cycler artefacts
+    (SPM); an SPMe control at -10 degC over a day of use (two WLTP-like drives around a 3 h
+    parking rest, a C/3 CC-CV charge), cycler artefacts. Lithium loss is accepted only by its
+    own words (SEI growth also by a lithium-inventory stand-in, as in c1); the voltage gain by
+    the words an engineer would use for a voltage channel out of calibration (a voltage offset
+    is its nearest constant stand-in). Each effect's size on its own (PyBaMM replays of the
+    recorded current, noise-free) is in its note.
+
+    First run (2026-11-27, binary /work/bin/s12start, sha256 55d99b7ad137, load average 2.7
+    before, 2.7-5.9 during (1 min), 3.5 after, on 2 cores shared with another session): 8 of 8
+    by the judge, 1311 s in all. a2 the pair in round 1 at the truth (electrolyte diffusivity
+    0.4996x, conductivity 1.0007x; hysteresis 10.17 mV, truth 10), 14.27 -> 0.53 mV (noise
+    0.52), 219 s; a3 the pair in round 1 (concentrations 11990 / 37871 mol/m3, the truth's at
+    40 % SOC of the aged cell 11978 / 37876; positive rate constant 1.015e-6, truth 1.026e-6;
+    negative 6.539e-7, the set's 6.48e-7), 14.82 -> 0.99 mV (noise 0.99), 206 s; a5 kinetics
+    (negative 4.552e-7, truth 4.536e-7; positive 3.363e-6, the set's 3.42e-6), 7.27 -> 1.01 mV,
+    51 s; a6 thermal in round 1 (h 25.35, truth 25; ambient 273.17 K), 13.87 -> 3.93 mV (the
+    SPMe's own error), then electrolyte transport (SPMe -> DFN), 1.00 mV (noise 0.98), 40 s; a7
+    particle diffusivity (positive 2.802e-15, truth 2.8e-15; negative 3.404e-14, the set's
+    3.3e-14), 19.41 -> 2.54 mV (noise 2.31), 7 s; a8 no missing physics (1.06 mV, noise 0.97),
+    1 s. a4 a voltage offset of +12.2 mV (the gain's 11.1-12.6 mV), 5.18 -> 1.04 mV (noise
+    0.97), then "no missing physics" though the remainder is structured (Ljung-Box p 4e-65,
+    1.34 mV RMS at rest against 1.04 under load): what a constant offset leaves of a gain,
+    about -1 mV at the end of the C/3 discharge and its rest (14000-16500 s), +0.3 mV in the CV
+    hold; 18 s. a1 passed on "SEI" with a stand-in partner and a remainder: round 1 "SEI growth
+    together with OCV hysteresis" (the reaction-limited law for the EC law, exchange current
+    1.451e-5 A/m2; a 1.79 mV hysteresis, none concealed, its initial state on its bound),
+    23.17 -> 3.46 mV (noise 1.11; the SEI alone 4.15 mV); round 2 "unexplained structure in
+    56772-61523 s, 17579-19792 s, 31611-33316 s" (3.46 mV, noise 1.04): 57 % of the square
+    error at the end of the fifth 1C discharge, its rest and the start of the charge (mean
+    -8.74 mV, 25.1 mV at the 2.8 V knee at 59652 s), 19 % at the end of the second discharge
+    (+7.97 mV), 7 % at the end of the third; 769 s of the 900 s cap."""
+    # a1: SEI growth limited by the EC reaction and EC diffusion through the film, 5 CC-CV cycles with rests at 40 degC, SPMe
+    p = chen()
+    p.update({"Ambient temperature [K]": 313.15, "Initial temperature [K]": 313.15,
+              "SEI kinetic rate constant [m.s-1]": 1e-13, "EC diffusivity [m2.s-1]": 7e-19})
+    cycle = ("Discharge at 1C until 2.8 V", "Rest for 20 minutes", "Charge at C/2 until 4.2 V", "Hold at 4.2 V until C/20", "Rest for 20 minutes")
+    write_case(root, "a1_sei_ec_reaction_limited_5_cccv_cycles_40C_spme", lion.SPMe(options={"SEI": "ec reaction limited"}), p,
+               [("Rest for 10 minutes",)] + [cycle] * 5,
+               {"effect": "sei_growth", "candidate_model": "spme", "accept": ["SEI", "inventory", "lithium loss", "cyclable"],
+                "ambient_temperature_K": 313.15,
+                "note": "SEI growth limited by the EC reaction with EC diffusion through the film (PyBaMM 'ec reaction limited'; a growth "
+                        "law no earlier batch used), SEI kinetic rate constant 1e-13 m/s (Chen 2020's 1e-12 x0.1) and EC diffusivity 7e-19 "
+                        "m2/s (2e-18 x0.35), so that both the reaction and the diffusion through the film limit the growth; at 40 degC "
+                        "(isothermal, not recorded): 0.00685 mol of lithium lost to the SEI over the 5 cycles (0.184 A h, 3.7 % of the "
+                        "nominal capacity), most of it early; discharge capacities 4.864, 4.740, 4.701, 4.669, 4.641 A h. A "
+                        "lithium-inventory loss growing through the recording is the SEI's nearest stand-in and is accepted. From full: 10 "
+                        "min rest, 5 x (1C to 2.8 V, 20 min rest, C/2 CC-CV to 4.2 V and C/20, 20 min rest), 19.5 h; sampled every 30 s, 1 "
+                        "mV noise; SPMe data and model. Replaying the recorded current (noise-free, from full), PyBaMM's nominal SPMe is "
+                        "29.2 mV RMS off (5.7 mV in the first eighth of the record, 51.7 mV in the seventh: the ends of the later "
+                        "discharges)"},
+               initial_soc=1.0, seed=251, period=30, compare=lion.SPMe())
+    # a2: negative OCP hysteresis +-10 mV with electrolyte diffusivity x0.5, a day of driving at 10 degC, SPMe, 0.5 mV noise
+    p = scaled(chen(), "Electrolyte diffusivity [m2.s-1]", 0.5)
+    p.update({"Ambient temperature [K]": 283.15, "Initial temperature [K]": 283.15})
+    with_negative_hysteresis(p, 0.010)
+    steps = (["Rest for 10 minutes", pybamm.step.current(hill_regen_drive(252, 3.0)), "Rest for 40 minutes", "Charge at C/2 until 4.1 V",
+              "Hold at 4.1 V until C/10", "Rest for 40 minutes"] + urban_drive(252, 25) + ["Rest for 30 minutes"])
+    write_case(root, "a2_hysteresis_and_electrolyte_diffusivity_day_of_driving_10C_spme",
+               lion.SPMe(options={"open-circuit potential": ("one-state hysteresis", "single")}), p, steps,
+               {"effect": "hysteresis+electrolyte_transport", "candidate_model": "spme", "accept": ["hysteresis", "electrolyte"],
+                "ambient_temperature_K": 283.15,
+                "note": "one-state hysteresis of the negative OCP, +-10 mV (decay rate 10, initial state 0), together with an electrolyte "
+                        "diffusivity x0.5 (all concentrations), at 10 degC (isothermal, not recorded). A day of driving from 60 % SOC: 10 "
+                        "min rest, a 30 min hill drive with regenerative braking (the hill_regen_drive of seed 252 scaled to peaks of 1.8C "
+                        "discharge and 1.2C charge, current linear between 1 s points), 40 min rest, C/2 CC-CV to 4.1 V and C/10 (16 min CC, "
+                        "40 min CV: the electrolyte polarisation holds the current back), 40 min rest, an urban drive (25 segments: bursts "
+                        "of 1.5-3C, cruising at 0.3-1C, regeneration at 0.5-1.5C, idling), 30 min rest; 3.8 h, sampled every 2 s, 0.5 mV "
+                        "noise; SPMe (one-state hysteresis) data and the SPMe without it. The electrolyte stays above 181 mol/m3. Replaying "
+                        "the recorded current from 60 %, PyBaMM's nominal SPMe is 14.1 mV RMS off; the SPMe with the hysteresis alone "
+                        "(electrolyte missing) 12.4 mV, the SPMe with the diffusivity alone (hysteresis missing) 4.1 mV (2.7-6.3 mV in each "
+                        "eighth): the hysteresis is the smaller member, 8x the noise"},
+               initial_soc=0.6, seed=252, noise=5e-4, period=2, compare=lion.SPMe())
+    # a3: positive exchange current x0.3 with 5 % lithium loss, CC-CV charge then a four-level HPPC at 15 degC, cycler artefacts, DFN
+    p = scaled(chen(), "Positive electrode exchange-current density [A.m-2]", 0.3)
+    p = scaled(p, "Initial concentration in negative electrode [mol.m-3]", 0.95)
+    p.update({"Ambient temperature [K]": 288.15, "Initial temperature [K]": 288.15})
+    level = ["Discharge at 2C for 10 seconds", "Rest for 40 seconds", "Charge at 1.5C for 10 seconds", "Rest for 40 seconds",
+             "Discharge at 1C for 10 seconds", "Rest for 40 seconds", "Charge at 0.75C for 10 seconds", "Rest for 5 minutes"]
+    steps = ["Rest for 10 minutes", "Charge at C/2 until 4.2 V", "Hold at 4.2 V until C/20", "Rest for 20 minutes", "Discharge at C/2 for 20 minutes",
+             "Rest for 20 minutes"]
+    for _ in range(3):
+        steps += level + ["Discharge at C/2 for 20 minutes", "Rest for 20 minutes"]
+    steps += level
+    write_case(root, "a3_kinetics_positive_and_inventory_cccv_hppc_15C_cycler_dfn", lion.DFN(), p, steps,
+               {"effect": "kinetics+lithium_inventory_loss", "candidate_model": "dfn",
+                "accept": ["kinetic|exchange|charge-transfer|charge transfer|reaction rate", "inventory|lithium loss|cyclable"],
+                "ambient_temperature_K": 288.15,
+                "note": "positive exchange-current density x0.3 together with 5 % less lithium (initial negative concentration x0.95, the "
+                        "initial state set as 40 % SOC of the aged cell), at 15 degC (isothermal, not recorded). From 40 % SOC: 10 min rest, "
+                        "C/2 CC-CV to 4.2 V and C/20, 20 min rest, C/2 for 20 min, 20 min rest, then a four-level HPPC: at each level 2C "
+                        "discharge 10 s, 40 s rest, 1.5C charge 10 s, 40 s rest, 1C discharge 10 s, 40 s rest, 0.75C charge 10 s, 5 min "
+                        "rest, with C/2 for 20 min and 20 min rest between levels (about 83, 66, 50 and 33 % SOC; the 1.5C charge pulse at "
+                        "the first level reaches 4.31 V); 5.4 h; cycler artefacts (irregular sampling, 3 mA current noise, 0.1 mV "
+                        "resolution), 1 mV noise; DFN data and model. Replaying the recorded current from 40 %, PyBaMM's nominal DFN is 27.1 "
+                        "mV RMS off, the DFN with the kinetics alone (inventory missing) 24.7 mV, with the inventory alone (kinetics "
+                        "missing) 12.4 mV"},
+               initial_soc=0.4, seed=253, cycler=CYCLER, compare=lion.DFN())
+    # a4: the voltage channel reads 0.3 % high (gain 1.003), DST cycling, CC-CV charge and C/3 discharge at 30 degC, cycler artefacts, SPM
+    p = chen()
+    p.update({"Ambient temperature [K]": 303.15, "Initial temperature [K]": 303.15})
+    steps = (["Rest for 10 minutes"] + dst_steps(2.0) * 6 + ["Rest for 30 minutes", "Charge at C/2 until 4.2 V", "Hold at 4.2 V until C/20",
+                                                             "Rest for 30 minutes", "Discharge at C/3 for 90 minutes", "Rest for 30 minutes"])
+    write_case(root, "a4_voltage_channel_gain_0p3pct_high_dst_cccv_30C_cycler_spm", lion.SPM(), p, steps,
+               {"effect": "voltage_measurement_gain", "candidate_model": "spm",
+                "accept": ["voltage offset", "voltage gain", "voltage scale", "voltage channel", "voltage sensor", "voltage measurement",
+                           "calibration"],
+                "ambient_temperature_K": 303.15,
+                "note": "the cycler's voltage channel reads 0.3 % high (a gain error of the voltage measurement, 1.003 x the cell's voltage: "
+                        "11.1 mV at 3.7 V, 12.6 mV at 4.2 V; not an offset), under current and at rest alike; the cell itself is nominal. "
+                        "Not a cell property; a voltage offset (about 12 mV) is its nearest constant stand-in and is accepted, as are the "
+                        "words an engineer would use for the channel. At 30 degC (isothermal, not recorded), from 90 % SOC: 10 min rest, 6 x "
+                        "the USABC Dynamic Stress Test (peak 2C, 36 min, about 90 -> 75 %), 30 min rest, C/2 CC-CV to 4.2 V and C/20, 30 min "
+                        "rest, C/3 for 90 min, 30 min rest, 4.6 h; cycler artefacts (irregular sampling, 3 mA current noise, 0.1 mV "
+                        "resolution), 1 mV noise; SPM data and model. The fault moves the recorded voltage by 12.0 mV RMS (11.2-12.6 mV in "
+                        "each eighth of the record)"},
+               initial_soc=0.9, seed=254, cycler=CYCLER, compare=lion.SPM(), post=lambda t, i, v: 1.003 * v)
+    # a5: negative exchange current x0.7 (concealed: a 6-7 mV effect), WLTP-like drive then a 1C charge at 45 degC, SPMe
+    p = scaled(chen(), "Negative electrode exchange-current density [A.m-2]", 0.7)
+    p.update({"Ambient temperature [K]": 318.15, "Initial temperature [K]": 318.15})
+    steps = ["Rest for 2 minutes", pybamm.step.current(wltp_like_current(255)), "Rest for 10 minutes", "Charge at 1C for 6 minutes",
+             "Rest for 10 minutes"]
+    write_case(root, "a5_kinetics_negative_concealed_wltp_drive_45C_spme", lion.SPMe(), p, steps,
+               {"effect": "kinetics", "candidate_model": "spme", "accept": ["kinetic", "exchange", "charge-transfer", "charge transfer", "reaction rate"],
+                "ambient_temperature_K": 318.15,
+                "note": "negative exchange-current density x0.7 (a concealed effect), at 45 degC (isothermal, not recorded). From 80 % SOC: "
+                        "2 min rest, a WLTP-like drive (wltp_like_current seed 255: 30 min, peak 3C discharge, regeneration to 1.5C charge, "
+                        "current linear between 1 s points, 0.48 A h out), 10 min rest, 1C charge for 6 min, 10 min rest; 58 min, sampled "
+                        "every 1 s, 1 mV noise; SPMe data and model. Replaying the recorded current from 80 %, PyBaMM's nominal SPMe is 7.2 "
+                        "mV RMS off (3.8-8.5 mV in each eighth under the drive, 13.1 mV in the eighth that holds the 1C charge, at most 18.4 "
+                        "mV)"},
+               initial_soc=0.8, seed=255, period=1, compare=lion.SPMe())
+    # a6: self-heating h = 25 (well cooled), temperature recorded, cold CC-CV charge and 1.5C discharge at 0 degC, DFN data handed to the SPMe
+    p = chen()
+    p.update({"Ambient temperature [K]": 273.15, "Initial temperature [K]": 273.15, "Total heat transfer coefficient [W.m-2.K-1]": 25.0})
+    steps = ["Rest for 10 minutes", "Charge at 1C until 4.2 V", "Hold at 4.2 V until C/10", "Rest for 30 minutes", "Discharge at 1.5C for 25 minutes",
+             "Rest for 30 minutes", "Discharge at C/2 until 3.0 V", "Rest for 30 minutes"]
+    write_case(root, "a6_thermal_h25_recorded_cold_cccv_0C_dfn_data_spme", lion.DFN(options={"thermal": "lumped"}), p, steps,
+               {"effect": "thermal", "candidate_model": "spme", "accept": ["thermal", "self-heating", "heat"], "ambient_temperature_K": 273.15,
+                "note": "lumped self-heating of a well-cooled cell, h = 25 W/(m2 K), ambient and initial 0 degC. From 20 % SOC: 10 min rest, "
+                        "1C CC-CV to 4.2 V and C/10, 30 min rest, 1.5C for 25 min, 30 min rest, C/2 to 3.0 V, 30 min rest, 4.1 h (the cell "
+                        "warms by up to 13.6 K, in the 1.5C discharge); temperature recorded (0.05 K noise, 0.1 K resolution); sampled every "
+                        "2 s, 1 mV noise; DFN data handed to the isothermal SPMe at 0 degC. Replaying the recorded current from 20 %, "
+                        "PyBaMM's nominal SPMe is 13.9 mV RMS off, the isothermal DFN 11.9 mV (the effect), the thermal SPMe with the true h "
+                        "3.8 mV (the SPMe's own error at 0 degC, at most 11.5 mV, in the charge and the 1.5C discharge), the thermal SPM "
+                        "36.2 mV. One concealed effect: a first verdict must name the thermal effect; electrolyte transport (SPMe -> DFN) "
+                        "beside it is right too"},
+               initial_soc=0.2, temperature=True, seed=256, period=2, cycler={"quantum_K": 0.1, "quantum_V": 1e-4, "quantum_A": 1e-4},
+               compare=lion.SPMe())
+    # a7: positive particle diffusivity x0.7, CC-CV, 2C / 1C partial discharges, a C/5 discharge at 22 degC, 2.5 mV noise, cycler artefacts, SPM
+    p = scaled(chen(), "Positive particle diffusivity [m2.s-1]", 0.7)
+    p.update({"Ambient temperature [K]": 295.15, "Initial temperature [K]": 295.15})
+    steps = ["Rest for 10 minutes", "Charge at C/2 until 4.2 V", "Hold at 4.2 V until C/20", "Rest for 1 hour", "Discharge at 2C for 10 minutes",
+             "Rest for 30 minutes", "Discharge at 1C for 20 minutes", "Rest for 30 minutes", "Charge at 1C for 15 minutes", "Rest for 30 minutes",
+             "Discharge at C/5 for 2 hours", "Rest for 1 hour"]
+    write_case(root, "a7_diffusivity_positive_partial_discharges_22C_2p5mV_cycler_spm", lion.SPM(), p, steps,
+               {"effect": "solid_diffusivity", "candidate_model": "spm", "accept": ["particle", "solid diffusiv", "solid-phase diffusiv"],
+                "ambient_temperature_K": 295.15,
+                "note": "positive particle diffusivity x0.7 (2.8e-15 m2/s instead of 4e-15), at 22 degC (isothermal, not recorded). From 50 "
+                        "% SOC: 10 min rest, C/2 CC-CV to 4.2 V and C/20, 1 h rest, 2C for 10 min, 30 min rest, 1C for 20 min, 30 min rest, "
+                        "1C charge for 15 min, 30 min rest, C/5 for 2 h, 1 h rest, 7.9 h; cycler artefacts (irregular sampling, 3 mA current "
+                        "noise, 0.1 mV resolution), 2.5 mV noise; SPM data and model. Replaying the recorded current from 50 %, PyBaMM's "
+                        "nominal SPM is 13.4 mV RMS off (14-22 mV in each of the first five eighths of the record, 1.1 mV in the last)"},
+               initial_soc=0.5, seed=257, noise=2.5e-3, cycler=CYCLER, compare=lion.SPM())
+    # a8: control, SPMe at -10 degC, a day of use: two WLTP-like drives around a 3 h parking rest, a C/3 CC-CV charge; cycler artefacts
+    p = chen()
+    p.update({"Ambient temperature [K]": 263.15, "Initial temperature [K]": 263.15})
+    morning = wltp_like_current(258, peak_C=2.0, regen_C=0.75)[:1023]
+    evening = wltp_like_current(259, peak_C=2.0, regen_C=0.75)
+    steps = ["Rest for 10 minutes", pybamm.step.current(morning), "Rest for 3 hours", pybamm.step.current(evening), "Rest for 30 minutes",
+             "Charge at C/3 until 4.1 V", "Hold at 4.1 V until C/20", "Rest for 30 minutes"]
+    write_case(root, "a8_control_day_of_use_minus10C_cycler_spme", lion.SPMe(), p, steps,
+               {"effect": "none", "candidate_model": "spme", "accept": ["no missing"], "ambient_temperature_K": 263.15,
+                "note": "negative control at -10 degC (isothermal, not recorded), the coldest ambient of any batch: SPMe data and model, "
+                        "nothing concealed. A day of use from 70 % SOC: 10 min rest, a morning drive (the first 17 min of a WLTP-like drive, "
+                        "seed 258, peak 2C, regeneration to 0.4C), a 3 h parking rest, an evening drive (a full 30 min WLTP-like drive, seed "
+                        "259, peak 2C), 30 min rest, C/3 CC-CV to 4.1 V and C/20, 30 min rest; 6.3 h, the voltage between 3.52 and 4.10 V; "
+                        "cycler artefacts (irregular sampling: the parking rest every 60 s, 3 mA current noise, 0.1 mV resolution), 1 mV "
+                        "noise"},
+               initial_soc=0.7, seed=258, cycler=CYCLER, compare=lion.SPMe())
+
+
+
+BATCHES = {"u": batch_u, "v": batch_v, "w": batch_w, "x": batch_x, "y": batch_y, "z": batch_z, "q": batch_q, "r": batch_r, "s": batch_s, "t": batch_t, "p": batch_p, "o": batch_o, "n": batch_n, "m": batch_m, "l": batch_l, "k": batch_k, "j": batch_j, "i": batch_i, "h": batch_h, "f": batch_f, "e": batch_e, "g": batch_g, "d": batch_d, "c": batch_c, "a": batch_a}
 
 if __name__ == "__main__":
     root = sys.argv[1] if len(sys.argv) > 1 else "out/unseen-cases"
