@@ -31,7 +31,7 @@ pub enum Candidate {
     RcDynamics,
     Hysteresis,
     SeiGrowth,
-    SeiGrowthTransport,
+    SeiGrowthSeries,
     LithiumPlating,
     LithiumPlatingPartial,
     ActiveMaterialGrowth,
@@ -119,7 +119,7 @@ impl Candidate {
         Candidate::RcDynamics,
         Candidate::Hysteresis,
         Candidate::SeiGrowth,
-        Candidate::SeiGrowthTransport,
+        Candidate::SeiGrowthSeries,
         Candidate::LithiumPlating,
         Candidate::LithiumPlatingPartial,
         Candidate::ActiveMaterialGrowth,
@@ -131,7 +131,7 @@ impl Candidate {
 
     /// An ageing candidate: it changes the cell from cycle to cycle ([`ageing`]).
     pub fn is_ageing(self) -> bool {
-        matches!(self, Candidate::SeiGrowth | Candidate::SeiGrowthTransport | Candidate::LithiumPlating | Candidate::LithiumPlatingPartial | Candidate::ActiveMaterialGrowth | Candidate::ActiveMaterialThroughput)
+        matches!(self, Candidate::SeiGrowth | Candidate::SeiGrowthSeries | Candidate::LithiumPlating | Candidate::LithiumPlatingPartial | Candidate::ActiveMaterialGrowth | Candidate::ActiveMaterialThroughput)
     }
 
     /// Short name, as the verdict uses it.
@@ -149,7 +149,7 @@ impl Candidate {
             Candidate::RcDynamics => "RC / double-layer dynamics",
             Candidate::Hysteresis => "OCV hysteresis",
             Candidate::SeiGrowth => "SEI growth (lithium lost as the film grows, in cycling and in storage)",
-            Candidate::SeiGrowthTransport => "SEI growth, transport-limited (lithium lost as the film grows, ever more slowly as it thickens)",
+            Candidate::SeiGrowthSeries => "SEI growth, reaction and transport in series (lithium lost as the film grows, more slowly as it thickens)",
             Candidate::LithiumPlating => "lithium plating (lithium lost to irreversible plating during the charges)",
             Candidate::LithiumPlatingPartial => "lithium plating, partially reversible (plated lithium strips back after the charges and part of it turns dead)",
             Candidate::ActiveMaterialGrowth => "progressive loss of active material (stress-driven, over the cycles)",
@@ -169,7 +169,7 @@ impl Candidate {
             | Candidate::RcDynamics
             | Candidate::Hysteresis
             | Candidate::SeiGrowth
-            | Candidate::SeiGrowthTransport
+            | Candidate::SeiGrowthSeries
             | Candidate::LithiumPlating
             | Candidate::LithiumPlatingPartial
             | Candidate::ActiveMaterialGrowth
@@ -197,7 +197,7 @@ impl Candidate {
             Candidate::Thermal => "losses that fall as the cell warms under load (correlated with the recorded temperature rise or with the accumulated I²)",
             Candidate::RcDynamics => "transients of seconds after current steps that settle to an offset under load and decay in rests",
             Candidate::Hysteresis => "an offset at rest whose sign follows the direction of the last current (charge vs discharge), not its size",
-            Candidate::SeiGrowthTransport => "as reaction-limited SEI growth, but the lithium lost per cycle (or per hour of storage) falls as the film thickens: the film grows with the square root of time, whatever the potential",
+            Candidate::SeiGrowthSeries => "as reaction-limited SEI growth, but the lithium lost per cycle (or per hour of storage) falls as the film thickens and transport through it takes over (towards growth with the square root of time, whatever the potential)",
             Candidate::SeiGrowth => "capacity and the end-of-discharge knee drift from cycle to cycle, or across a storage rest, as lithium is consumed (a fixed stoichiometry offset does not drift), with a slowly growing film resistance",
             Candidate::LithiumPlating => "capacity and the knee drift from cycle to cycle as lithium plates while the negative electrode's potential is low (late in fast charges), with no film resistance; grows steeply with the charge rate and at low temperature",
             Candidate::LithiumPlatingPartial => "as irreversible plating, but the plated lithium strips back in the rest or discharge after each charge (a voltage plateau there), and only the part that turned dead is lost from cycle to cycle",
@@ -221,7 +221,7 @@ impl Candidate {
             Candidate::RcDynamics => "time constant R C of 1 ms to 30 s (longer is transport, not an interface)",
             Candidate::Hysteresis => "half-width up to 50 mV",
             Candidate::SeiGrowth => "SEI exchange current 0.001 to 1000 times the set's",
-            Candidate::SeiGrowthTransport => "up to 50 % of the negative electrode's lithium lost to the film over the recording",
+            Candidate::SeiGrowthSeries => "SEI rate constant 0.001 to 1000 times the set's; EC diffusivity up to the one whose transport limit takes 50 % of the negative electrode's lithium over the recording",
             Candidate::LithiumPlating => "plating rate constant 0.001 to 1000 times the set's",
             Candidate::LithiumPlatingPartial => "plating rate constant 0.001 to 1000 times the set's, dead-lithium decay constant 1e-8 to 1e-2 1/s",
             Candidate::ActiveMaterialGrowth => "up to 50 % of an electrode's active material lost over the recording (steady-profile estimate)",
@@ -254,15 +254,15 @@ impl Candidate {
                 "a rest of an hour after a fast charge, sampled every few seconds (reversible plated lithium strips back there, a voltage plateau irreversible plating lacks)".into()
             }
             (LithiumPlating | LithiumPlatingPartial, SeiGrowth) | (SeiGrowth, LithiumPlating | LithiumPlatingPartial) => "cycles at a second charge rate, or a storage period at high state of charge (both are cathodic side reactions on the same potential difference: plating grows steeply with the charge rate and at low temperature, SEI growth with time at high state of charge)".into(),
-            (SeiGrowth, SeiGrowthTransport) | (SeiGrowthTransport, SeiGrowth) => {
-                "more cycles, or a storage period of days between two slow cycles (a transport-limited film's growth slows as it thickens, a reaction-limited one's does not; reaction-limited growth is faster at high state of charge)".into()
+            (SeiGrowth, SeiGrowthSeries) | (SeiGrowthSeries, SeiGrowth) => {
+                "more cycles, or a storage period of days between two slow cycles (a film limited by transport grows more slowly as it thickens, a reaction-limited one does not)".into()
             }
-            (LithiumPlating | LithiumPlatingPartial, SeiGrowthTransport) | (SeiGrowthTransport, LithiumPlating | LithiumPlatingPartial) => "cycles at a second charge rate (plating grows steeply with the charge rate and at low temperature, transport-limited SEI growth with time only)".into(),
+            (LithiumPlating | LithiumPlatingPartial, SeiGrowthSeries) | (SeiGrowthSeries, LithiumPlating | LithiumPlatingPartial) => "cycles at a second charge rate (plating grows steeply with the charge rate and at low temperature, SEI growth with time at high state of charge)".into(),
             (ActiveMaterialGrowth, ActiveMaterialThroughput) | (ActiveMaterialThroughput, ActiveMaterialGrowth) => {
                 "cycles at a second rate (stress-driven loss per charge passed grows with the current, throughput-driven loss does not), or a cycle whose charge and discharge differ in rate".into()
             }
-            (ActiveMaterialGrowth | ActiveMaterialThroughput, LithiumInventory | SeiGrowth | SeiGrowthTransport | LithiumPlating | LithiumPlatingPartial | ActiveMaterial)
-            | (LithiumInventory | SeiGrowth | SeiGrowthTransport | LithiumPlating | LithiumPlatingPartial | ActiveMaterial, ActiveMaterialGrowth | ActiveMaterialThroughput) => {
+            (ActiveMaterialGrowth | ActiveMaterialThroughput, LithiumInventory | SeiGrowth | SeiGrowthSeries | LithiumPlating | LithiumPlatingPartial | ActiveMaterial)
+            | (LithiumInventory | SeiGrowth | SeiGrowthSeries | LithiumPlating | LithiumPlatingPartial | ActiveMaterial, ActiveMaterialGrowth | ActiveMaterialThroughput) => {
                 "a slow (C/20) cycle at the start and the end, read by differential voltage analysis".into()
             }
             (VoltageOffset, _) | (_, VoltageOffset) => "a slow (C/20) charge and discharge over the full window with the voltage channel checked against a reference: a shifted stoichiometry moves the OCV's features along the capacity axis, an offset moves the whole curve up or down".into(),
@@ -310,7 +310,7 @@ impl Candidate {
             Candidate::SeriesResistance | Candidate::Kinetics | Candidate::RcDynamics if f.steps.is_empty() && f.distinct_rates < 2 => {
                 Some("needs current steps or loads at two or more rates".into())
             }
-            Candidate::SeiGrowth | Candidate::SeiGrowthTransport => ageing::too_short_for_sei(f),
+            Candidate::SeiGrowth | Candidate::SeiGrowthSeries => ageing::too_short_for_sei(f),
             Candidate::LithiumPlating | Candidate::LithiumPlatingPartial | Candidate::ActiveMaterialGrowth | Candidate::ActiveMaterialThroughput => ageing::too_few_cycles(f),
             // In one uninterrupted run a leak only rescales the charge passed (a capacity or
             // stoichiometry change); a rest, or charge and discharge both, sets it apart.
@@ -377,7 +377,7 @@ impl Candidate {
                     (factors, "electrolyte diffusivity and conductivity factors refitted".into())
                 }
             }
-            Candidate::SeiGrowth | Candidate::SeiGrowthTransport | Candidate::LithiumPlating | Candidate::LithiumPlatingPartial | Candidate::ActiveMaterialGrowth | Candidate::ActiveMaterialThroughput => {
+            Candidate::SeiGrowth | Candidate::SeiGrowthSeries | Candidate::LithiumPlating | Candidate::LithiumPlatingPartial | Candidate::ActiveMaterialGrowth | Candidate::ActiveMaterialThroughput => {
                 let (extra, fixed, change, changed_base) = ageing::augment(self, &mut spec, &p, load)?;
                 (structural_parameters, aged) = (fixed, changed_base);
                 (extra, change)
@@ -543,7 +543,7 @@ impl Candidate {
                 let h = get("cell.hysteresis_voltage")?;
                 (h > 0.05).then(|| format!("hysteresis half-width {:.1} mV exceeds 50 mV", h * 1e3))
             }
-            Candidate::SeiGrowth | Candidate::SeiGrowthTransport | Candidate::LithiumPlating | Candidate::LithiumPlatingPartial | Candidate::ActiveMaterialGrowth | Candidate::ActiveMaterialThroughput => {
+            Candidate::SeiGrowth | Candidate::SeiGrowthSeries | Candidate::LithiumPlating | Candidate::LithiumPlatingPartial | Candidate::ActiveMaterialGrowth | Candidate::ActiveMaterialThroughput => {
                 ageing::implausible(self, get, base, load)
             }
             Candidate::VoltageOffset => {
@@ -591,10 +591,6 @@ impl Candidate {
                 let (which, l) = if p > n { ("positive", p) } else { ("negative", n) };
                 format!("progressive loss of active material, {which} electrode (about {:.1} % of its capacity over the recording)", 100.0 * l)
             }
-            Candidate::SeiGrowthTransport => match get("sei.solvent_diffusivity") {
-                Some(d) => format!("{} (about {:.3} A h of lithium over the recording)", self.name(), ageing::transport_lithium_ah(base, d, load.duration)),
-                None => self.name().to_string(),
-            },
             Candidate::VoltageOffset => match get("cell.voltage_offset") {
                 Some(v) => format!("{} of {:+.1} mV", self.name(), v * 1e3),
                 None => self.name().to_string(),

@@ -35,7 +35,7 @@ pub mod synthetic;
 use rayon::prelude::*;
 use serde::Serialize;
 
-pub use ageing::{Load, transport_lithium_ah};
+pub use ageing::Load;
 pub use candidates::{Candidate, Class};
 use features::Features;
 pub use locate::ResidualAnalysis;

@@ -243,7 +243,7 @@ fn one_physics(a: Candidate, b: Candidate) -> bool {
         Electrolyte | ElectrolyteComposite | ElectrolyteTransport => Some(0),
         LithiumPlating | LithiumPlatingPartial => Some(1),
         ActiveMaterialGrowth | ActiveMaterialThroughput => Some(2),
-        SeiGrowth | SeiGrowthTransport => Some(3),
+        SeiGrowth | SeiGrowthSeries => Some(3),
         _ => None,
     };
     family(a).is_some() && family(a) == family(b)
@@ -258,7 +258,7 @@ mod tests {
         use Candidate::*;
         assert!(one_physics(LithiumPlating, LithiumPlatingPartial));
         assert!(one_physics(Electrolyte, ElectrolyteTransport));
-        assert!(one_physics(SeiGrowth, SeiGrowthTransport));
+        assert!(one_physics(SeiGrowth, SeiGrowthSeries));
         assert!(!one_physics(LithiumPlating, SeiGrowth));
         assert!(!one_physics(SeriesResistance, LithiumInventory));
     }
