@@ -1,6 +1,6 @@
 //! The ageing candidates: SEI growth (reaction-limited, or reaction and transport in series),
-//! lithium plating and
-//! progressive (stress-driven or throughput-driven) loss of active material. Each changes the cell from cycle to cycle, so a recording identifies it
+//! lithium plating and progressive (stress-driven or throughput-driven) loss of active
+//! material. Each changes the cell from cycle to cycle, so a recording identifies it
 //! only over several cycles; each is added as its PyBaMM submodel with its rate fitted.
 
 use super::features::Features;
