@@ -286,14 +286,15 @@ pub fn verdict_in_words(d: &Diagnosis) -> String {
             )
         }
         Verdict::NoMissingPhysics => {
-            let why = if d.residual.structured || b.rmse_all > 1.5 * d.noise {
+            let above_noise = d.residual.structured || b.rmse_all > 1.5 * d.noise;
+            let why = if above_noise {
                 format!("what remains (RMSE {}, noise {}) is below the {} a named effect must remove", mv(b.rmse_all), mv(d.noise), mv(floor))
             } else {
                 format!("the residual (RMSE {}) is consistent with noise ({})", mv(b.rmse_all), mv(d.noise))
             };
             // Below the floor on held-out points, a remainder at the start still says how the
             // recording began.
-            let start = (d.residual.structured || b.rmse_all > 1.5 * d.noise).then(|| unrelaxed_start(d)).flatten();
+            let start = above_noise.then(|| unrelaxed_start(d)).flatten();
             format!("No missing physics: {why}.{}", start.unwrap_or_default())
         }
     }
