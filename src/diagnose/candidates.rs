@@ -253,11 +253,10 @@ impl Candidate {
             (LithiumPlating, LithiumPlatingPartial) | (LithiumPlatingPartial, LithiumPlating) => {
                 "a rest of an hour after a fast charge, sampled every few seconds (reversible plated lithium strips back there, a voltage plateau irreversible plating lacks)".into()
             }
-            (LithiumPlating | LithiumPlatingPartial, SeiGrowth) | (SeiGrowth, LithiumPlating | LithiumPlatingPartial) => "cycles at a second charge rate, or a storage period at high state of charge (both are cathodic side reactions on the same potential difference: plating grows steeply with the charge rate and at low temperature, SEI growth with time at high state of charge)".into(),
+            (LithiumPlating | LithiumPlatingPartial, SeiGrowth | SeiGrowthSeries) | (SeiGrowth | SeiGrowthSeries, LithiumPlating | LithiumPlatingPartial) => "cycles at a second charge rate, or a storage period at high state of charge (both are cathodic side reactions on the same potential difference: plating grows steeply with the charge rate and at low temperature, SEI growth with time at high state of charge)".into(),
             (SeiGrowth, SeiGrowthSeries) | (SeiGrowthSeries, SeiGrowth) => {
                 "more cycles, or a storage period of days between two slow cycles (a film limited by transport grows more slowly as it thickens, a reaction-limited one does not)".into()
             }
-            (LithiumPlating | LithiumPlatingPartial, SeiGrowthSeries) | (SeiGrowthSeries, LithiumPlating | LithiumPlatingPartial) => "cycles at a second charge rate (plating grows steeply with the charge rate and at low temperature, SEI growth with time at high state of charge)".into(),
             (ActiveMaterialGrowth, ActiveMaterialThroughput) | (ActiveMaterialThroughput, ActiveMaterialGrowth) => {
                 "cycles at a second rate (stress-driven loss per charge passed grows with the current, throughput-driven loss does not), or a cycle whose charge and discharge differ in rate".into()
             }
