@@ -34,10 +34,12 @@ use crate::common;
 /// grow by only 4 % and 0.2 % of their 5 nm, so there the gap is the solvers' tolerance on
 /// the layer itself (achieved up to 5.4e-5 of the growth, 4e-16 m) and the limit is wider.
 fn growth_limit(sei: SeiModel, others: f64) -> f64 {
-    match sei {
-        SeiModel::ElectronMigrationLimited | SeiModel::InterstitialDiffusionLimited => 2e-4,
-        _ => others,
-    }
+    if barely_grows(sei) { 2e-4 } else { others }
+}
+
+/// The laws whose layer grows by only a few per cent at Chen 2020's rates.
+fn barely_grows(sei: SeiModel) -> bool {
+    matches!(sei, SeiModel::ElectronMigrationLimited | SeiModel::InterstitialDiffusionLimited)
 }
 
 fn rows(file: &str) -> Vec<Vec<f64>> {
@@ -170,9 +172,11 @@ fn cycle_summaries_match_pybamm() {
             // (DFN: 2.0e-5-2.6e-5 mA h, 6.8e-8, 7e-9-1.8e-8, 1.4e-6-5.4e-6).
             assert_eq!(summaries.len(), CYCLES);
             assert!(dq < 3e-4 && dli < growth_limit(sei, 3e-5) && dl < 1.2e-5, "{kind} {name}: {dq} mA h, {dli}, {dl}");
-            // Relative 4e-5 with an absolute floor of 1e-4 mA h (below the per-cycle capacity
-            // limit): the interstitial-diffusion layer fades the cell by only 0.014 mA h.
-            assert!((ours_fade - ref_fade).abs() * 1e3 < 4e-5 * ref_fade * 1e3 + 1e-4, "{kind} {name}: fade {ours_fade} vs {ref_fade}");
+            // Relative 4e-5, with an absolute floor of 1e-4 mA h (below the per-cycle capacity
+            // limit) for the two laws that barely grow: the interstitial-diffusion layer fades
+            // the cell by only 0.014 mA h.
+            let floor = if barely_grows(sei) { 1e-4 } else { 0.0 };
+            assert!((ours_fade - ref_fade).abs() * 1e3 < 4e-5 * ref_fade * 1e3 + floor, "{kind} {name}: fade {ours_fade} vs {ref_fade}");
         }
     }
 }
