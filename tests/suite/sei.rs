@@ -198,8 +198,10 @@ fn lithium_in_particles_and_sei_is_conserved() {
             let worst = sol.states.iter().map(|y| (total(y) - li0).abs() / li0).fold(0.0, f64::max);
             let taken = m.sei_lithium(&sol.final_state) - m.sei_lithium(&sol.states[0]);
             println!("{kind} {name}: {li0:.6} mol, SEI took {taken:.3e} mol ({:.2e} of it), worst drift {worst:.2e}", taken / li0);
-            // Measurable: a thousand times the drift allowed below.
-            assert!(taken / li0 > 1e-10, "{kind} {name}: the SEI took {taken} mol");
+            // Measurable: the two laws that barely grow take 1.9e-7 to 6.2e-6 of it, the others
+            // 1.6e-5 to 1.8e-2.
+            let least = if barely_grows(sei) { 1e-7 } else { 1e-6 };
+            assert!(taken / li0 > least, "{kind} {name}: the SEI took {taken} mol");
             // Achieved 5.9e-16 to 7.8e-16 (1.7e-14 and 2.7e-12 in the SPMe before its SEI
             // Jacobian pattern gave the particle surface the electrolyte its side reaction reads).
             assert!(worst < 4e-15, "{kind} {name}: lithium drift {worst:e}");
