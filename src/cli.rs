@@ -187,6 +187,10 @@ pub(crate) enum Command {
         /// Diagnose again with each named effect added, up to this many rounds.
         #[arg(long, default_value_t = 3)]
         max_rounds: usize,
+        /// Start no further round once this many seconds have passed (the round in progress
+        /// finishes and the report says the diagnosis was cut short). Default: no limit.
+        #[arg(long)]
+        time_budget: Option<f64>,
         /// Output folder.
         #[arg(long, default_value = "out/diagnosis")]
         out: PathBuf,

@@ -65,8 +65,9 @@ fn warn(warnings: &[String]) {
 
 fn run(cli: Cli) -> Result<(), Error> {
     match cli.command {
-        Command::Diagnose { overrides, model, data, params, contact_resistance, thermal, fit, refits, start_at_rest, max_rounds, out } => {
-            use cellstudio::diagnose::{DiagnoseOptions, default_fit_parameter, diagnose_rounds, report};
+        Command::Diagnose { overrides, model, data, params, contact_resistance, thermal, fit, refits, start_at_rest, max_rounds, time_budget, out } => {
+            use cellstudio::diagnose::{DiagnoseOptions, default_fit_parameter, diagnose_rounds_with, report};
+            use std::io::Write;
             if refits == Some(0) {
                 return Err(Error::invalid("--refits", 0.0, "must be at least 1: with no candidate refitted nothing can be named or ruled out"));
             }
@@ -83,9 +84,18 @@ fn run(cli: Cli) -> Result<(), Error> {
                 options.max_refits = n;
             }
             options.fit.start_at_rest = start_at_rest;
-            let rounds = diagnose_rounds(&rec, &p, &options, max_rounds)?;
-            for (k, d) in rounds.iter().enumerate() {
-                println!("{}# Round {} of {}\n\n{}", if k > 0 { "\n" } else { "" }, k + 1, rounds.len(), report::markdown(d, &[]));
+            options.time_budget = time_budget;
+            // Each round is printed as soon as it is done: a run stopped part-way still shows
+            // the rounds it finished. The files below are written only when all are done.
+            let mut printed = 0;
+            let rounds = diagnose_rounds_with(&rec, &p, &options, max_rounds, |d| {
+                printed += 1;
+                println!("{}# Round {printed} (of at most {max_rounds})\n\n{}", if printed > 1 { "\n" } else { "" }, report::markdown(d, &[]));
+                let _ = std::io::stdout().flush();
+            })?;
+            let superseded = rounds.last().map_or(String::new(), |d| report::superseded(&d.superseded));
+            if !superseded.is_empty() {
+                println!("\n{}", superseded.trim_start());
             }
             println!("\n{}\n", report::conclusion(&rounds));
             let written = cellstudio::report::diagnosis_files::write(&rounds, staged.path())?;

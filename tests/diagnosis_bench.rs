@@ -704,6 +704,22 @@ fn k3_voltage_channel_offset_gitt_spm() {
 }
 
 #[test]
+fn a4_voltage_channel_gain_dst_spm() {
+    // Blind batch a: the voltage channel reads 0.3 % high (1.003 times the cell's voltage)
+    // through DSTs and a CC-CV at 30 degC. Its first run named an offset of +12.2 mV and left
+    // 1.04 mV of structure (noise 0.97); the voltage-gain candidate now names the gain.
+    let rounds = run_case("diagnosis-extra/a4_voltage_channel_gain_0p3pct_high_dst_cccv_30C_cycler_spm");
+    assert_eq!(rounds[0].best().map(|c| c.candidate), Some(Candidate::VoltageGain), "{}", rounds[0].summary);
+    let gain = first_fitted(&rounds, "cell.voltage_gain");
+    assert!((gain / 0.003 - 1.0).abs() < 0.02, "gain {gain}: {}", rounds[0].summary);
+    // It leaves less than the offset that stood in (1.04 mV), within 5 % of the noise (0.99
+    // mV at noise 0.96 when added).
+    let rmse = |c: Candidate| rounds[0].candidates.iter().find(|o| o.candidate == c && o.partner.is_none()).and_then(|o| o.fit.as_ref()).unwrap().rmse_all;
+    let after = rmse(Candidate::VoltageGain);
+    assert!(after < rmse(Candidate::VoltageOffset) && after < 1.05 * rounds[0].noise, "{after} V left: {}", rounds[0].summary);
+}
+
+#[test]
 fn k2_current_channel_gain_spme() {
     // Blind batch k: the current channel reads 3 % low (the cell carries 1.03 times the
     // recorded current). Its first run named positive LAM with both fractions at 0.97; equal

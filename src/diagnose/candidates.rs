@@ -38,6 +38,7 @@ pub enum Candidate {
     ActiveMaterialThroughput,
     Leak,
     VoltageOffset,
+    VoltageGain,
     UnrelaxedStart,
 }
 
@@ -97,6 +98,11 @@ const HISTORY_RANGE_S: (f64, f64) = (10.0, 7200.0);
 const VOLTAGE_OFFSET_SEARCH: f64 = 0.05;
 const VOLTAGE_OFFSET_PLAUSIBLE: f64 = 0.02;
 
+/// The voltage-gain candidate's search range and plausible size (-): 0.5 % reads 21 mV off
+/// at 4.2 V, as far as the offset's plausible 20 mV.
+const VOLTAGE_GAIN_SEARCH: f64 = 0.02;
+const VOLTAGE_GAIN_PLAUSIBLE: f64 = 0.005;
+
 /// The hysteresis candidate's starting decay rate (-): the state moves `1 - e^-1` of the way
 /// to a branch per tenth of the capacity passed.
 const HYSTERESIS_START_RATE: f64 = 10.0;
@@ -106,7 +112,7 @@ const HYSTERESIS_START_RATE: f64 = 10.0;
 const HYSTERESIS_BRANCH: f64 = 0.5;
 
 impl Candidate {
-    pub const ALL: [Candidate; 20] = [
+    pub const ALL: [Candidate; 21] = [
         Candidate::SeriesResistance,
         Candidate::Electrolyte,
         Candidate::ElectrolyteComposite,
@@ -126,6 +132,7 @@ impl Candidate {
         Candidate::ActiveMaterialThroughput,
         Candidate::Leak,
         Candidate::VoltageOffset,
+        Candidate::VoltageGain,
         Candidate::UnrelaxedStart,
     ];
 
@@ -156,6 +163,7 @@ impl Candidate {
             Candidate::ActiveMaterialThroughput => "progressive loss of active material (throughput-driven, over the cycles)",
             Candidate::Leak => "self-discharge or current offset (a leak current the cycler does not record: soft short or sensor bias)",
             Candidate::VoltageOffset => "voltage offset (the voltage channel's calibration, or an open-circuit potential shifted against the set's)",
+            Candidate::VoltageGain => "voltage gain (the voltage channel's calibration reads a share of the voltage high or low)",
             Candidate::UnrelaxedStart => "an unrelaxed start (a load just before the first recorded point: the recording began part-way through a test)",
         }
     }
@@ -175,7 +183,8 @@ impl Candidate {
             | Candidate::ActiveMaterialGrowth
             | Candidate::ActiveMaterialThroughput
             | Candidate::Leak
-            | Candidate::VoltageOffset => {
+            | Candidate::VoltageOffset
+            | Candidate::VoltageGain => {
                 Class::MissingPhysics
             }
             Candidate::UnrelaxedStart => Class::RecordingCondition,
@@ -204,6 +213,7 @@ impl Candidate {
             Candidate::ActiveMaterialGrowth => "one electrode's OCV features are compressed more from cycle to cycle (its capacity shrinks as it cycles), faster where the current stresses its particles most",
             Candidate::ActiveMaterialThroughput => "one electrode's OCV features are compressed more from cycle to cycle (its capacity shrinks as it cycles), in proportion to the charge passed in either direction",
             Candidate::VoltageOffset => "a constant difference, the same under load and at rest, at every state of charge and current",
+            Candidate::VoltageGain => "a difference in proportion to the voltage itself: the same share under load and at rest, larger at the top of the voltage window than at the bottom",
             Candidate::UnrelaxedStart => "a transient at the start only, fading over minutes whatever the load, as the particles and electrolyte relax from a load the recording did not hold",
             Candidate::Leak => "the state of charge drifts at a constant rate whatever the load: the voltage keeps sliding in rests instead of settling, and the charge put back differs from the charge taken out by the leak times the time",
         }
@@ -228,6 +238,7 @@ impl Candidate {
             Candidate::ActiveMaterialThroughput => "up to 50 % of an electrode's active material lost over the recording",
             Candidate::Leak => "up to C/100 either way (a leak or a sensor offset of 1 % of the 1C current)",
             Candidate::VoltageOffset => "up to 20 mV either way",
+            Candidate::VoltageGain => "up to 0.5 % either way (21 mV at 4.2 V)",
             Candidate::UnrelaxedStart => "a load of up to 3C either way, held 10 s to 2 h before the first point",
         }
     }
@@ -264,6 +275,10 @@ impl Candidate {
             | (LithiumInventory | SeiGrowth | SeiGrowthSeries | LithiumPlating | LithiumPlatingPartial | ActiveMaterial, ActiveMaterialGrowth | ActiveMaterialThroughput) => {
                 "a slow (C/20) cycle at the start and the end, read by differential voltage analysis".into()
             }
+            (VoltageOffset, VoltageGain) | (VoltageGain, VoltageOffset) => {
+                "the voltage channel checked against a reference at the top and at the bottom of the voltage window (an offset reads the same at both, a gain in proportion to the voltage)".into()
+            }
+            (VoltageGain, _) | (_, VoltageGain) => "a slow (C/20) charge and discharge over the full window with the voltage channel checked against a reference at its top and bottom: a shifted stoichiometry moves the OCV's features along the capacity axis, a gain scales the whole curve".into(),
             (VoltageOffset, _) | (_, VoltageOffset) => "a slow (C/20) charge and discharge over the full window with the voltage channel checked against a reference: a shifted stoichiometry moves the OCV's features along the capacity axis, an offset moves the whole curve up or down".into(),
             (Leak, _) | (_, Leak) => "a rest of several hours at a middle state of charge, then a slow charge and discharge (a leak keeps discharging the cell at rest and the charge balance does not close; lost lithium or material does neither)".into(),
             (Thermal, _) | (_, Thermal) => "the same protocol at a second ambient temperature, with the cell temperature recorded".into(),
@@ -431,6 +446,13 @@ impl Candidate {
                 spec.submodels.voltage_offset = true;
                 (vec![FitParameter::linear("cell.voltage_offset", 0.0, -VOLTAGE_OFFSET_SEARCH, VOLTAGE_OFFSET_SEARCH)], "voltage-offset submodel on".into())
             }
+            Candidate::VoltageGain => {
+                if spec.submodels.voltage_gain {
+                    return None;
+                }
+                spec.submodels.voltage_gain = true;
+                (vec![FitParameter::linear("cell.voltage_gain", 0.0, -VOLTAGE_GAIN_SEARCH, VOLTAGE_GAIN_SEARCH)], "voltage-gain submodel on".into())
+            }
             Candidate::UnrelaxedStart => {
                 if fitted.iter().any(|f| f == HISTORY_CURRENT) {
                     return None;
@@ -549,6 +571,10 @@ impl Candidate {
                 let v = get("cell.voltage_offset")?;
                 (v.abs() > VOLTAGE_OFFSET_PLAUSIBLE).then(|| format!("an offset of {:.1} mV exceeds 20 mV", v * 1e3))
             }
+            Candidate::VoltageGain => {
+                let g = get("cell.voltage_gain")?;
+                (g.abs() > VOLTAGE_GAIN_PLAUSIBLE).then(|| format!("a gain error of {:.2} % exceeds 0.5 %", g * 1e2))
+            }
             Candidate::Leak => {
                 let leak = get("cell.leakage_current")?;
                 let most = LEAK_PLAUSIBLE_C_RATE * base.cell.nominal_capacity;
@@ -592,6 +618,10 @@ impl Candidate {
             }
             Candidate::VoltageOffset => match get("cell.voltage_offset") {
                 Some(v) => format!("{} of {:+.1} mV", self.name(), v * 1e3),
+                None => self.name().to_string(),
+            },
+            Candidate::VoltageGain => match get("cell.voltage_gain") {
+                Some(g) => format!("{} of {:+.2} % (the channel reads {:.3} times the cell's voltage)", self.name(), g * 1e2, 1.0 + g),
                 None => self.name().to_string(),
             },
             Candidate::Leak => match get("cell.leakage_current") {

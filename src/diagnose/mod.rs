@@ -84,6 +84,9 @@ pub struct DiagnoseOptions {
     /// a third and fourth effect (none was named in 71 PyBaMM-made cases), and its search is
     /// the costliest part of a round (45 pairs of DFN fits, 460 s of blind j8's 807 s).
     pub pairs: bool,
+    /// Wall time (s) after which no further round starts (`None`: no limit). A round in
+    /// progress finishes; the last round says the diagnosis stopped on the budget.
+    pub time_budget: Option<f64>,
 }
 
 impl DiagnoseOptions {
@@ -101,6 +104,7 @@ impl DiagnoseOptions {
             fit: FitSettings::default(),
             fitted_baseline: None,
             pairs: true,
+            time_budget: None,
         }
     }
 
@@ -114,6 +118,9 @@ impl DiagnoseOptions {
         }
         if !m.min_delta_bic.is_finite() {
             return Err(Error::invalid("min_delta_bic", m.min_delta_bic, "must be finite"));
+        }
+        if let Some(b) = self.time_budget.filter(|b| !(b.is_finite() && *b > 0.0)) {
+            return Err(Error::invalid("time_budget", b, "must be a positive number of seconds"));
         }
         Ok(())
     }
@@ -400,12 +407,29 @@ fn standings(outcomes: &[CandidateOutcome]) -> Vec<select::Standing> {
 /// with that effect added (its fitted values as starting values), until a round names
 /// nothing or `max_rounds` rounds ran. Returns every round.
 pub fn diagnose_rounds(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions, max_rounds: usize) -> Result<Vec<Diagnosis>, Error> {
+    diagnose_rounds_with(data, base, options, max_rounds, |_| {})
+}
+
+/// As [`diagnose_rounds`], handing each round to `on_round` as soon as it is done (a report
+/// can show it while the next round runs). The superseded effects are found after the last
+/// round, so the last round's `superseded` and summary may still grow after `on_round`.
+pub fn diagnose_rounds_with(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions, max_rounds: usize, mut on_round: impl FnMut(&Diagnosis)) -> Result<Vec<Diagnosis>, Error> {
+    let start = std::time::Instant::now();
     let mut rounds: Vec<Diagnosis> = Vec::new();
     let (mut base, mut options, mut data) = (base.clone(), options.clone(), data.clone());
     while rounds.len() < max_rounds.max(1) {
-        let d = diagnose(&data, &base, &options)?;
-        let next = if d.found { d.best().and_then(|c| c.next.clone().zip(c.fit.clone())) } else { None };
+        let mut d = diagnose(&data, &base, &options)?;
+        let mut next = if d.found { d.best().and_then(|c| c.next.clone().zip(c.fit.clone())) } else { None };
+        let spent = start.elapsed().as_secs_f64();
+        if let Some(budget) = options.time_budget.filter(|b| next.is_some() && rounds.len() + 1 < max_rounds && spent > *b) {
+            d.notes.push(format!(
+                "Truncated: the diagnosis stopped after round {} because its time budget of {budget:.0} s was spent ({spent:.0} s); a further effect may remain (rerun with a larger --time-budget to go on).",
+                rounds.len() + 1
+            ));
+            next = None;
+        }
         data = d.data.clone();
+        on_round(&d);
         rounds.push(d);
         let Some((next, fit)) = next else { break };
         base = next.base;
@@ -424,18 +448,7 @@ pub fn diagnose_rounds(data: &Recording, base: &ParameterSet, options: &Diagnose
         let model = backward::FinalModel { spec, base: &model_base, fitted: &fitted, fit: &fit };
         let superseded = backward::superseded(&rounds, &model, &options);
         let last = rounds.last_mut().expect("two rounds");
-        for s in &superseded {
-            last.summary.push_str(&format!(
-                " Superseded: {} (round {}{}) is not needed once the later effects are in the model: without it the RMSE is {:.2} mV (with it {:.2} mV), ΔBIC {:.1}, Laplace ln Bayes factor {:.1}.",
-                s.name,
-                s.round,
-                s.kept.as_ref().map_or(String::new(), |k| format!("; its pair's {k} stays")),
-                s.rmse_without * 1e3,
-                s.rmse_with * 1e3,
-                s.delta_bic,
-                s.ln_bayes_factor
-            ));
-        }
+        last.summary.push_str(&report::superseded(&superseded));
         last.superseded = superseded;
     }
     Ok(rounds)

@@ -235,8 +235,9 @@ fn pair_class(a: super::Class, b: super::Class) -> super::Class {
     }
 }
 
-/// Whether two candidates describe one physics (the electrolyte model and its properties, or
-/// two laws of SEI growth, of lithium plating or of progressive loss of active material): a pair of them is one effect, not two.
+/// Whether two candidates describe one physics (the electrolyte model and its properties, two
+/// laws of SEI growth, of lithium plating or of progressive loss of active material, or the
+/// voltage channel's offset and gain): a pair of them is one effect, not two.
 fn one_physics(a: Candidate, b: Candidate) -> bool {
     use Candidate::*;
     let family = |c: Candidate| match c {
@@ -244,6 +245,7 @@ fn one_physics(a: Candidate, b: Candidate) -> bool {
         LithiumPlating | LithiumPlatingPartial => Some(1),
         ActiveMaterialGrowth | ActiveMaterialThroughput => Some(2),
         SeiGrowth | SeiGrowthSeries => Some(3),
+        VoltageOffset | VoltageGain => Some(4),
         _ => None,
     };
     family(a).is_some() && family(a) == family(b)
@@ -259,6 +261,7 @@ mod tests {
         assert!(one_physics(LithiumPlating, LithiumPlatingPartial));
         assert!(one_physics(Electrolyte, ElectrolyteTransport));
         assert!(one_physics(SeiGrowth, SeiGrowthSeries));
+        assert!(one_physics(VoltageOffset, VoltageGain));
         assert!(!one_physics(LithiumPlating, SeiGrowth));
         assert!(!one_physics(SeriesResistance, LithiumInventory));
     }

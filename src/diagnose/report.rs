@@ -316,6 +316,26 @@ fn unrelaxed_start(d: &Diagnosis) -> Option<String> {
     })
 }
 
+/// The effects of earlier rounds the final model does not need, one sentence each (each
+/// starting with a space; empty when there are none).
+pub fn superseded(superseded: &[super::backward::Superseded]) -> String {
+    superseded
+        .iter()
+        .map(|s| {
+            format!(
+                " Superseded: {} (round {}{}) is not needed once the later effects are in the model: without it the RMSE is {:.2} mV (with it {:.2} mV), ΔBIC {:.1}, Laplace ln Bayes factor {:.1}.",
+                s.name,
+                s.round,
+                s.kept.as_ref().map_or(String::new(), |k| format!("; its pair's {k} stays")),
+                s.rmse_without * 1e3,
+                s.rmse_with * 1e3,
+                s.delta_bic,
+                s.ln_bayes_factor
+            )
+        })
+        .collect()
+}
+
 /// The conclusion over all rounds: the effects named and kept (not superseded), and the fit
 /// they reach.
 pub fn conclusion(rounds: &[Diagnosis]) -> String {

@@ -79,6 +79,9 @@ pub struct Submodels {
     pub leak: bool,
     /// A constant `cell.voltage_offset` added to the terminal voltage; no extra state.
     pub voltage_offset: bool,
+    /// The voltage channel's scale error `cell.voltage_gain`: the terminal voltage is read
+    /// `1 + g` times the cell's; no extra state.
+    pub voltage_gain: bool,
     /// The correction `cell.ocv_correction` to the open-circuit voltage, against the charge
     /// passed: one extra state (that charge).
     pub ocv_correction: bool,
@@ -121,7 +124,7 @@ impl Submodels {
 
     /// Whether a submodel that wraps the model in [`submodels::Augmented`] is on.
     pub fn augments(&self) -> bool {
-        self.rc || self.hysteresis || self.leak || self.voltage_offset || self.ocv_correction
+        self.rc || self.hysteresis || self.leak || self.voltage_offset || self.voltage_gain || self.ocv_correction
     }
 }
 

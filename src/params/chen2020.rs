@@ -34,6 +34,7 @@ pub fn chen2020() -> ParameterSet {
             hysteresis_initial: 0.0,
             leakage_current: 0.0,
             voltage_offset: 0.0,
+            voltage_gain: 0.0,
             ocv_correction: Default::default(),
         },
         negative: Electrode {

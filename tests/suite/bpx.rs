@@ -76,10 +76,10 @@ fn chen2020_round_trip() {
         1e-12,
     );
     println!("{n} scalar fields round-trip within 1e-12");
-    // 77 (with the leak current and the voltage offset, carried as `cellstudio.` keys), plus
+    // 78 (with the leak current, the voltage offset and gain, carried as `cellstudio.` keys), plus
     // the 15 SEI, the 18 LAM (9 per electrode) and the 6 plating fields, which BPX does not
     // carry: both sides hold their defaults.
-    assert_eq!(n, 77 + 15 + 18 + 6, "every scalar field compared");
+    assert_eq!(n, 78 + 15 + 18 + 6, "every scalar field compared");
     assert_eq!(p.name, original.name);
 
     // OCPs: tables against the Chen 2020 functions at 50 stoichiometries.
@@ -458,7 +458,7 @@ fn modified_set_round_trip() {
         "",
         1e-12,
     );
-    assert_eq!(n, 77 + 15 + 18 + 6);
+    assert_eq!(n, 78 + 15 + 18 + 6);
     assert_eq!(imported.params.electrolyte.diffusivity, p.electrolyte.diffusivity);
     assert_eq!(imported.params.electrolyte.conductivity, p.electrolyte.conductivity);
 }

@@ -4,7 +4,7 @@
 
 use cellstudio::data::Recording;
 use cellstudio::diagnose::synthetic::{SyntheticSpec, synthetic_recording};
-use cellstudio::diagnose::{Candidate, DiagnoseOptions, Diagnosis, diagnose, diagnose_rounds};
+use cellstudio::diagnose::{Candidate, DiagnoseOptions, Diagnosis, diagnose, diagnose_rounds_with};
 use cellstudio::models::{ModelKind, Submodels};
 use cellstudio::params::{ParameterSet, chen2020};
 use cellstudio::problem::fitting::ModelSpec;
@@ -202,8 +202,11 @@ fn two_concealed_effects_are_named_in_successive_rounds() {
     let sub = Submodels { contact_resistance: true, ..Default::default() };
     let rec = recording("two_effects", ModelKind::Spm, sub, p, pulses(), 0.001, 16, false);
     let t = std::time::Instant::now();
-    let options = DiagnoseOptions::new(ModelSpec::new(ModelKind::Spm, Submodels::default()));
-    let rounds = diagnose_rounds(&rec, &chen2020(), &options, 2).unwrap();
+    let mut options = DiagnoseOptions::new(ModelSpec::new(ModelKind::Spm, Submodels::default()));
+    // Each round is handed over as it finishes, in order.
+    let mut handed = Vec::new();
+    let rounds = diagnose_rounds_with(&rec, &chen2020(), &options, 2, |d| handed.push(d.baseline.rmse_all)).unwrap();
+    assert_eq!(handed, rounds.iter().map(|d| d.baseline.rmse_all).collect::<Vec<_>>());
     for (k, d) in rounds.iter().enumerate() {
         print_outcome(&format!("two effects, round {}", k + 1), d, d.seconds);
     }
@@ -220,6 +223,12 @@ fn two_concealed_effects_are_named_in_successive_rounds() {
     assert!((value(&fitted, "negative.initial_concentration") / truth - 1.0).abs() < 0.01);
     // What the second round adds leaves noise.
     assert!(!rounds[1].residual_after.as_ref().unwrap().structured);
+    // With its time budget spent after the first round, the diagnosis stops there and says so.
+    options.time_budget = Some(1e-3);
+    let cut = diagnose_rounds_with(&rec, &chen2020(), &options, 2, |_| {}).unwrap();
+    assert_eq!(cut.len(), 1);
+    assert_found(&cut[0], Candidate::SeriesResistance);
+    assert!(cut[0].notes.iter().any(|n| n.starts_with("Truncated") && n.contains("round 1")), "{:?}", cut[0].notes);
 }
 
 /// A user's model that cannot follow the recording (a negative electrode too thin for the

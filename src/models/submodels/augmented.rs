@@ -17,6 +17,8 @@
 //!   short or a current sensor's offset. Every other submodel sees `I + I_L`.
 //! - Voltage offset (`cell.voltage_offset` `V_0` (V)): the terminal voltage gains `V_0`, e.g.
 //!   the voltage channel's calibration or an OCP shifted against the set's.
+//! - Voltage gain (`cell.voltage_gain` `g` (-)): the voltage channel reads `1 + g` times the
+//!   cell's voltage (before the offset), a calibration error of the channel's scale.
 //! - OCV correction (`cell.ocv_correction`, see [`crate::params::OcvCorrection`]): the state
 //!   `q` (A h) counts the charge the cell carries, `dq/dt = I / 3600`, and the terminal
 //!   voltage gains `ΔV(q)`: an open-circuit voltage whose shape differs from the set's.
@@ -43,6 +45,8 @@ pub struct Augmented {
     leak: bool,
     /// Whether the voltage offset is on.
     offset: bool,
+    /// Whether the voltage gain is on.
+    gain: bool,
     /// Number of states of the wrapped model.
     n_base: usize,
     mass: Vec<f64>,
@@ -67,7 +71,7 @@ impl Augmented {
         let rc = push(submodels.rc, RC_SCALE);
         let hysteresis = push(submodels.hysteresis, 1.0);
         let charge = push(submodels.ocv_correction, base.electrochem().params.cell.nominal_capacity);
-        Self { base, rc, hysteresis, charge, leak: submodels.leak, offset: submodels.voltage_offset, n_base, mass, scale }
+        Self { base, rc, hysteresis, charge, leak: submodels.leak, offset: submodels.voltage_offset, gain: submodels.voltage_gain, n_base, mass, scale }
     }
 
     /// The wrapped model.
@@ -114,6 +118,9 @@ impl Model for Augmented {
         }
         if self.offset {
             name.push_str("+offset");
+        }
+        if self.gain {
+            name.push_str("+gain");
         }
         if self.charge.is_some() {
             name.push_str("+OCV correction");
@@ -172,10 +179,11 @@ impl Model for Augmented {
     }
 
     fn voltage(&self, y: &[f64], current: f64) -> f64 {
-        self.base.voltage(&y[..self.n_base], self.inside(current)) - self.rc_voltage(y)
+        let cell = self.base.voltage(&y[..self.n_base], self.inside(current)) - self.rc_voltage(y)
             + self.cell().hysteresis_voltage * self.hysteresis_state(y)
-            + if self.offset { self.cell().voltage_offset } else { 0.0 }
-            + self.ocv_correction(y)
+            + self.ocv_correction(y);
+        let scale = if self.gain { 1.0 + self.cell().voltage_gain } else { 1.0 };
+        scale * cell + if self.offset { self.cell().voltage_offset } else { 0.0 }
     }
 
     fn temperature(&self, y: &[f64]) -> f64 {
@@ -326,6 +334,20 @@ mod tests {
         let plain = run(Submodels::default(), &p, &protocol, t.clone());
         for k in 0..t.len() {
             assert!((shifted[k] - plain[k] + 0.008).abs() < 1e-12, "t = {}: {} vs {}", t[k], shifted[k], plain[k]);
+        }
+    }
+
+    /// The voltage gain scales the cell's voltage by `1 + g` before the offset is added.
+    #[test]
+    fn a_voltage_gain_scales_the_curve_before_the_offset() {
+        let mut p = crate::params::chen2020();
+        (p.cell.voltage_gain, p.cell.voltage_offset) = (0.003, -0.002);
+        let t: Vec<f64> = (0..=12).map(|k| 150.0 * f64::from(k)).collect();
+        let protocol = Protocol { steps: vec![Step::Current { current: 5.0, duration: 1200.0, until_voltage: None }, Step::Rest { duration: 600.0 }] };
+        let read = run(Submodels { voltage_gain: true, voltage_offset: true, ..Default::default() }, &p, &protocol, t.clone());
+        let plain = run(Submodels::default(), &p, &protocol, t.clone());
+        for k in 0..t.len() {
+            assert!((read[k] - (1.003 * plain[k] - 0.002)).abs() < 1e-12, "t = {}: {} vs {}", t[k], read[k], plain[k]);
         }
     }
 
