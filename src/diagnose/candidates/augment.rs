@@ -1,0 +1,181 @@
+//! How each candidate is added to the user's model: the submodel or model it switches on, the
+//! parameters it fits and their search ranges.
+
+use super::*;
+
+impl Candidate {
+    /// The model with this candidate added, or `None` when the model already has it or it
+    /// cannot be added (e.g. electrolyte transport to a DFN). `fitted` lists the paths the
+    /// user's model already fits; they stay fitted beside the candidate's. With a recorded
+    /// first temperature in `load` the thermal candidate fits the ambient too (a cell need not
+    /// start at the temperature of its room); the progressive LAM candidate's range follows
+    /// its RMS current and duration.
+    pub fn augment(self, spec: &ModelSpec, base: &ParameterSet, fitted: &[String], load: &Load) -> Option<Augmentation> {
+        let mut spec = *spec;
+        let mut p = base.clone();
+        let mut aged = None;
+        let around = |path: &str| {
+            let v = p.get(path).ok().filter(|v| *v > 0.0)?;
+            Some(FitParameter::log(path, v, v / MISMATCH_RANGE, v * MISMATCH_RANGE))
+        };
+        let mut replaces = Vec::new();
+        let mut structural_parameters = 0;
+        let (extra, change): (Vec<FitParameter>, String) = match self {
+            Candidate::SeriesResistance => {
+                let on = spec.submodels.contact_resistance;
+                spec.submodels.contact_resistance = true;
+                let r0 = if on { p.cell.contact_resistance.max(1e-4) } else { 2e-3 };
+                (vec![FitParameter::linear("cell.contact_resistance", r0, 0.0, 0.2)], "contact-resistance submodel on".into())
+            }
+            Candidate::Electrolyte => {
+                // The full electrolyte model: the SPMe is an approximation of the DFN that
+                // loses accuracy exactly where electrolyte transport matters (high rates).
+                let next = match spec.kind {
+                    ModelKind::Spm | ModelKind::Spme => ModelKind::Dfn,
+                    ModelKind::Dfn => return None,
+                };
+                structural_parameters = if spec.kind == ModelKind::Spm { SPM_TO_DFN_FIXED } else { SPME_TO_DFN_FIXED };
+                let change = format!("{} -> {next}", spec.kind);
+                spec.kind = next;
+                (Vec::new(), change)
+            }
+            Candidate::ElectrolyteComposite => {
+                if spec.kind != ModelKind::Spm {
+                    return None;
+                }
+                spec.kind = ModelKind::Spme;
+                structural_parameters = 7;
+                (Vec::new(), "SPM -> SPMe".into())
+            }
+            Candidate::ElectrolyteTransport => {
+                let factors = self.refitted_paths().iter().map(|p| around(p)).collect::<Option<_>>()?;
+                // An SPM has no electrolyte whose properties could be off: the electrolyte
+                // comes in (SPM -> DFN, its 9 fixed parameters counted) with its properties
+                // refitted, one effect (an electrolyte that is not the set's, e.g. salt lost).
+                if spec.kind == ModelKind::Spm {
+                    structural_parameters = SPM_TO_DFN_FIXED;
+                    spec.kind = ModelKind::Dfn;
+                    (factors, "SPM -> DFN, electrolyte diffusivity and conductivity factors refitted".into())
+                } else {
+                    (factors, "electrolyte diffusivity and conductivity factors refitted".into())
+                }
+            }
+            Candidate::SeiGrowth | Candidate::SeiGrowthSeries | Candidate::LithiumPlating | Candidate::LithiumPlatingPartial | Candidate::ActiveMaterialGrowth | Candidate::ActiveMaterialThroughput => {
+                let (extra, fixed, change, changed_base) = ageing::augment(self, &mut spec, &p, load)?;
+                (structural_parameters, aged) = (fixed, changed_base);
+                (extra, change)
+            }
+            Candidate::Kinetics => (self.refitted_paths().iter().map(|p| around(p)).collect::<Option<_>>()?, "reaction rate constants of both electrodes refitted".into()),
+            Candidate::SolidDiffusion => (self.refitted_paths().iter().map(|p| around(p)).collect::<Option<_>>()?, "particle diffusivities refitted".into()),
+            Candidate::LithiumInventory => {
+                let c = |path: &str, c0: f64, cmax: f64| FitParameter::linear(path, c0, 0.01 * cmax, 0.99 * cmax);
+                replaces.push(INITIAL_SOC.to_string());
+                (
+                    vec![
+                        c("negative.initial_concentration", p.negative.initial_concentration, p.negative.max_concentration),
+                        c("positive.initial_concentration", p.positive.initial_concentration, p.positive.max_concentration),
+                    ],
+                    "initial electrode concentrations refitted independently (cyclable lithium free)".into(),
+                )
+            }
+            Candidate::ActiveMaterial => {
+                let a = |path: &str, eps: f64, porosity: f64| {
+                    let hi = eps.min(1.0 - porosity - 1e-9);
+                    FitParameter::log(path, 0.97 * hi, 0.4 * eps, hi)
+                };
+                (
+                    vec![
+                        a("negative.active_fraction", p.negative.active_fraction, p.negative.porosity),
+                        a("positive.active_fraction", p.positive.active_fraction, p.positive.porosity),
+                    ],
+                    "active-material volume fractions of both electrodes refitted".into(),
+                )
+            }
+            Candidate::Thermal => {
+                if spec.submodels.thermal {
+                    return None;
+                }
+                spec.submodels.thermal = true;
+                // Heat capacity, cooling area and the activation energies enter as fixed values.
+                structural_parameters = 3;
+                let mut extra = vec![FitParameter::log("thermal.heat_transfer_coefficient", 10.0, 0.1, 1000.0)];
+                let change = match load.start_temperature {
+                    Some(t0) => {
+                        extra.push(FitParameter::linear("thermal.ambient_temperature", t0, t0 - AMBIENT_RANGE_K, t0 + AMBIENT_RANGE_K));
+                        "lumped thermal submodel on, ambient fitted to the recorded temperature"
+                    }
+                    None => "lumped thermal submodel on",
+                };
+                (extra, change.into())
+            }
+            Candidate::VoltageOffset => {
+                if spec.submodels.voltage_offset {
+                    return None;
+                }
+                spec.submodels.voltage_offset = true;
+                (vec![FitParameter::linear("cell.voltage_offset", 0.0, -VOLTAGE_OFFSET_SEARCH, VOLTAGE_OFFSET_SEARCH)], "voltage-offset submodel on".into())
+            }
+            Candidate::VoltageGain => {
+                if spec.submodels.voltage_gain {
+                    return None;
+                }
+                spec.submodels.voltage_gain = true;
+                (vec![FitParameter::linear("cell.voltage_gain", 0.0, -VOLTAGE_GAIN_SEARCH, VOLTAGE_GAIN_SEARCH)], "voltage-gain submodel on".into())
+            }
+            Candidate::UnrelaxedStart => {
+                if fitted.iter().any(|f| f == HISTORY_CURRENT) {
+                    return None;
+                }
+                let most = HISTORY_C_RATE * p.cell.nominal_capacity;
+                (
+                    vec![FitParameter::linear(HISTORY_CURRENT, 0.0, -most, most), FitParameter::log(HISTORY_DURATION, HISTORY_START_S, HISTORY_RANGE_S.0, HISTORY_RANGE_S.1)],
+                    "a constant load before the first point fitted (its current and duration), from the rest state".into(),
+                )
+            }
+            Candidate::Leak => {
+                if spec.submodels.leak {
+                    return None;
+                }
+                spec.submodels.leak = true;
+                let most = LEAK_SEARCH_C_RATE * p.cell.nominal_capacity;
+                (vec![FitParameter::linear("cell.leakage_current", 0.0, -most, most)], "leak submodel on (a constant current inside the cell)".into())
+            }
+            Candidate::RcDynamics => {
+                if spec.submodels.rc {
+                    return None;
+                }
+                spec.submodels.rc = true;
+                (
+                    vec![FitParameter::linear("cell.rc_resistance", 5e-3, 0.0, 0.1), FitParameter::log("cell.rc_capacitance", 1000.0, 1.0, 1e6)],
+                    "series RC submodel on".into(),
+                )
+            }
+            Candidate::Hysteresis => {
+                if spec.submodels.hysteresis {
+                    return None;
+                }
+                spec.submodels.hysteresis = true;
+                (
+                    vec![
+                        FitParameter::linear("cell.hysteresis_voltage", 5e-3, 0.0, 0.1),
+                        FitParameter::log("cell.hysteresis_rate", HYSTERESIS_START_RATE, 0.5, 500.0),
+                        FitParameter::linear("cell.hysteresis_initial", 0.0, -1.0, 1.0),
+                    ],
+                    "OCV hysteresis submodel on".into(),
+                )
+            }
+        };
+        let extra: Vec<FitParameter> = extra.into_iter().filter(|e| !fitted.contains(&e.path)).collect();
+        if extra.is_empty() && structural_parameters == 0 && self != Candidate::SeriesResistance {
+            return None;
+        }
+        if extra.is_empty() && self == Candidate::SeriesResistance && fitted.contains(&"cell.contact_resistance".to_string()) {
+            return None;
+        }
+        if let Some(b) = aged {
+            p = b;
+        }
+        let screened = self.is_ageing();
+        Some(Augmentation { spec, base: p, extra, replaces, structural_parameters, change, screened })
+    }
+}

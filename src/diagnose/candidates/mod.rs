@@ -1,0 +1,362 @@
+//! The library of candidate explanations of a mismatch: each with the residual signature it
+//! leaves, when a recording can identify it, how to add it to a model, and the range of
+//! fitted values that is physically plausible.
+//!
+//! Two classes: **missing physics** (a submodel or a richer model the user's model lacks)
+//! and **parameter mismatch** (a parameter the user's model already has, refitted).
+
+mod augment;
+mod experiments;
+mod plausibility;
+
+use serde::Serialize;
+
+use super::ageing::{self, Load};
+use super::features::Features;
+use crate::data::Recording;
+use crate::models::ModelKind;
+use crate::params::ParameterSet;
+use crate::problem::fitting::{FitParameter, INITIAL_SOC, ModelSpec};
+use crate::problem::history::{HISTORY_CURRENT, HISTORY_DURATION};
+
+/// A candidate explanation.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Candidate {
+    SeriesResistance,
+    Electrolyte,
+    ElectrolyteComposite,
+    ElectrolyteTransport,
+    Kinetics,
+    SolidDiffusion,
+    LithiumInventory,
+    ActiveMaterial,
+    Thermal,
+    RcDynamics,
+    Hysteresis,
+    SeiGrowth,
+    SeiGrowthSeries,
+    LithiumPlating,
+    LithiumPlatingPartial,
+    ActiveMaterialGrowth,
+    ActiveMaterialThroughput,
+    Leak,
+    VoltageOffset,
+    VoltageGain,
+    UnrelaxedStart,
+}
+
+/// Missing physics or a parameter the model has but with the wrong value.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Class {
+    MissingPhysics,
+    ParameterMismatch,
+    /// How the recording was made, not the cell (it began part-way through a test).
+    RecordingCondition,
+}
+
+/// A candidate added to a model: the model to build, its base parameters, the parameters to
+/// fit in addition to (or instead of) the user's, and the honest parameter count.
+#[derive(Clone, Debug)]
+pub struct Augmentation {
+    pub spec: ModelSpec,
+    pub base: ParameterSet,
+    pub extra: Vec<FitParameter>,
+    /// Fitted paths of the user's model this candidate frees differently (and drops).
+    pub replaces: Vec<String>,
+    /// Fixed parameters a structural change brings in (e.g. the electrolyte's transport
+    /// properties when an SPM becomes an SPMe): counted in the information criteria.
+    pub structural_parameters: usize,
+    /// What changed, in words (e.g. "SPM -> SPMe").
+    pub change: String,
+    /// Its parameters are rates known only to within decades (ageing rates): each is screened
+    /// a decade apart across its range before the fit ([`super::refit::Starts::screen`]).
+    pub screened: bool,
+}
+
+/// Multiplicative range (-) over which a parameter that the model already has is refitted.
+const MISMATCH_RANGE: f64 = 30.0;
+
+/// How far (K) the fitted ambient may lie from a recording's first temperature.
+const AMBIENT_RANGE_K: f64 = 30.0;
+
+/// Fixed parameters the DFN brings to an SPM: the electrolyte's diffusivity, conductivity,
+/// transference number, thermodynamic factor, initial concentration, porosities and
+/// tortuosity (7), and the two solid conductivities (2); to an SPMe, the latter two.
+const SPM_TO_DFN_FIXED: usize = 9;
+const SPME_TO_DFN_FIXED: usize = 2;
+
+/// The leak candidate's search range and plausible size, as C-rates (1/h): a sensor offset
+/// or a soft short beyond C/100 would be seen on any cycler.
+const LEAK_SEARCH_C_RATE: f64 = 0.02;
+const LEAK_PLAUSIBLE_C_RATE: f64 = 0.01;
+
+/// The unrelaxed-start candidate's search: a load of up to 3C either way (1/h), held for 10 s
+/// to 2 h (from 10 min) before the first recorded point.
+const HISTORY_C_RATE: f64 = 3.0;
+const HISTORY_START_S: f64 = 600.0;
+const HISTORY_RANGE_S: (f64, f64) = (10.0, 7200.0);
+
+/// The voltage-offset candidate's search range and plausible size (V).
+const VOLTAGE_OFFSET_SEARCH: f64 = 0.05;
+const VOLTAGE_OFFSET_PLAUSIBLE: f64 = 0.02;
+
+/// The voltage-gain candidate's search range and plausible size (-): 0.5 % reads 21 mV off
+/// at 4.2 V, as far as the offset's plausible 20 mV.
+const VOLTAGE_GAIN_SEARCH: f64 = 0.02;
+const VOLTAGE_GAIN_PLAUSIBLE: f64 = 0.005;
+
+/// The hysteresis candidate's starting decay rate (-): the state moves `1 - e^-1` of the way
+/// to a branch per tenth of the capacity passed.
+const HYSTERESIS_START_RATE: f64 = 10.0;
+
+/// How far into each branch (of ±1) a load must drive the unit hysteresis state for the
+/// recording to show hysteresis without rests after both directions.
+const HYSTERESIS_BRANCH: f64 = 0.5;
+
+impl Candidate {
+    pub const ALL: [Candidate; 21] = [
+        Candidate::SeriesResistance,
+        Candidate::Electrolyte,
+        Candidate::ElectrolyteComposite,
+        Candidate::ElectrolyteTransport,
+        Candidate::Kinetics,
+        Candidate::SolidDiffusion,
+        Candidate::LithiumInventory,
+        Candidate::ActiveMaterial,
+        Candidate::Thermal,
+        Candidate::RcDynamics,
+        Candidate::Hysteresis,
+        Candidate::SeiGrowth,
+        Candidate::SeiGrowthSeries,
+        Candidate::LithiumPlating,
+        Candidate::LithiumPlatingPartial,
+        Candidate::ActiveMaterialGrowth,
+        Candidate::ActiveMaterialThroughput,
+        Candidate::Leak,
+        Candidate::VoltageOffset,
+        Candidate::VoltageGain,
+        Candidate::UnrelaxedStart,
+    ];
+
+    /// An ageing candidate: it changes the cell from cycle to cycle ([`ageing`]).
+    pub fn is_ageing(self) -> bool {
+        matches!(self, Candidate::SeiGrowth | Candidate::SeiGrowthSeries | Candidate::LithiumPlating | Candidate::LithiumPlatingPartial | Candidate::ActiveMaterialGrowth | Candidate::ActiveMaterialThroughput)
+    }
+
+    /// Short name, as the verdict uses it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Candidate::SeriesResistance => "series/contact resistance",
+            Candidate::Electrolyte => "electrolyte transport",
+            Candidate::ElectrolyteComposite => "electrolyte transport (composite SPMe)",
+            Candidate::ElectrolyteTransport => "electrolyte transport properties (diffusivity, conductivity)",
+            Candidate::Kinetics => "charge-transfer kinetics (exchange-current density)",
+            Candidate::SolidDiffusion => "solid (particle) diffusivity",
+            Candidate::LithiumInventory => "loss of lithium inventory (stoichiometry offset)",
+            Candidate::ActiveMaterial => "loss of active material (electrode capacity)",
+            Candidate::Thermal => "thermal (self-heating, temperature dependence)",
+            Candidate::RcDynamics => "RC / double-layer dynamics",
+            Candidate::Hysteresis => "OCV hysteresis",
+            Candidate::SeiGrowth => "SEI growth (lithium lost as the film grows, in cycling and in storage)",
+            Candidate::SeiGrowthSeries => "SEI growth, reaction and transport in series (lithium lost as the film grows, more slowly as it thickens)",
+            Candidate::LithiumPlating => "lithium plating (lithium lost to irreversible plating during the charges)",
+            Candidate::LithiumPlatingPartial => "lithium plating, partially reversible (plated lithium strips back after the charges and part of it turns dead)",
+            Candidate::ActiveMaterialGrowth => "progressive loss of active material (stress-driven, over the cycles)",
+            Candidate::ActiveMaterialThroughput => "progressive loss of active material (throughput-driven, over the cycles)",
+            Candidate::Leak => "self-discharge or current offset (a leak current the cycler does not record: soft short or sensor bias)",
+            Candidate::VoltageOffset => "voltage offset (the voltage channel's calibration, or an open-circuit potential shifted against the set's)",
+            Candidate::VoltageGain => "voltage gain (the voltage channel's calibration reads a share of the voltage high or low)",
+            Candidate::UnrelaxedStart => "an unrelaxed start (a load just before the first recorded point: the recording began part-way through a test)",
+        }
+    }
+
+    pub fn class(self) -> Class {
+        match self {
+            Candidate::SeriesResistance
+            | Candidate::Electrolyte
+            | Candidate::ElectrolyteComposite
+            | Candidate::Thermal
+            | Candidate::RcDynamics
+            | Candidate::Hysteresis
+            | Candidate::SeiGrowth
+            | Candidate::SeiGrowthSeries
+            | Candidate::LithiumPlating
+            | Candidate::LithiumPlatingPartial
+            | Candidate::ActiveMaterialGrowth
+            | Candidate::ActiveMaterialThroughput
+            | Candidate::Leak
+            | Candidate::VoltageOffset
+            | Candidate::VoltageGain => {
+                Class::MissingPhysics
+            }
+            Candidate::UnrelaxedStart => Class::RecordingCondition,
+            _ => Class::ParameterMismatch,
+        }
+    }
+
+    /// The residual signature this effect leaves when it is missing or mis-set.
+    pub fn signature(self) -> &'static str {
+        match self {
+            Candidate::SeriesResistance => "an instantaneous voltage step at every current step, proportional to the current change and the same at every state of charge",
+            Candidate::Electrolyte => "polarisation that grows with rate and relaxes over tens of seconds to minutes in rests (an SPM or SPMe used where the DFN's electrolyte is needed)",
+            Candidate::ElectrolyteComposite => "as electrolyte transport, with the SPMe's composite (first-order) electrolyte instead of the DFN's",
+            Candidate::ElectrolyteTransport => "rate-dependent polarisation that builds over the first minutes of a load and relaxes in rests, with the electrolyte model already present",
+            Candidate::Kinetics => "an instantaneous overpotential at current steps that is not proportional to the current (asinh) and grows towards the ends of the stoichiometry range",
+            Candidate::SolidDiffusion => "an extra drop late in a high-rate discharge and slow (many minutes) relaxation in rests",
+            Candidate::LithiumInventory => "the end of discharge (the knee) arrives earlier or later and the OCV is shifted along the capacity axis; persists at rest",
+            Candidate::ActiveMaterial => "one electrode's OCV features are compressed along the capacity axis (less capacity), with a shifted knee; persists at rest",
+            Candidate::Thermal => "losses that fall as the cell warms under load (correlated with the recorded temperature rise or with the accumulated I²)",
+            Candidate::RcDynamics => "transients of seconds after current steps that settle to an offset under load and decay in rests",
+            Candidate::Hysteresis => "an offset at rest whose sign follows the direction of the last current (charge vs discharge), not its size",
+            Candidate::SeiGrowthSeries => "as reaction-limited SEI growth, but the lithium lost per cycle (or per hour of storage) falls as the film thickens and transport through it takes over (towards growth with the square root of time, whatever the potential)",
+            Candidate::SeiGrowth => "capacity and the end-of-discharge knee drift from cycle to cycle, or across a storage rest, as lithium is consumed (a fixed stoichiometry offset does not drift), with a slowly growing film resistance",
+            Candidate::LithiumPlating => "capacity and the knee drift from cycle to cycle as lithium plates while the negative electrode's potential is low (late in fast charges), with no film resistance; grows steeply with the charge rate and at low temperature",
+            Candidate::LithiumPlatingPartial => "as irreversible plating, but the plated lithium strips back in the rest or discharge after each charge (a voltage plateau there), and only the part that turned dead is lost from cycle to cycle",
+            Candidate::ActiveMaterialGrowth => "one electrode's OCV features are compressed more from cycle to cycle (its capacity shrinks as it cycles), faster where the current stresses its particles most",
+            Candidate::ActiveMaterialThroughput => "one electrode's OCV features are compressed more from cycle to cycle (its capacity shrinks as it cycles), in proportion to the charge passed in either direction",
+            Candidate::VoltageOffset => "a constant difference, the same under load and at rest, at every state of charge and current",
+            Candidate::VoltageGain => "a difference in proportion to the voltage itself: the same share under load and at rest, larger at the top of the voltage window than at the bottom",
+            Candidate::UnrelaxedStart => "a transient at the start only, fading over minutes whatever the load, as the particles and electrolyte relax from a load the recording did not hold",
+            Candidate::Leak => "the state of charge drifts at a constant rate whatever the load: the voltage keeps sliding in rests instead of settling, and the charge put back differs from the charge taken out by the leak times the time",
+        }
+    }
+
+    /// The physically plausible range of the fitted values, in words (stated in the report).
+    pub fn plausible_range(self) -> &'static str {
+        match self {
+            Candidate::SeriesResistance => "0.1 to 100 mOhm",
+            Candidate::Electrolyte | Candidate::ElectrolyteComposite => "no fitted parameters",
+            Candidate::ElectrolyteTransport | Candidate::Kinetics | Candidate::SolidDiffusion => "0.05 to 20 times the set's value, not on a search bound",
+            Candidate::LithiumInventory => "up to 40 % of the cyclable lithium lost (or gained)",
+            Candidate::ActiveMaterial => "up to 50 % of an electrode's active material lost",
+            Candidate::Thermal => "heat-transfer coefficient 1 to 500 W/(m^2 K)",
+            Candidate::RcDynamics => "time constant R C of 1 ms to 30 s (longer is transport, not an interface)",
+            Candidate::Hysteresis => "half-width up to 50 mV",
+            Candidate::SeiGrowth => "SEI exchange current 0.001 to 1000 times the set's",
+            Candidate::SeiGrowthSeries => "SEI rate constant 0.001 to 1000 times the set's; EC diffusivity up to the one whose transport limit takes 50 % of the negative electrode's lithium over the recording",
+            Candidate::LithiumPlating => "plating rate constant 0.001 to 1000 times the set's",
+            Candidate::LithiumPlatingPartial => "plating rate constant 0.001 to 1000 times the set's, dead-lithium decay constant 1e-8 to 1e-2 1/s",
+            Candidate::ActiveMaterialGrowth => "up to 50 % of an electrode's active material lost over the recording (steady-profile estimate)",
+            Candidate::ActiveMaterialThroughput => "up to 50 % of an electrode's active material lost over the recording",
+            Candidate::Leak => "up to C/100 either way (a leak or a sensor offset of 1 % of the 1C current)",
+            Candidate::VoltageOffset => "up to 20 mV either way",
+            Candidate::VoltageGain => "up to 0.5 % either way (21 mV at 4.2 V)",
+            Candidate::UnrelaxedStart => "a load of up to 3C either way, held 10 s to 2 h before the first point",
+        }
+    }
+
+    /// The candidate that makes this one's structural change with no fitted parameters, on
+    /// a model of `kind`: this one at the set's values is that one.
+    pub fn structural_alias(self, kind: ModelKind) -> Option<Candidate> {
+        (self == Candidate::ElectrolyteTransport && kind == ModelKind::Spm).then_some(Candidate::Electrolyte)
+    }
+
+    /// Why the recording cannot identify this candidate, or `None` when it can; `q_nominal`
+    /// is the cell's capacity (A h).
+    pub fn not_identifiable(self, rec: &Recording, f: &Features, q_nominal: f64) -> Option<String> {
+        match self {
+            // Hysteresis is an offset whose sign follows the direction of the charge passed:
+            // it is seen at rest after both directions, or, with one rest, when the load
+            // itself drives the hysteresis state (at the candidate's starting rate) well into
+            // both branches (a drive that charges and discharges).
+            Candidate::Hysteresis if !(f.rests_after_charge > 0 && f.rests_after_discharge > 0) => {
+                let h = Features::hysteresis_state(rec, HYSTERESIS_START_RATE, q_nominal);
+                let (low, high) = h.iter().fold((0.0f64, 0.0f64), |(l, u), v| (l.min(*v), u.max(*v)));
+                let both_branches = low <= -HYSTERESIS_BRANCH && high >= HYSTERESIS_BRANCH;
+                (!(both_branches && f.rests_after_charge + f.rests_after_discharge > 0)).then(|| {
+                    format!(
+                        "needs rests after both charge and discharge, or a rest and a load that passes enough charge both ways to swing the hysteresis state past ±{HYSTERESIS_BRANCH} (this recording has {} and {} rests, the state spans {low:.2} to {high:.2})",
+                        f.rests_after_charge, f.rests_after_discharge
+                    )
+                })
+            }
+            Candidate::Thermal if rec.temperature.is_none() && f.distinct_rates < 2 => {
+                Some("needs a recorded temperature or loads at two or more rates".into())
+            }
+            // An overpotential is told from the open-circuit voltage by how the voltage moves
+            // with the current at one state of charge: steps, or a load whose level changes
+            // (e.g. the falling current of a constant-voltage hold).
+            Candidate::SeriesResistance | Candidate::Kinetics | Candidate::RcDynamics if f.steps.is_empty() && f.distinct_rates < 2 => {
+                Some("needs current steps or loads at two or more rates".into())
+            }
+            Candidate::SeiGrowth | Candidate::SeiGrowthSeries => ageing::too_short_for_sei(f),
+            Candidate::LithiumPlating | Candidate::LithiumPlatingPartial | Candidate::ActiveMaterialGrowth | Candidate::ActiveMaterialThroughput => ageing::too_few_cycles(f),
+            // In one uninterrupted run a leak only rescales the charge passed (a capacity or
+            // stoichiometry change); a rest, or charge and discharge both, sets it apart.
+            Candidate::Leak if f.rests_after_charge + f.rests_after_discharge == 0 && !(rec.current.iter().any(|i| *i > 0.0) && rec.current.iter().any(|i| *i < 0.0)) => {
+                Some("needs a rest, or both charge and discharge (in one constant-direction run a leak is a change of capacity)".into())
+            }
+            _ => None,
+        }
+    }
+
+    /// The set's parameters a parameter-mismatch candidate refits (empty for the others).
+    pub fn refitted_paths(self) -> &'static [&'static str] {
+        match self {
+            Candidate::ElectrolyteTransport => &["electrolyte.diffusivity_factor", "electrolyte.conductivity_factor"],
+            Candidate::Kinetics => &["negative.rate_constant", "positive.rate_constant"],
+            Candidate::SolidDiffusion => &["negative.diffusivity", "positive.diffusivity"],
+            Candidate::ActiveMaterial => &["negative.active_fraction", "positive.active_fraction"],
+            Candidate::LithiumInventory => &["negative.initial_concentration", "positive.initial_concentration"],
+            _ => &[],
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// SEI growth needs 3 cycles, or a storage rest of a day with a load after it (the
+    /// capacity check after a calendar-ageing storage).
+    #[test]
+    fn sei_growth_needs_cycles_or_a_day_of_storage_before_a_load() {
+        let q = crate::params::chen2020().cell.nominal_capacity;
+        let checks_around = |rest_h: usize| {
+            // A 1 h discharge, a rest of `rest_h` hours logged every 30 min, a 1 h discharge.
+            let (mut time, mut current) = (Vec::new(), Vec::new());
+            let mut t = 0.0;
+            let mut push = |dt: f64, i: f64, n: usize| {
+                for _ in 0..n {
+                    time.push(t);
+                    current.push(i);
+                    t += dt;
+                }
+            };
+            push(60.0, 0.5 * q, 60);
+            push(1800.0, 0.0, 2 * rest_h);
+            push(60.0, 0.5 * q, 60);
+            let n = time.len();
+            Recording { time, current, voltage: vec![3.7; n], temperature: None }
+        };
+        let reason = |r: &Recording| Candidate::SeiGrowth.not_identifiable(r, &Features::of(r), q);
+        assert_eq!(reason(&checks_around(30)), None);
+        assert!(reason(&checks_around(10)).is_some_and(|why| why.contains("storage rest of 24 h")), "{:?}", reason(&checks_around(10)));
+        // Plating needs the cycles whatever the storage.
+        let r = checks_around(30);
+        assert!(Candidate::LithiumPlating.not_identifiable(&r, &Features::of(&r), q).is_some());
+    }
+
+    /// A leak only rescales the charge of a run in one direction; a rest or a return
+    /// charge sets it apart. Beyond C/100 it is implausible.
+    #[test]
+    fn a_leak_needs_a_rest_or_both_directions() {
+        let base = crate::params::chen2020();
+        let q = base.cell.nominal_capacity;
+        let rec = |current: Vec<f64>| {
+            let n = current.len();
+            Recording { time: (0..n).map(|k| 60.0 * k as f64).collect(), current, voltage: vec![3.7; n], temperature: None }
+        };
+        let discharge = rec(vec![q; 30]);
+        let with_rest = rec([vec![q; 20], vec![0.0; 10]].concat());
+        let both_ways = rec([vec![q; 15], vec![-q; 15]].concat());
+        let reason = |r: &Recording| Candidate::Leak.not_identifiable(r, &Features::of(r), q);
+        assert!(reason(&discharge).is_some_and(|why| why.contains("rest")));
+        assert_eq!((reason(&with_rest), reason(&both_ways)), (None, None));
+        let names = vec!["cell.leakage_current".to_string()];
+        assert_eq!(Candidate::Leak.implausible(&names, &[0.009 * q], &base, &Load::default()), None);
+        assert!(Candidate::Leak.implausible(&names, &[-0.011 * q], &base, &Load::default()).is_some_and(|why| why.contains("C/100")));
+    }
+}

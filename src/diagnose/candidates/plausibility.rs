@@ -1,0 +1,180 @@
+//! Whether a candidate's fitted values are physically plausible, resolved by the recording's
+//! sampling, and the name they give it (which electrode, how much, which way).
+
+use super::*;
+
+impl Candidate {
+    /// The pairs of `names` and `values` that are this candidate's own (a pair of effects
+    /// fits both effects' parameters: each is judged on its own).
+    fn own<'a>(self, names: &'a [String], values: &'a [f64]) -> impl Iterator<Item = (&'a String, &'a f64)> {
+        names.iter().zip(values).filter(move |(n, _)| self.refitted_paths().contains(&n.as_str()))
+    }
+
+    /// Why fitted `values` of `names` (parameter units) are implausible for this candidate,
+    /// relative to the user's set `base`; `None` when they are plausible.
+    pub fn implausible(self, names: &[String], values: &[f64], base: &ParameterSet, load: &Load) -> Option<String> {
+        let get = |path: &str| names.iter().position(|n| n == path).map(|k| values[k]);
+        match self {
+            Candidate::SeriesResistance => {
+                let r = get("cell.contact_resistance")?;
+                (!(1e-4..=0.1).contains(&r)).then(|| format!("contact resistance {:.3} mOhm is outside 0.1 to 100 mOhm", r * 1e3))
+            }
+            Candidate::ElectrolyteTransport | Candidate::Kinetics | Candidate::SolidDiffusion => self.own(names, values).find_map(|(n, v)| {
+                let v0 = base.get(n).ok()?;
+                let ratio = v / v0;
+                (!(0.05..=20.0).contains(&ratio)).then(|| format!("{n} at {ratio:.3} times the set's value is outside 0.05 to 20"))
+            }),
+            Candidate::LithiumInventory => {
+                let (cn, cp) = (get("negative.initial_concentration")?, get("positive.initial_concentration")?);
+                let lithium = |a: f64, b: f64| base.negative.active_fraction * base.negative.thickness * a + base.positive.active_fraction * base.positive.thickness * b;
+                let change = lithium(cn, cp) / lithium(base.negative.initial_concentration, base.positive.initial_concentration) - 1.0;
+                (change.abs() > 0.4).then(|| format!("a change of {:.0} % of the cyclable lithium exceeds 40 %", 100.0 * change))
+            }
+            Candidate::ActiveMaterial => self.own(names, values).find_map(|(n, v)| {
+                let loss = 1.0 - v / base.get(n).ok()?;
+                (loss > 0.5).then(|| format!("{n} lost {:.0} %, more than 50 %", 100.0 * loss))
+            }),
+            Candidate::Thermal => {
+                let h = get("thermal.heat_transfer_coefficient")?;
+                (!(1.0..=500.0).contains(&h)).then(|| format!("heat-transfer coefficient {h:.3} W/(m^2 K) is outside 1 to 500"))
+            }
+            Candidate::RcDynamics => {
+                let tau = get("cell.rc_resistance")? * get("cell.rc_capacitance")?;
+                (!(1e-3..=30.0).contains(&tau)).then(|| format!("time constant {tau:.3} s is outside 1 ms to 30 s"))
+            }
+            Candidate::Hysteresis => {
+                let h = get("cell.hysteresis_voltage")?;
+                (h > 0.05).then(|| format!("hysteresis half-width {:.1} mV exceeds 50 mV", h * 1e3))
+            }
+            Candidate::SeiGrowth | Candidate::SeiGrowthSeries | Candidate::LithiumPlating | Candidate::LithiumPlatingPartial | Candidate::ActiveMaterialGrowth | Candidate::ActiveMaterialThroughput => {
+                ageing::implausible(self, get, base, load)
+            }
+            Candidate::VoltageOffset => {
+                let v = get("cell.voltage_offset")?;
+                (v.abs() > VOLTAGE_OFFSET_PLAUSIBLE).then(|| format!("an offset of {:.1} mV exceeds 20 mV", v * 1e3))
+            }
+            Candidate::VoltageGain => {
+                let g = get("cell.voltage_gain")?;
+                (g.abs() > VOLTAGE_GAIN_PLAUSIBLE).then(|| format!("a gain error of {:.2} % exceeds 0.5 %", g * 1e2))
+            }
+            Candidate::Leak => {
+                let leak = get("cell.leakage_current")?;
+                let most = LEAK_PLAUSIBLE_C_RATE * base.cell.nominal_capacity;
+                (leak.abs() > most).then(|| format!("a leak of {:.1} mA exceeds C/100 ({:.1} mA)", leak * 1e3, most * 1e3))
+            }
+            Candidate::Electrolyte | Candidate::ElectrolyteComposite | Candidate::UnrelaxedStart => None,
+        }
+    }
+
+    /// Why fitted values describe dynamics faster than the recording's sampling can resolve
+    /// (an RC element whose time constant is shorter than the median time step cannot be
+    /// told from a series resistance).
+    pub fn unresolved(self, names: &[String], values: &[f64], rec: &Recording) -> Option<String> {
+        if self != Candidate::RcDynamics {
+            return None;
+        }
+        let get = |path: &str| names.iter().position(|n| n == path).map(|k| values[k]);
+        let tau = get("cell.rc_resistance")? * get("cell.rc_capacitance")?;
+        let step = rec.stats(1.0).median_step;
+        (tau < step).then(|| format!("time constant {tau:.3} s is shorter than the {step:.2} s sampling step: unresolved, it acts as a series resistance"))
+    }
+
+    /// A more specific name from the fitted values where the candidate has one (which
+    /// electrode lost active material, whether lithium was lost or gained).
+    pub fn named_by_values(self, names: &[String], values: &[f64], base: &ParameterSet, load: &Load) -> String {
+        let get = |path: &str| names.iter().position(|n| n == path).map(|k| values[k]);
+        match self {
+            Candidate::ActiveMaterial => {
+                let loss = |path: &str| get(path).and_then(|v| base.get(path).ok().map(|v0| 1.0 - v / v0)).unwrap_or(0.0);
+                let (n, p) = (loss("negative.active_fraction"), loss("positive.active_fraction"));
+                if both_alike(n, p) {
+                    return capacity_scale_name(0.5 * (n + p));
+                }
+                let (which, l) = if p >= n { ("positive", p) } else { ("negative", n) };
+                format!("loss of active material, {which} electrode ({:.0} % of its capacity)", 100.0 * l)
+            }
+            Candidate::ActiveMaterialGrowth | Candidate::ActiveMaterialThroughput => {
+                let (n, p) = ageing::lam_losses(get, base, load);
+                let (which, l) = if p > n { ("positive", p) } else { ("negative", n) };
+                format!("progressive loss of active material, {which} electrode (about {:.1} % of its capacity over the recording)", 100.0 * l)
+            }
+            Candidate::VoltageOffset => match get("cell.voltage_offset") {
+                Some(v) => format!("{} of {:+.1} mV", self.name(), v * 1e3),
+                None => self.name().to_string(),
+            },
+            Candidate::VoltageGain => match get("cell.voltage_gain") {
+                Some(g) => format!("{} of {:+.2} % (the channel reads {:.3} times the cell's voltage)", self.name(), g * 1e2, 1.0 + g),
+                None => self.name().to_string(),
+            },
+            Candidate::Leak => match get("cell.leakage_current") {
+                Some(leak) => {
+                    let way = if leak >= 0.0 { "discharging" } else { "charging" };
+                    format!("{} of {:.1} mA {way} the cell (C/{:.0})", self.name(), leak.abs() * 1e3, base.cell.nominal_capacity / leak.abs().max(1e-12))
+                }
+                None => self.name().to_string(),
+            },
+            _ => self.name().to_string(),
+        }
+    }
+}
+
+/// Relative difference (-) within which two electrodes' fitted losses of active material
+/// count as one loss of both: the fits of the two fractions trade a little against each
+/// other through the OCP slopes, so alike losses come back a few per cent apart.
+const ALIKE_LOSSES: f64 = 0.1;
+
+/// Whether the negative and positive losses `n`, `p` (fractions, -) are one loss of both
+/// electrodes: the same sign, at least half a per cent, within [`ALIKE_LOSSES`] of each other.
+fn both_alike(n: f64, p: f64) -> bool {
+    n * p > 0.0 && n.abs().min(p.abs()) >= 0.005 && (n - p).abs() <= ALIKE_LOSSES * n.abs().max(p.abs())
+}
+
+/// The name of a loss `l` (-) of both electrodes alike: from the voltage alone it is a scale
+/// on every current density, the same as a smaller working electrode area or a current
+/// channel that misreads the current by the same share (only the ohmic drop in the tabs and
+/// contacts, which does not scale with the area, tells them apart).
+fn capacity_scale_name(l: f64) -> String {
+    let (share, reads) = (100.0 * l.abs(), if l > 0.0 { "low" } else { "high" });
+    let what = if l > 0.0 { "loss" } else { "gain" };
+    format!(
+        "{what} of active material in both electrodes alike ({share:.1} % each): a capacity scale, the same as {share:.1} % of the electrode area {} or a current channel (sensor gain) reading {share:.1} % {reads}",
+        if l > 0.0 { "inactive (unwetted or delaminated)" } else { "more than the set's" }
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_pair_judges_each_candidate_on_its_own_parameters() {
+        // Diffusivity at 0.3 times the set's value beside an 8 % loss of negative active
+        // material: the loss is plausible, and the diffusivity is not a "lost" material.
+        let base = crate::params::chen2020();
+        let names: Vec<String> = ["positive.diffusivity", "negative.active_fraction", "positive.active_fraction"].map(String::from).to_vec();
+        let values = [0.3 * base.positive.diffusivity, 0.92 * base.negative.active_fraction, base.positive.active_fraction];
+        assert_eq!(Candidate::ActiveMaterial.implausible(&names, &values, &base, &Load::default()), None);
+        assert_eq!(Candidate::SolidDiffusion.implausible(&names, &values, &base, &Load::default()), None);
+        // Each still refuses its own implausible values.
+        let values = [0.01 * base.positive.diffusivity, 0.4 * base.negative.active_fraction, base.positive.active_fraction];
+        assert!(Candidate::ActiveMaterial.implausible(&names, &values, &base, &Load::default()).is_some_and(|why| why.contains("negative.active_fraction")));
+        assert!(Candidate::SolidDiffusion.implausible(&names, &values, &base, &Load::default()).is_some_and(|why| why.contains("positive.diffusivity")));
+    }
+
+    /// Equal losses of both electrodes are named as the capacity scale they are; unequal
+    /// ones by the electrode that lost more.
+    #[test]
+    fn alike_losses_of_both_electrodes_are_a_capacity_scale() {
+        let base = crate::params::chen2020();
+        let names: Vec<String> = ["negative.active_fraction", "positive.active_fraction"].map(String::from).to_vec();
+        let name = |n: f64, p: f64| {
+            let values = [(1.0 - n) * base.negative.active_fraction, (1.0 - p) * base.positive.active_fraction];
+            Candidate::ActiveMaterial.named_by_values(&names, &values, &base, &Load::default())
+        };
+        let scale = name(0.030, 0.0304);
+        assert!(scale.contains("both electrodes") && scale.contains("current channel") && scale.contains("3.0 % low"), "{scale}");
+        assert!(name(-0.05, -0.052).contains("reading 5.1 % high"));
+        assert!(name(0.12, 0.02).contains("negative electrode (12 %"));
+        assert!(name(0.001, 0.001).contains("positive electrode (0 %"));
+    }
+}
