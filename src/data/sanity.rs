@@ -34,6 +34,10 @@ pub struct RecordingStats {
     pub largest_step: f64,
 }
 
+/// Samples either way over which [`Recording::sign_finding`] looks for the voltage's response
+/// to a current step (a voltage channel logged out of step with the current).
+const SIGN_LAGS: isize = 5;
+
 impl Recording {
     /// Summary numbers of the recording against nominal capacity `capacity` (A h).
     pub fn stats(&self, capacity: f64) -> RecordingStats {
@@ -148,7 +152,10 @@ impl Recording {
     /// The current's sign against the voltage's response at current steps: a cell's voltage
     /// drops when its discharge current rises. When it rises at most steps (at least two, over
     /// 80 %), or, with fewer steps, moves with the current over the longest load, the current
-    /// is charge-positive as read: a unit error.
+    /// is charge-positive as read: a unit error. The response is read at the lag (up to
+    /// [`SIGN_LAGS`] samples either way) where it is strongest, so a voltage channel logged a
+    /// few samples late or early is not taken for a sign error: the sign of the strongest
+    /// response decides.
     ///
     /// ```
     /// use cellstudio::data::Recording;
@@ -162,15 +169,26 @@ impl Recording {
     pub fn sign_finding(&self) -> Option<Finding> {
         let (i, v) = (&self.current, &self.voltage);
         let peak = i.iter().fold(0.0f64, |m, x| m.max(x.abs()));
-        // A step: the current moves by a fifth of its peak between two samples.
-        let (mut steps, mut rising) = (0usize, 0usize);
-        for k in 1..i.len() {
-            let (di, dv) = (i[k] - i[k - 1], v[k] - v[k - 1]);
-            if di.abs() > 0.2 * peak && dv != 0.0 {
-                steps += 1;
-                rising += usize::from(di * dv > 0.0);
+        // A step: the current moves by a fifth of its peak between two samples; its response
+        // is the voltage's change `lag` samples later. At each lag: the steps counted, those
+        // whose voltage rose with the discharge current, and the summed `di dv` (A V).
+        let response = |lag: isize| {
+            let (mut steps, mut rising, mut sum) = (0usize, 0usize, 0.0f64);
+            for k in 1..i.len() {
+                let m = k as isize + lag;
+                if m < 1 || m as usize >= v.len() {
+                    continue;
+                }
+                let (di, dv) = (i[k] - i[k - 1], v[m as usize] - v[m as usize - 1]);
+                if di.abs() > 0.2 * peak && dv != 0.0 {
+                    steps += 1;
+                    rising += usize::from(di * dv > 0.0);
+                    sum += di * dv;
+                }
             }
-        }
+            (steps, rising, sum)
+        };
+        let (steps, rising, _) = (-SIGN_LAGS..=SIGN_LAGS).map(response).max_by(|a, b| a.2.abs().total_cmp(&b.2.abs())).unwrap_or((0, 0, 0.0));
         let fix = "is the current charge-positive (flip the sign of the current column, or `[data.format] discharge_positive = false`)?";
         if steps >= 2 {
             return (rising as f64 > 0.8 * steps as f64).then(|| Finding {
@@ -208,5 +226,28 @@ impl Recording {
             return Err(crate::Error::InvalidSetting { field: format!("data ({file})"), reason: format!("likely unit error: {}", f.message) });
         }
         Ok(findings.into_iter().map(|f| format!("Recording check: {}.", f.message)).collect())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A drive of 1-3 s pulses through a 20 mOhm cell logged every second: read 2 s late the
+    /// voltage moves with the current at most steps (its own lag), yet drops with the
+    /// discharge current at the lag of the strongest response; a flipped current is refused.
+    #[test]
+    fn a_late_voltage_channel_is_not_a_sign_error() {
+        let lengths = [1, 3, 2, 1, 3, 1, 2, 3, 3, 1, 2, 2, 1, 3];
+        let current: Vec<f64> = lengths.iter().cycle().take(60).enumerate().flat_map(|(k, n)| vec![if k % 2 == 1 { 5.0 } else { 0.0 }; *n]).take(120).collect();
+        let cell: Vec<f64> = current.iter().map(|i| 3.7 - 0.02 * i).collect();
+        let late: Vec<f64> = (0..120).map(|k| cell[k.max(2) - 2]).collect();
+        let time: Vec<f64> = (0..120).map(f64::from).collect();
+        let rec = |current: Vec<f64>, voltage: Vec<f64>| Recording { time: time.clone(), current, voltage, temperature: None };
+        assert!(rec(current.clone(), cell.clone()).sign_finding().is_none());
+        assert!(rec(current.clone(), late.clone()).sign_finding().is_none());
+        let flipped: Vec<f64> = current.iter().map(|i| -i).collect();
+        assert!(rec(flipped.clone(), late).sign_finding().is_some_and(|f| f.unit_error));
+        assert!(rec(flipped, cell).sign_finding().is_some_and(|f| f.unit_error));
     }
 }

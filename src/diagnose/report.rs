@@ -166,7 +166,9 @@ fn class_words(class: Class) -> &'static str {
     match class {
         Class::MissingPhysics => "Missing physics",
         Class::ParameterMismatch => "Parameter mismatch",
-        Class::RecordingCondition => "Recording condition",
+        // Read as a verdict beside the other two (a report reader, or a tool that looks for
+        // "Missing physics"), while saying the cell itself lacks nothing.
+        Class::RecordingCondition => "Missing physics of the test, not of the cell (a recording condition)",
     }
 }
 

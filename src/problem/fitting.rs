@@ -5,6 +5,7 @@ use std::sync::Mutex;
 
 use serde::{Deserialize, Serialize};
 
+use super::delay::{DelayedTimes, delay_at, is_delay};
 use super::history::{history_step, is_history, state_after};
 use super::sensitivity::{PARAMETER_STEP, Sensitivities};
 use crate::cost::Prior;
@@ -46,13 +47,14 @@ impl ModelSpec {
 pub const INITIAL_SOC: &str = "initial_soc";
 
 /// Sets `values` of `parameters` in `p`, the initial state of charge last (a load before the
-/// recording, [`super::history`], is not a parameter of the set).
+/// recording, [`super::history`], and a delay of its voltage channel, [`super::delay`], are
+/// not parameters of the set).
 fn apply(p: &mut ParameterSet, parameters: &[FitParameter], values: &[f64]) -> Result<(), Error> {
     let mut soc = None;
     for (fp, &v) in parameters.iter().zip(values) {
         if fp.path == INITIAL_SOC {
             soc = Some(v)
-        } else if !is_history(&fp.path) {
+        } else if !is_history(&fp.path) && !is_delay(&fp.path) {
             p.set(&fp.path, v)?
         }
     }
@@ -91,7 +93,7 @@ impl FitParameter {
     }
 
     pub(crate) fn validate(&self, base: &ParameterSet) -> Result<(), Error> {
-        if self.path != INITIAL_SOC && !is_history(&self.path) {
+        if self.path != INITIAL_SOC && !is_history(&self.path) && !is_delay(&self.path) {
             base.get(&self.path)?;
         }
         let field = |name: &str| format!("parameters.{}.{name}", self.path);
@@ -377,6 +379,21 @@ impl FittingProblem {
         }
     }
 
+    /// The replay's options, its output times those of `delayed` when the voltage channel's
+    /// delay is fitted.
+    fn options_with(&self, p: &ParameterSet, delayed: Option<&DelayedTimes>) -> SimOptions {
+        let opts = self.options(p);
+        match delayed {
+            Some(d) => SimOptions { t_eval: Some(d.times.clone()), ..opts },
+            None => opts,
+        }
+    }
+
+    /// The output times with the voltage channel's delay at `x`, when one is fitted.
+    fn delayed(&self, x: &[f64]) -> Option<DelayedTimes> {
+        delay_at(&self.parameters, x, &self.pinned).map(|tau| DelayedTimes::new(&self.t_eval, tau))
+    }
+
     /// The load before the recording at `x`, when one is fitted.
     fn history(&self, x: &[f64]) -> Result<Option<crate::protocol::Step>, Error> {
         history_step(&self.parameters, x, &self.pinned)
@@ -395,15 +412,16 @@ impl FittingProblem {
 
     fn run_plain(&self, worker: &mut Worker, x: &[f64], p: &ParameterSet) -> Result<Simulated, Error> {
         let built = worker.builders[0].build(p)?;
-        let opts = self.options(p);
+        let delayed = self.delayed(x);
+        let opts = self.options_with(p, delayed.as_ref());
         let y0 = match self.history(x)? {
             Some(step) => Some(state_after(built.model.as_ref(), &mut built.workspace, &step, &opts)?),
             None => None,
         };
         let sol = simulate(built.model.as_ref(), &mut built.workspace, &self.protocol, &opts, y0)?;
-        let voltage = self.at_points(&sol)?;
+        let voltage = self.at_points(&sol, delayed.as_ref())?;
         let temperature = match self.temperature_weight {
-            Some(_) => self.output_of_point.iter().map(|&k| sol.temperature[k]).collect(),
+            Some(_) => self.output_of_point.iter().map(|&k| sol.temperature[delayed.as_ref().map_or(k, |d| d.plain_at[k])]).collect(),
             None => Vec::new(),
         };
         Ok(Simulated { voltage, sensitivity: Vec::new(), columns: 0, temperature })
@@ -420,7 +438,8 @@ impl FittingProblem {
             .map(|((s, v), p)| if v + PARAMETER_STEP * s > p.upper { -PARAMETER_STEP * s } else { PARAMETER_STEP * s })
             .collect();
         let (first, rest) = worker.builders.split_at_mut(1);
-        let opts = self.options(p);
+        let delayed = self.delayed(x);
+        let opts = self.options_with(p, delayed.as_ref());
         let history = self.history(x)?;
         let base = first[0].build(p)?;
         // With a load before the recording, every copy starts where its own history ends.
@@ -459,16 +478,33 @@ impl FittingProblem {
         let mut rows: Vec<f64> = Vec::with_capacity(self.t_eval.len() * scales.len());
         let mut derive = |z: &[f64], i: f64| rows.extend(model.voltage_sensitivities(z, i).iter().zip(&scales).map(|(d, s)| d / s));
         let sol = simulate_observed(&model, ws, &self.protocol, &opts, Some(z0), &mut derive)?;
-        let voltage = self.at_points(&sol)?;
+        let voltage = self.at_points(&sol, delayed.as_ref())?;
         let dim = scales.len();
-        let sensitivity = self.output_of_point.iter().flat_map(|&k| rows[k * dim..(k + 1) * dim].iter().copied()).collect();
+        // Read with a delay, each point's row is the one at its shifted time, and the delay's
+        // column (which no model copy changes) is minus the voltage's slope there.
+        let (row_of, delay_column): (Vec<usize>, Option<(usize, Vec<f64>)>) = match &delayed {
+            Some(d) => (d.voltage_at.clone(), self.parameters.iter().position(|q| is_delay(&q.path)).map(|k| (k, d.delay_sensitivity(&sol.voltage)))),
+            None => ((0..self.t_eval.len()).collect(), None),
+        };
+        let sensitivity = self
+            .output_of_point
+            .iter()
+            .flat_map(|&k| {
+                let mut row = rows[row_of[k] * dim..(row_of[k] + 1) * dim].to_vec();
+                if let Some((column, slope)) = &delay_column {
+                    row[*column] = slope[k];
+                }
+                row
+            })
+            .collect();
         Ok(Simulated { voltage, sensitivity, columns: dim, temperature: Vec::new() })
     }
 
-    /// Maps outputs at the distinct times onto the recorded points; errors if the replay
-    /// ended early, saying why.
-    fn at_points(&self, sol: &Solution) -> Result<Vec<f64>, Error> {
-        if sol.time.len() != self.t_eval.len() {
+    /// Maps outputs at the distinct times (shifted by the voltage channel's delay when one is
+    /// fitted) onto the recorded points; errors if the replay ended early, saying why.
+    fn at_points(&self, sol: &Solution, delayed: Option<&DelayedTimes>) -> Result<Vec<f64>, Error> {
+        let expected = delayed.map_or(self.t_eval.len(), |d| d.times.len());
+        if sol.time.len() != expected {
             // Where the model broke down (its voltage left the window), else where it stopped:
             // a caller that cuts the recording there must cut before the breakdown, not after.
             let t = sol.cutoff_times.first().or(sol.time.last()).copied().unwrap_or(0.0);
@@ -479,9 +515,9 @@ impl FittingProblem {
                 ),
                 None => "the simulation ended early".into(),
             };
-            return Err(Error::Solver { t, reason: format!("{why}; {} of {} recorded times simulated", sol.time.len(), self.t_eval.len()) });
+            return Err(Error::Solver { t, reason: format!("{why}; {} of {expected} output times simulated", sol.time.len()) });
         }
-        Ok(self.output_of_point.iter().map(|&k| sol.voltage[k]).collect())
+        Ok(self.output_of_point.iter().map(|&k| sol.voltage[delayed.map_or(k, |d| d.voltage_at[k])]).collect())
     }
 
     /// Residuals `V_model - V_data` (V) at every recorded point.

@@ -9,6 +9,7 @@ pub mod fast_charge;
 pub mod fitting;
 pub mod gitt;
 pub mod global_sensitivity;
+pub mod delay;
 pub mod history;
 pub mod identification;
 pub mod joint;

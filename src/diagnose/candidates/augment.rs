@@ -122,6 +122,10 @@ impl Candidate {
                 spec.submodels.voltage_gain = true;
                 (vec![FitParameter::linear("cell.voltage_gain", 0.0, -VOLTAGE_GAIN_SEARCH, VOLTAGE_GAIN_SEARCH)], "voltage-gain submodel on".into())
             }
+            Candidate::VoltageDelay => (
+                vec![FitParameter::linear(VOLTAGE_DELAY, 0.0, -VOLTAGE_DELAY_SEARCH_S, VOLTAGE_DELAY_SEARCH_S)],
+                "voltage read at a fitted delay".into(),
+            ),
             Candidate::UnrelaxedStart => {
                 if fitted.iter().any(|f| f == HISTORY_CURRENT) {
                     return None;

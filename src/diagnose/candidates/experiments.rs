@@ -18,6 +18,7 @@ impl Candidate {
             (SeriesResistance, Kinetics) | (Kinetics, SeriesResistance) => {
                 "current pulses at two or more rates (kinetics is non-linear in current, a resistance is not) across the state of charge".into()
             }
+            (VoltageDelay, _) | (_, VoltageDelay) => "current steps logged at 10 Hz or faster with the voltage and current on one clock (a delay shifts the whole response in time, a cell's response starts at the step)".into(),
             (SeriesResistance, RcDynamics) | (RcDynamics, SeriesResistance) => "sampling faster than 0.1 s around current steps, or an impedance spectrum".into(),
             (LithiumInventory, ActiveMaterial) | (ActiveMaterial, LithiumInventory) => {
                 "a slow (C/20) charge and discharge over the full window, read by differential voltage analysis".into()

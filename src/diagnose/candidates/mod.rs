@@ -17,6 +17,7 @@ use crate::data::Recording;
 use crate::models::ModelKind;
 use crate::params::ParameterSet;
 use crate::problem::fitting::{FitParameter, INITIAL_SOC, ModelSpec};
+use crate::problem::delay::VOLTAGE_DELAY;
 use crate::problem::history::{HISTORY_CURRENT, HISTORY_DURATION};
 
 /// A candidate explanation.
@@ -44,6 +45,7 @@ pub enum Candidate {
     VoltageOffset,
     VoltageGain,
     UnrelaxedStart,
+    VoltageDelay,
 }
 
 /// Missing physics or a parameter the model has but with the wrong value.
@@ -102,6 +104,10 @@ const HISTORY_RANGE_S: (f64, f64) = (10.0, 7200.0);
 const VOLTAGE_OFFSET_SEARCH: f64 = 0.05;
 const VOLTAGE_OFFSET_PLAUSIBLE: f64 = 0.02;
 
+/// The voltage-delay candidate's search range and plausible size (s).
+const VOLTAGE_DELAY_SEARCH_S: f64 = 10.0;
+const VOLTAGE_DELAY_PLAUSIBLE_S: f64 = 5.0;
+
 /// The voltage-gain candidate's search range and plausible size (-): 0.5 % reads 21 mV off
 /// at 4.2 V, as far as the offset's plausible 20 mV.
 const VOLTAGE_GAIN_SEARCH: f64 = 0.02;
@@ -116,7 +122,7 @@ const HYSTERESIS_START_RATE: f64 = 10.0;
 const HYSTERESIS_BRANCH: f64 = 0.5;
 
 impl Candidate {
-    pub const ALL: [Candidate; 21] = [
+    pub const ALL: [Candidate; 22] = [
         Candidate::SeriesResistance,
         Candidate::Electrolyte,
         Candidate::ElectrolyteComposite,
@@ -138,6 +144,7 @@ impl Candidate {
         Candidate::VoltageOffset,
         Candidate::VoltageGain,
         Candidate::UnrelaxedStart,
+        Candidate::VoltageDelay,
     ];
 
     /// An ageing candidate: it changes the cell from cycle to cycle ([`ageing`]).
@@ -169,6 +176,7 @@ impl Candidate {
             Candidate::VoltageOffset => "voltage offset (the voltage channel's calibration, or an open-circuit potential shifted against the set's)",
             Candidate::VoltageGain => "voltage gain (the voltage channel's calibration reads a share of the voltage high or low)",
             Candidate::UnrelaxedStart => "an unrelaxed start (a load just before the first recorded point: the recording began part-way through a test)",
+            Candidate::VoltageDelay => "voltage channel delay (its time stamps misaligned with the current's)",
         }
     }
 
@@ -191,7 +199,7 @@ impl Candidate {
             | Candidate::VoltageGain => {
                 Class::MissingPhysics
             }
-            Candidate::UnrelaxedStart => Class::RecordingCondition,
+            Candidate::UnrelaxedStart | Candidate::VoltageDelay => Class::RecordingCondition,
             _ => Class::ParameterMismatch,
         }
     }
@@ -219,6 +227,7 @@ impl Candidate {
             Candidate::VoltageOffset => "a constant difference, the same under load and at rest, at every state of charge and current",
             Candidate::VoltageGain => "a difference in proportion to the voltage itself: the same share under load and at rest, larger at the top of the voltage window than at the bottom",
             Candidate::UnrelaxedStart => "a transient at the start only, fading over minutes whatever the load, as the particles and electrolyte relax from a load the recording did not hold",
+            Candidate::VoltageDelay => "a residual shaped like the voltage's own slope: at every change of current the voltage answers a fixed time late (or early), whatever the size of the change, and nothing is left in slow stretches",
             Candidate::Leak => "the state of charge drifts at a constant rate whatever the load: the voltage keeps sliding in rests instead of settling, and the charge put back differs from the charge taken out by the leak times the time",
         }
     }
@@ -244,6 +253,7 @@ impl Candidate {
             Candidate::VoltageOffset => "up to 20 mV either way",
             Candidate::VoltageGain => "up to 0.5 % either way (21 mV at 4.2 V)",
             Candidate::UnrelaxedStart => "a load of up to 3C either way, held 10 s to 2 h before the first point",
+            Candidate::VoltageDelay => "up to 5 s either way (a logger's messages or a filter; longer would be seen by eye)",
         }
     }
 
@@ -278,7 +288,7 @@ impl Candidate {
             // An overpotential is told from the open-circuit voltage by how the voltage moves
             // with the current at one state of charge: steps, or a load whose level changes
             // (e.g. the falling current of a constant-voltage hold).
-            Candidate::SeriesResistance | Candidate::Kinetics | Candidate::RcDynamics if f.steps.is_empty() && f.distinct_rates < 2 => {
+            Candidate::SeriesResistance | Candidate::Kinetics | Candidate::RcDynamics | Candidate::VoltageDelay if f.steps.is_empty() && f.distinct_rates < 2 => {
                 Some("needs current steps or loads at two or more rates".into())
             }
             Candidate::SeiGrowth | Candidate::SeiGrowthSeries => ageing::too_short_for_sei(f),
@@ -360,3 +370,4 @@ mod tests {
         assert!(Candidate::Leak.implausible(&names, &[-0.011 * q], &base, &Load::default()).is_some_and(|why| why.contains("C/100")));
     }
 }
+

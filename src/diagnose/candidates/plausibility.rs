@@ -62,6 +62,10 @@ impl Candidate {
                 let most = LEAK_PLAUSIBLE_C_RATE * base.cell.nominal_capacity;
                 (leak.abs() > most).then(|| format!("a leak of {:.1} mA exceeds C/100 ({:.1} mA)", leak * 1e3, most * 1e3))
             }
+            Candidate::VoltageDelay => {
+                let tau = get(VOLTAGE_DELAY)?;
+                (tau.abs() > VOLTAGE_DELAY_PLAUSIBLE_S).then(|| format!("a delay of {tau:.2} s exceeds 5 s"))
+            }
             Candidate::Electrolyte | Candidate::ElectrolyteComposite | Candidate::UnrelaxedStart => None,
         }
     }
@@ -104,6 +108,10 @@ impl Candidate {
             },
             Candidate::VoltageGain => match get("cell.voltage_gain") {
                 Some(g) => format!("{} of {:+.2} % (the channel reads {:.3} times the cell's voltage)", self.name(), g * 1e2, 1.0 + g),
+                None => self.name().to_string(),
+            },
+            Candidate::VoltageDelay => match get(VOLTAGE_DELAY) {
+                Some(tau) => format!("{} of {:.2} s (the voltage is logged {:.2} s {} the current)", self.name(), tau.abs(), tau.abs(), if tau >= 0.0 { "after" } else { "before" }),
                 None => self.name().to_string(),
             },
             Candidate::Leak => match get("cell.leakage_current") {
