@@ -115,6 +115,7 @@ impl<'a> Newton<'a> {
                 ws.pattern.evaluate(&mut g, y_pred, f, state_scale, &mut ws.jac);
                 stats.rhs_evals += 1 + ws.pattern.n_colours();
                 stats.jacobian_evals += 1;
+                ws.system.load_jacobian(&ws.jac);
                 self.have_jac = true;
                 self.jac_current = true;
                 self.lu_valid = false;
@@ -122,7 +123,7 @@ impl<'a> Newton<'a> {
             // The Newton matrix M - c J is kept while c drifts by less than 30 %
             // (as CVODE does); a stale c only slows the modified Newton iteration.
             if !self.lu_valid || (c / self.lu_c - 1.0).abs() > MAX_GAMMA_DRIFT {
-                ws.system.factorise(mass, c, &ws.jac)?;
+                ws.system.factorise_loaded(mass, c)?;
                 stats.factorisations += 1;
                 self.lu_valid = true;
                 self.lu_c = c;
