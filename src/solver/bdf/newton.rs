@@ -108,6 +108,9 @@ impl<'a> Newton<'a> {
         let (y_pred, psi) = (&pred.y[..], &pred.psi[..]);
         let (f, rhs, y_new, dvec) = (&mut self.f[..], &mut self.rhs[..], &mut self.y_new[..], &mut self.dvec[..]);
         let mut n_iter = 0;
+        // `f` holds `f(t_new, y_pred)`, evaluated for a finite-difference Jacobian: the first
+        // Newton iteration, which reads the same point, reuses it.
+        let mut f_at_pred = false;
         loop {
             if !self.have_jac {
                 let mut g = |yy: &[f64], out: &mut [f64]| dae.rhs(t_new, yy, out);
@@ -116,6 +119,7 @@ impl<'a> Newton<'a> {
                 stats.rhs_evals += 1 + ws.pattern.n_colours();
                 stats.jacobian_evals += 1;
                 ws.system.load_jacobian(&ws.jac);
+                f_at_pred = true;
                 self.have_jac = true;
                 self.jac_current = true;
                 self.lu_valid = false;
@@ -135,8 +139,11 @@ impl<'a> Newton<'a> {
             let mut converged = false;
             for k in 0..NEWTON_MAXITER {
                 n_iter = k + 1;
-                dae.rhs(t_new, if k == 0 { y_pred } else { y_new }, f);
-                stats.rhs_evals += 1;
+                if !(k == 0 && f_at_pred) {
+                    dae.rhs(t_new, if k == 0 { y_pred } else { y_new }, f);
+                    stats.rhs_evals += 1;
+                    f_at_pred = k == 0;
+                }
                 stats.newton_iters += 1;
                 // A non-finite right-hand side is caught by the norm of the correction below
                 // (it spreads through the solve), so this loop has no test and vectorises.
