@@ -7,6 +7,7 @@
 //! `cargo run --release --example tight_reference -- MODEL CASE RTOL TIMES_CSV OUT_CSV`
 
 #[path = "common/solver_case.rs"]
+#[allow(dead_code)] // REPEATS is not used here
 mod solver_case;
 
 use std::io::Write;
