@@ -31,9 +31,9 @@
 use std::cell::Cell;
 use std::time::Instant;
 
-use cellstudio::geometry::builder::Built;
 use cellstudio::geometry::MeshSizes;
 use cellstudio::models::ModelBuilder;
+use cellstudio::models::builder::Built;
 use cellstudio::models::{Model, ModelKind, PhysicsModel, Submodels};
 use cellstudio::params::chen2020;
 use cellstudio::protocol::Protocol;

@@ -50,9 +50,10 @@ pub struct SparseSystem {
     /// Slots in `lu`'s value array of the Jacobian entries and of the diagonal.
     jac_slots: Vec<usize>,
     diag_slots: Vec<usize>,
-    /// Slots that no Jacobian entry writes (fill, and diagonals outside the Jacobian
-    /// pattern): zeroed before each factorisation, the Jacobian slots being overwritten.
-    zero_slots: Vec<usize>,
+    /// The Jacobian loaded by [`SparseSystem::load_jacobian`], laid out as `lu`'s value
+    /// array (zero in the slots no Jacobian entry writes: fill, and diagonals outside the
+    /// pattern), so that each factorisation fills the matrix in one contiguous pass.
+    jac_lu: Vec<f64>,
     /// Pivoting fallback, built on first need.
     fallback: Option<Box<PivotingLu>>,
     /// Which factorisation `solve` uses.
@@ -76,16 +77,14 @@ impl SparseSystem {
         all.extend((0..n).map(|i| (i, i)));
         let (lu, mut slots) = StaticLu::new(n, &all);
         let diag_slots = slots.split_off(entries.len());
-        let mut written = vec![false; lu.nnz()];
-        slots.iter().for_each(|&s| written[s] = true);
-        let zero_slots = (0..lu.nnz()).filter(|&s| !written[s]).collect();
+        let jac_lu = vec![0.0; lu.nnz()];
         Ok(Self {
             n,
             entries: entries.to_vec(),
             lu,
             jac_slots: slots,
             diag_slots,
-            zero_slots,
+            jac_lu,
             fallback: None,
             state: Factorised::No,
         })
@@ -94,14 +93,26 @@ impl SparseSystem {
     /// Sets the matrix to `diag(mass) - c * J`, where `jac[k]` is the value of entry `k` of the
     /// pattern given to [`SparseSystem::new`], and factorises it.
     pub fn factorise(&mut self, mass: &[f64], c: f64, jac: &[f64]) -> Result<(), Error> {
+        self.load_jacobian(jac);
+        self.factorise_loaded(mass, c)
+    }
+
+    /// Loads the Jacobian `J` (`jac[k]` the value of entry `k` of the pattern given to
+    /// [`SparseSystem::new`]) for the factorisations that follow: a Jacobian serves several
+    /// Newton matrices (one per step-size change), so it is laid out once.
+    pub fn load_jacobian(&mut self, jac: &[f64]) {
+        // Entries are distinct, so each Jacobian slot is written once.
+        for (&slot, &j) in self.jac_slots.iter().zip(jac) {
+            self.jac_lu[slot] = j;
+        }
+    }
+
+    /// Sets the matrix to `diag(mass) - c * J` with the last loaded Jacobian and factorises it.
+    pub fn factorise_loaded(&mut self, mass: &[f64], c: f64) -> Result<(), Error> {
         self.state = Factorised::No;
         let vals = self.lu.values_mut();
-        for &slot in &self.zero_slots {
-            vals[slot] = 0.0;
-        }
-        // Entries are distinct, so each Jacobian slot is written once (as `0 - c J`).
-        for (&slot, &j) in self.jac_slots.iter().zip(jac) {
-            vals[slot] = 0.0 - c * j;
+        for (v, &j) in vals.iter_mut().zip(&self.jac_lu) {
+            *v = 0.0 - c * j;
         }
         for (&slot, &m) in self.diag_slots.iter().zip(mass) {
             vals[slot] += m;
@@ -113,7 +124,8 @@ impl SparseSystem {
         if self.fallback.is_none() {
             self.fallback = Some(Box::new(PivotingLu::new(self.n, &self.entries)?));
         }
-        self.fallback.as_mut().expect("built above").factorise(mass, c, jac)?;
+        let jac: Vec<f64> = self.jac_slots.iter().map(|&slot| self.jac_lu[slot]).collect();
+        self.fallback.as_mut().expect("built above").factorise(mass, c, &jac)?;
         self.state = Factorised::Pivoting;
         Ok(())
     }

@@ -128,14 +128,16 @@ impl Differences {
             let mut it = self.d.iter_mut().map(|v| &mut v[..n]);
             std::array::from_fn(|_| it.next().expect("K rows"))
         };
+        // Column 0 of `R U` is the first unit vector (`R` and `U` are 1 in row 0 and 0 below
+        // it in column 0): the state `d[0]` does not change. The other columns are applied
+        // without testing for zero entries, so the loop over the states vectorises.
+        debug_assert!((1..K).all(|i| ru[i][0] == 0.0) && ru[0][0] == 1.0);
         for e in 0..n {
             let old: [f64; K] = std::array::from_fn(|i| d[i][e]);
-            for j in 0..K {
+            for j in 1..K {
                 let mut s = 0.0;
                 for i in 0..K {
-                    if ru[i][j] != 0.0 {
-                        s += ru[i][j] * old[i];
-                    }
+                    s += ru[i][j] * old[i];
                 }
                 d[j][e] = s;
             }

@@ -1,6 +1,7 @@
 //! The modified Newton solve of one BDF/NDF step, `M (psi + d) - c f(t, y_pred + d) = 0`, and
 //! the reuse of its Jacobian and factorised Newton matrix `M - c J` across steps.
 
+use super::control::weighted_sum_squares;
 use super::differences::Prediction;
 use super::{Dae, SolverStats, Workspace};
 use crate::error::Error;
@@ -107,6 +108,9 @@ impl<'a> Newton<'a> {
         let (y_pred, psi) = (&pred.y[..], &pred.psi[..]);
         let (f, rhs, y_new, dvec) = (&mut self.f[..], &mut self.rhs[..], &mut self.y_new[..], &mut self.dvec[..]);
         let mut n_iter = 0;
+        // `f` holds `f(t_new, y_pred)`, evaluated for a finite-difference Jacobian: the first
+        // Newton iteration, which reads the same point, reuses it.
+        let mut f_at_pred = false;
         loop {
             if !self.have_jac {
                 let mut g = |yy: &[f64], out: &mut [f64]| dae.rhs(t_new, yy, out);
@@ -114,6 +118,8 @@ impl<'a> Newton<'a> {
                 ws.pattern.evaluate(&mut g, y_pred, f, state_scale, &mut ws.jac);
                 stats.rhs_evals += 1 + ws.pattern.n_colours();
                 stats.jacobian_evals += 1;
+                ws.system.load_jacobian(&ws.jac);
+                f_at_pred = true;
                 self.have_jac = true;
                 self.jac_current = true;
                 self.lu_valid = false;
@@ -121,7 +127,7 @@ impl<'a> Newton<'a> {
             // The Newton matrix M - c J is kept while c drifts by less than 30 %
             // (as CVODE does); a stale c only slows the modified Newton iteration.
             if !self.lu_valid || (c / self.lu_c - 1.0).abs() > MAX_GAMMA_DRIFT {
-                ws.system.factorise(mass, c, &ws.jac)?;
+                ws.system.factorise_loaded(mass, c)?;
                 stats.factorisations += 1;
                 self.lu_valid = true;
                 self.lu_c = c;
@@ -133,42 +139,41 @@ impl<'a> Newton<'a> {
             let mut converged = false;
             for k in 0..NEWTON_MAXITER {
                 n_iter = k + 1;
-                dae.rhs(t_new, if k == 0 { y_pred } else { y_new }, f);
-                stats.rhs_evals += 1;
+                if !(k == 0 && f_at_pred) {
+                    dae.rhs(t_new, if k == 0 { y_pred } else { y_new }, f);
+                    stats.rhs_evals += 1;
+                    f_at_pred = k == 0;
+                }
                 stats.newton_iters += 1;
-                let mut finite = true;
+                // A non-finite right-hand side is caught by the norm of the correction below
+                // (it spreads through the solve), so this loop has no test and vectorises.
                 if k == 0 {
                     for (((r, fi), m), ps) in rhs.iter_mut().zip(f.iter()).zip(mass).zip(psi) {
-                        finite &= fi.is_finite();
                         *r = c * fi - m * (ps + 0.0);
                     }
                 } else {
                     for ((((r, fi), m), ps), dv) in rhs.iter_mut().zip(f.iter()).zip(mass).zip(psi).zip(dvec.iter()) {
-                        finite &= fi.is_finite();
                         *r = c * fi - m * (ps + dv);
                     }
                 }
-                if !finite {
-                    break;
-                }
                 ws.system.solve(rhs);
-                // The norm of the correction, and the corrected state (left unused if the
-                // rate test below stops the iteration).
-                let mut sum = 0.0;
+                // The corrected state (left unused if the rate test below stops the
+                // iteration), and the norm of the correction.
                 if k == 0 {
-                    for ((((yn, dv), r), yp), w) in y_new.iter_mut().zip(dvec.iter_mut()).zip(rhs.iter()).zip(y_pred).zip(weight) {
-                        sum += (r * w) * (r * w);
+                    for (((yn, dv), r), yp) in y_new.iter_mut().zip(dvec.iter_mut()).zip(rhs.iter()).zip(y_pred) {
                         *yn = yp + r;
                         *dv = 0.0 + r;
                     }
                 } else {
-                    for (((yn, dv), r), w) in y_new.iter_mut().zip(dvec.iter_mut()).zip(rhs.iter()).zip(weight) {
-                        sum += (r * w) * (r * w);
+                    for ((yn, dv), r) in y_new.iter_mut().zip(dvec.iter_mut()).zip(rhs.iter()) {
                         *yn += r;
                         *dv += r;
                     }
                 }
-                let dy_norm = (sum / rhs.len() as f64).sqrt();
+                let dy_norm = (weighted_sum_squares(rhs, weight) / rhs.len() as f64).sqrt();
+                if !dy_norm.is_finite() {
+                    break;
+                }
                 let rate = dy_norm_old.map(|old| dy_norm / old);
                 if let Some(r) = rate {
                     if r >= 1.0 || r.powi((NEWTON_MAXITER - k) as i32) / (1.0 - r) * dy_norm > self.tol {
