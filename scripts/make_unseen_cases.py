@@ -3099,7 +3099,27 @@ def batch_b(root):
     the words an engineer would use (self-discharge, leak, soft short, current offset); the
     unrelaxed start by "unrelaxed" / "recording condition" / "history" words; the time lag by the
     words for a logging delay or misalignment (not the bare "lag", which an RC or hysteresis
-    verdict could carry). Each note gives the effect's size on its own where a replay measures it."""
+    verdict could carry). Each note gives the effect's size on its own where a replay measures it.
+
+    First run (2026-11-27, binary /work/bin/s13gain, sha256 d244018ba4b5, load average 7.47 before,
+    8.55 after (1 min), on 2 cores shared with other work; 133 s in all): 5 of 8 by the judge, 6 on
+    substance. bb1 hysteresis 6.06 mV (truth 6), 3.92 -> 1.00 mV, 5 s; bb2 a leak of 4.0 mA (truth 4),
+    15.24 -> 0.99 mV, 5 s; bb4 positive LAM 8 % (fraction 0.6119, truth 0.6118), 20.13 -> 1.33 mV, then
+    no missing physics (the SPMe's own 1.3 mV), 9 s; bb7 no missing physics (1.04 mV, noise 1.03), 1 s;
+    bb8 a tie of contact 2.50 mOhm (truth 2.5) or kinetics, 3.56 -> 0.99 mV, 3 s. bb6 was named right
+    in round 1 ("Recording condition: an unrelaxed start", a load of 7.66 A for 846 s before the first
+    point; initial SOC 40.8 %), 27.03 -> 0.98 mV, 20 s, but the judge's verdict pattern has no
+    "Recording condition" and took round 2's "No missing physics" as the first verdict: a judge
+    artefact. Missed: bb5 refused by the recording check as a sign error ("the voltage rises when the
+    discharge current rises at 23 of 27 current steps: is the current charge-positive?"), 0 s; bb3
+    "unexplained" (14.67 mV; closest irreversible plating, 7.60 mV, ln BF -4.3; the thermal
+    candidate alone at the truth, h 11.96, ambient 308.10 K, made the hold-out worse, 22.93 -> 30.19
+    mV, so no pair with it was formed), 90 s. Correction to bb3's note, found after judging:
+    the SEI is the LARGER member, not the smaller: replaying the recorded current (1 s
+    zero-order hold of the 15 s log, so about 7.8 mV of the truth's own replay is interpolation),
+    the isothermal SPM with the SEI leaves 15.5 mV, the thermal SPM without it 24.9 mV, the nominal
+    SPM 21.4 mV (the two effects partly cancel); the note's experiment-based numbers (15.06 and
+    41.85 mV) hold shifted cut-offs. The case itself is unchanged."""
     cap = 5.0
     # bb1: negative OCP hysteresis +-6 mV (small), an OCV step test (C/5 steps of 10 % with 45 min rests, down then up), SPMe at 20 degC
     p = chen()
