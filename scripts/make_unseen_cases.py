@@ -3042,8 +3042,246 @@ def batch_a(root):
                initial_soc=0.7, seed=258, cycler=CYCLER, compare=lion.SPMe())
 
 
+def replay_rmse(root, name, model, params, steps, initial_soc, key, period=1, skip_steps=0):
+    """Adds to `name`'s truth.json, under `key`, the RMS difference (mV) between the recorded voltage and
+    `model` with `params` run through `steps` from `initial_soc` (after `skip_steps` unrecorded steps),
+    at the recording's single (not repeated) times: what one effect or one model gap does on its own."""
+    folder = os.path.join(root, name)
+    data = np.loadtxt(os.path.join(folder, "recording.csv"), delimiter=",", skiprows=1)
+    t, v = data[:, 0], data[:, 2]
+    sol = pybamm.Simulation(model, parameter_values=params, experiment=pybamm.Experiment(steps, period=f"{period} seconds"),
+                            solver=pybamm.IDAKLUSolver(rtol=1e-8, atol=1e-8)).solve(initial_soc=initial_soc)
+    tr, vr = sol["Time [s]"].entries, sol["Voltage [V]"].entries
+    if skip_steps:
+        n0 = sum(len(c["Time [s]"].entries) for c in sol.cycles[:skip_steps])
+        tr, vr = tr[n0:] - tr[n0], vr[n0:]
+    single = np.ones(len(t), dtype=bool)
+    single[1:] &= t[1:] - t[:-1] > 1e-6
+    single[:-1] &= t[1:] - t[:-1] > 1e-6
+    single &= t <= tr[-1]
+    _, first = np.unique(tr, return_index=True)
+    d = v[single] - np.interp(t[single], tr[first], vr[first])
+    with open(os.path.join(folder, "truth.json")) as f:
+        truth = json.load(f)
+    truth[key] = round(1e3 * float(np.sqrt(np.mean(d ** 2))), 2)
+    with open(os.path.join(folder, "truth.json"), "w") as f:
+        json.dump(truth, f, indent=1)
+    print(f"  {name}: {key} = {truth[key]} mV")
 
-BATCHES = {"u": batch_u, "v": batch_v, "w": batch_w, "x": batch_x, "y": batch_y, "z": batch_z, "q": batch_q, "r": batch_r, "s": batch_s, "t": batch_t, "p": batch_p, "o": batch_o, "n": batch_n, "m": batch_m, "l": batch_l, "k": batch_k, "j": batch_j, "i": batch_i, "h": batch_h, "f": batch_f, "e": batch_e, "g": batch_g, "d": batch_d, "c": batch_c, "a": batch_a}
+
+def regulation_blocks(seed, blocks):
+    """Frequency-regulation duty around a mid SOC: alternate discharge and charge blocks of 60-240 s at
+    0.2-1C, so the state of charge wanders a few per cent either side of where it started."""
+    rng = np.random.default_rng(seed)
+    steps = []
+    for k in range(blocks):
+        rate = float(rng.uniform(0.2, 1.0))
+        seconds = int(rng.integers(60, 241))
+        steps.append(f"{'Discharge' if k % 2 == 0 else 'Charge'} at {rate:.2f}C for {seconds} seconds")
+        if rng.uniform() < 0.3:
+            steps.append(f"Rest for {int(rng.integers(30, 181))} seconds")
+    return steps
+
+
+def batch_b(root):
+    """Twenty-sixth batch (prefix bb, so as not to clash with the bench's b1-b8), made blind (a
+    helper session that did not read the diagnosis code, judged once on the binary /work/bin/s13gain
+    before anything else). The Chen 2020 cell throughout. Effects at small size (a +-6 mV OCV
+    hysteresis in an OCV step test, a 4 mA leak across a 36 h storage rest, a 2.5 mOhm contact
+    resistance in a C/3 capacity check), a pair whose smaller member (SEI growth) lies under a larger
+    one (self-heating, temperature recorded), DFN data handed to the SPMe (8 % positive LAM in an
+    HPPC at 10 degC, cycler artefacts), a recording exported from part-way through a test (the cell
+    still relaxing from an unrecorded 1.5C discharge, cycler artefacts), a DFN control under a
+    frequency-regulation duty at 5 degC (cycler artefacts), and one effect outside the tool's listed
+    candidates: a vehicle logger whose voltage channel is time-stamped 2 s late against its current
+    channel (unsynchronised CAN messages), in a WLTP-like drive. Lithium and active-material loss
+    are accepted only by their own words (SEI also by a lithium-inventory stand-in); the leak by
+    the words an engineer would use (self-discharge, leak, soft short, current offset); the
+    unrelaxed start by "unrelaxed" / "recording condition" / "history" words; the time lag by the
+    words for a logging delay or misalignment (not the bare "lag", which an RC or hysteresis
+    verdict could carry). Each note gives the effect's size on its own where a replay measures it.
+
+    First run (2026-11-27, binary /work/bin/s13gain, sha256 d244018ba4b5, load average 7.47 before,
+    8.55 after (1 min), on 2 cores shared with other work; 133 s in all): 5 of 8 by the judge, 6 on
+    substance. bb1 hysteresis 6.06 mV (truth 6), 3.92 -> 1.00 mV, 5 s; bb2 a leak of 4.0 mA (truth 4),
+    15.24 -> 0.99 mV, 5 s; bb4 positive LAM 8 % (fraction 0.6119, truth 0.6118), 20.13 -> 1.33 mV, then
+    no missing physics (the SPMe's own 1.3 mV), 9 s; bb7 no missing physics (1.04 mV, noise 1.03), 1 s;
+    bb8 a tie of contact 2.50 mOhm (truth 2.5) or kinetics, 3.56 -> 0.99 mV, 3 s. bb6 was named right
+    in round 1 ("Recording condition: an unrelaxed start", a load of 7.66 A for 846 s before the first
+    point; initial SOC 40.8 %), 27.03 -> 0.98 mV, 20 s, but the judge's verdict pattern has no
+    "Recording condition" and took round 2's "No missing physics" as the first verdict: a judge
+    artefact. Missed: bb5 refused by the recording check as a sign error ("the voltage rises when the
+    discharge current rises at 23 of 27 current steps: is the current charge-positive?"), 0 s; bb3
+    "unexplained" (14.67 mV; closest irreversible plating, 7.60 mV, ln BF -4.3; the thermal
+    candidate alone at the truth, h 11.96, ambient 308.10 K, made the hold-out worse, 22.93 -> 30.19
+    mV, so no pair with it was formed), 90 s. Correction to bb3's note, found after judging:
+    the SEI is the LARGER member, not the smaller: replaying the recorded current (1 s
+    zero-order hold of the 15 s log, so about 7.8 mV of the truth's own replay is interpolation),
+    the isothermal SPM with the SEI leaves 15.5 mV, the thermal SPM without it 24.9 mV, the nominal
+    SPM 21.4 mV (the two effects partly cancel); the note's experiment-based numbers (15.06 and
+    41.85 mV) hold shifted cut-offs. The case itself is unchanged."""
+    cap = 5.0
+    # bb1: negative OCP hysteresis +-6 mV (small), an OCV step test (C/5 steps of 10 % with 45 min rests, down then up), SPMe at 20 degC
+    p = chen()
+    p.update({"Ambient temperature [K]": 293.15, "Initial temperature [K]": 293.15})
+    with_negative_hysteresis(p, 0.006)
+    steps = (["Rest for 30 minutes"] + ["Discharge at C/5 for 30 minutes", "Rest for 45 minutes"] * 6
+             + ["Charge at C/5 for 30 minutes", "Rest for 45 minutes"] * 6)
+    write_case(root, "bb1_hysteresis_6mV_ocv_step_test_20C_spme",
+               lion.SPMe(options={"open-circuit potential": ("one-state hysteresis", "single")}), p, steps,
+               {"effect": "hysteresis", "candidate_model": "spme", "accept": ["hysteresis"], "ambient_temperature_K": 293.15,
+                "note": "one-state hysteresis of the negative OCP, +-6 mV (decay rate 10, initial state 0: the cell starts in the "
+                        "middle), a small effect, at 20 degC (isothermal, not recorded). An OCV step test from 85 % SOC: 30 min rest, 6 x "
+                        "(C/5 for 30 min, 45 min rest) down to about 25 %, then 6 x (C/5 charge for 30 min, 45 min rest) back up; 15.5 h, "
+                        "sampled every 20 s, 1 mV noise; SPMe (one-state hysteresis) data and the SPMe without it. The rest voltages "
+                        "after charge steps sit about 12 mV above those after discharge steps at the same SOC"},
+               initial_soc=0.85, seed=301, period=20, compare=lion.SPMe())
+    # bb2: a 4 mA leak (soft short) the cycler does not see, across a 36 h storage rest at 90 % SOC, SPM at 30 degC
+    leak = 0.004
+    p = chen()
+    p.update({"Ambient temperature [K]": 303.15, "Initial temperature [K]": 303.15})
+    seen = ["Rest for 20 minutes", "Charge at C/3 until 4.1 V", "Hold at 4.1 V until C/20", "Rest for 36 hours (10 minute period)",
+            "Discharge at C/3 until 3.0 V", "Rest for 1 hour"]
+    inside = [f"Discharge at {leak} A for 20 minutes", f"Charge at {cap / 3 - leak:.4f} A until 4.1 V",
+              f"Hold at 4.1 V until {1000 * (cap / 20 - leak):.0f} mA", f"Discharge at {leak} A for 36 hours (10 minute period)",
+              f"Discharge at {cap / 3 + leak:.4f} A until 3.0 V", f"Discharge at {leak} A for 1 hour"]
+    write_case(root, "bb2_leak_4mA_36h_storage_rest_30C_spm", lion.SPM(), p, inside,
+               {"effect": "self_discharge", "candidate_model": "spm",
+                "accept": ["self-discharge", "self discharge", "leak", "soft short", "internal short", "short circuit", "current offset"],
+                "ambient_temperature_K": 303.15,
+                "note": "a 4 mA internal leak (a soft short of about 1 kOhm; C/1250) that the cycler does not measure: the electrodes "
+                        "carry the recorded current plus 4 mA of discharge throughout, so over the 36 h storage rest the cell loses "
+                        "0.144 A h (2.9 % SOC) and its rest voltage sags, and the C/3 discharge after it ends earlier. A small leak, "
+                        "seen mainly through a long calendar rest. At 30 degC (isothermal, not recorded), from 40 % SOC: 20 min rest, "
+                        "C/3 CC-CV to 4.1 V and C/20 (as the cycler sees it), 36 h storage rest logged every 10 min, C/3 to 3.0 V, "
+                        "1 h rest; sampled every 10 s elsewhere, 1 mV noise; SPM data and model"},
+               initial_soc=0.4, seed=302, period=10, compare=lion.SPM(), leak_A=leak, compare_steps=seen)
+    # bb3: reaction-limited SEI growth (the smaller effect) under lumped self-heating (h = 12, temperature recorded), 4 cycles 2C / 1C CC-CV, SPM at 35 degC
+    p = chen()
+    p.update({"Ambient temperature [K]": 308.15, "Initial temperature [K]": 308.15, "Total heat transfer coefficient [W.m-2.K-1]": 12.0})
+    p = scaled(p, "SEI reaction exchange current density [A.m-2]", 100.0)
+    cycle = ["Discharge at 2C until 2.7 V", "Rest for 15 minutes", "Charge at 1C until 4.2 V", "Hold at 4.2 V until C/10", "Rest for 15 minutes"]
+    steps = ["Rest for 10 minutes"] + cycle * 4
+    name = "bb3_sei_under_selfheating_4_cycles_2C_35C_recorded_spm"
+    write_case(root, name, lion.SPM(options={"SEI": "reaction limited", "thermal": "lumped"}), p, steps,
+               {"effect": "sei_growth+thermal", "candidate_model": "spm",
+                "accept": ["SEI|inventory|lithium loss|cyclable", "thermal|heat|self-heating"], "ambient_temperature_K": 308.15,
+                "note": "two effects: lumped self-heating (h = 12 W/(m2 K), the larger) and reaction-limited SEI growth (SEI reaction "
+                        "exchange current 1.5e-5 A/m2, 100x Chen 2020's: an accelerated ageing test; SEI growth activation energy 0 as "
+                        "in the set, so the SEI does not speed up as the cell warms), at 35 degC ambient. From full: 10 min rest, 4 x "
+                        "(2C to 2.7 V, 15 min rest, 1C CC-CV to 4.2 V and C/10, 15 min rest); temperature recorded (0.05 K noise, 0.1 K "
+                        "resolution); sampled every 15 s, 1 mV noise; SPM (lumped thermal, SEI) data handed to the isothermal SPM "
+                        "without SEI. A growing lithium-inventory loss is the SEI's nearest stand-in and is accepted. The replays below "
+                        "(sei_alone_rmse_mV: the SPM with the SEI and without the heating; thermal_alone_rmse_mV: the thermal SPM without "
+                        "the SEI) give what each missing effect leaves on its own"},
+               initial_soc=1.0, temperature=True, seed=303, period=15, cycler={"quantum_K": 0.1, "quantum_V": 1e-4, "quantum_A": 1e-4},
+               compare=lion.SPM())
+    p0 = chen(); p0.update({"Ambient temperature [K]": 308.15, "Initial temperature [K]": 308.15})
+    replay_rmse(root, name, lion.SPM(options={"SEI": "reaction limited"}), scaled(p0.copy(), "SEI reaction exchange current density [A.m-2]", 100.0),
+                steps, 1.0, "sei_alone_rmse_mV", period=15)
+    p0.update({"Total heat transfer coefficient [W.m-2.K-1]": 12.0})
+    replay_rmse(root, name, lion.SPM(options={"thermal": "lumped"}), p0, steps, 1.0, "thermal_alone_rmse_mV", period=15)
+    # bb4: 8 % positive LAM in an HPPC at 10 degC, cycler artefacts, DFN data handed to the SPMe
+    p = scaled(chen(), "Positive electrode active material volume fraction", 0.92)
+    p.update({"Ambient temperature [K]": 283.15, "Initial temperature [K]": 283.15})
+    pulses = ["Discharge at 2C for 10 seconds", "Rest for 40 seconds", "Charge at 1.5C for 10 seconds", "Rest for 40 seconds"]
+    steps = ["Rest for 10 minutes"]
+    for _ in range(4):
+        steps += ["Discharge at C/3 for 30 minutes", "Rest for 40 minutes"] + pulses
+    steps += ["Discharge at C/3 until 2.8 V", "Rest for 40 minutes"]
+    name = "bb4_lam_positive_8pct_hppc_10C_cycler_dfn_data_spme"
+    write_case(root, name, lion.DFN(), p, steps,
+               {"effect": "active_material_loss", "candidate_model": "spme", "accept": ["active material"], "ambient_temperature_K": 283.15,
+                "note": "8 % loss of positive active material (volume fraction 0.665 -> 0.6118, the set's initial concentrations), at "
+                        "10 degC (isothermal, not recorded). DFN data handed to the SPMe (a richer model than the candidate): "
+                        "electrolyte transport (SPMe -> DFN) named beside the LAM is right too, but the first verdict must name the "
+                        "LAM. From full: 10 min rest, 4 x (C/3 for 30 min, 40 min rest, 2C discharge 10 s, 40 s rest, 1.5C charge 10 "
+                        "s, 40 s rest; the first 1.5C charge pulse, at about 83 % SOC, reaches 4.29 V), C/3 to 2.8 V, 40 min rest; cycler artefacts (irregular sampling, 3 mA current noise, 0.1 mV "
+                        "resolution), 1 mV noise. spme_with_lam_rmse_mV: the SPMe with the true LAM (the SPMe's own error against "
+                        "the DFN); dfn_nominal_rmse_mV: the nominal DFN (what the LAM alone does)"},
+               initial_soc=1.0, seed=304, cycler=CYCLER, compare=lion.SPMe())
+    replay_rmse(root, name, lion.SPMe(), p.copy(), steps, 1.0, "spme_with_lam_rmse_mV")
+    p0 = chen(); p0.update({"Ambient temperature [K]": 283.15, "Initial temperature [K]": 283.15})
+    replay_rmse(root, name, lion.DFN(), p0, steps, 1.0, "dfn_nominal_rmse_mV")
+    # bb5: the logger stamps the voltage 2 s late against the current (unsynchronised channels), WLTP-like drive, SPMe at 18 degC
+    p = chen()
+    p.update({"Ambient temperature [K]": 291.15, "Initial temperature [K]": 291.15})
+    steps = ["Rest for 5 minutes", pybamm.step.current(wltp_like_current(305, peak_C=2.5, regen_C=1.0)), "Rest for 10 minutes",
+             "Charge at 1C for 8 minutes or until 4.2 V", "Rest for 10 minutes"]
+    write_case(root, "bb5_voltage_logged_2s_late_wltp_drive_18C_spme", lion.SPMe(), p, steps,
+               {"effect": "voltage_time_lag", "candidate_model": "spme",
+                "accept": ["delay", "latency", "misalign", "synchron", "time shift", "time offset", "timestamp", "time stamp", "time lag",
+                           "time base", "time axis"],
+                "ambient_temperature_K": 291.15,
+                "note": "a logging fault, not a cell property and not among the tool's candidates: the vehicle logger stamps the "
+                        "voltage 2 s later than the current (the two come in unsynchronised CAN messages), so each recorded voltage "
+                        "is the cell's voltage 2 s earlier (linear interpolation of the 1 s simulation; the first 2 s hold the "
+                        "first value). The cell itself is nominal. An engineer would call it a time delay / misalignment / "
+                        "synchronisation error between the channels. At 18 degC (isothermal, not recorded), from 70 % SOC: 5 min "
+                        "rest, a WLTP-like drive (wltp_like_current seed 305, peak 2.5C, regeneration to 1C, current linear between "
+                        "1 s points, 1800 s), 10 min rest, 1C charge for 8 min or to 4.2 V, 10 min rest (a first draft from 85 % SOC "
+                        "with a 10 min charge reached 4.5 V and was changed before judging); sampled every 1 s, 1 mV noise; SPMe "
+                        "data and model. effect_rmse_mV is what the delay alone does"},
+               initial_soc=0.7, seed=305, period=1, compare=lion.SPMe(),
+               post=lambda t, i, v: np.interp(t - 2.0, t, v))
+    # bb6: a recording exported from part-way through a test: it starts in the rest after an unrecorded 1.5C discharge, cycler artefacts, SPMe at 15 degC
+    p = chen()
+    p.update({"Ambient temperature [K]": 288.15, "Initial temperature [K]": 288.15})
+    steps = ["Discharge at 1.5C for 20 minutes", "Rest for 1 hour", "Charge at C/2 until 4.2 V", "Hold at 4.2 V until C/20", "Rest for 1 hour",
+             "Discharge at 1C for 30 minutes", "Rest for 1 hour"]
+    name = "bb6_unrelaxed_start_after_unrecorded_1p5C_discharge_15C_cycler_spme"
+    write_case(root, name, lion.SPMe(), p, steps,
+               {"effect": "unrelaxed_start", "candidate_model": "spme",
+                "accept": ["unrelaxed", "not relaxed", "recording condition", "history", "relaxing", "part-way", "partway"],
+                "ambient_temperature_K": 288.15,
+                "note": "a recording condition, not a cell property: the file was exported from part-way through a test, and its "
+                        "first point is 1e-13 s after an unrecorded 1.5C discharge of 20 min (90 -> 40 % SOC) ended, so the cell "
+                        "starts the recorded 1 h rest with 1.5C concentration gradients in its particles and electrolyte, the "
+                        "voltage recovering by tens of mV. The cell itself is nominal. Recorded: 1 h rest, C/2 CC-CV to 4.2 V and "
+                        "C/20, 1 h rest, 1C for 30 min, 1 h rest; at 15 degC (isothermal, not recorded); cycler artefacts "
+                        "(irregular sampling, 3 mA current noise, 0.1 mV resolution), 1 mV noise; SPMe data and model. "
+                        "candidate_rmse_mV runs the same unrecorded discharge (so it is only the noise); relaxed_start_rmse_mV is "
+                        "the nominal SPMe started at rest, its initial SOC the best of 38-46 % in 0.2 % steps: what the unrelaxed "
+                        "start does when the initial SOC is fitted"},
+               initial_soc=0.9, seed=306, cycler=CYCLER, compare=lion.SPMe(), skip_steps=1)
+    best = None
+    for soc in np.arange(0.38, 0.4605, 0.002):
+        replay_rmse(root, name, lion.SPMe(), p.copy(), steps[1:], float(soc), "relaxed_start_rmse_mV")
+        with open(os.path.join(root, name, "truth.json")) as f:
+            truth = json.load(f)
+        best = truth["relaxed_start_rmse_mV"] if best is None else min(best, truth["relaxed_start_rmse_mV"])
+    truth["relaxed_start_rmse_mV"] = best
+    with open(os.path.join(root, name, "truth.json"), "w") as f:
+        json.dump(truth, f, indent=1)
+    # bb7: control, DFN under a frequency-regulation duty around 50 % SOC at 5 degC, cycler artefacts
+    p = chen()
+    p.update({"Ambient temperature [K]": 278.15, "Initial temperature [K]": 278.15})
+    steps = ["Rest for 10 minutes"] + regulation_blocks(307, 24) + ["Rest for 30 minutes"]
+    write_case(root, "bb7_control_frequency_regulation_5C_cycler_dfn", lion.DFN(), p, steps,
+               {"effect": "none", "candidate_model": "dfn", "accept": ["no missing"], "ambient_temperature_K": 278.15,
+                "note": "negative control at 5 degC (isothermal, not recorded): DFN data and model, nothing concealed. A "
+                        "frequency-regulation (grid-service) duty from 50 % SOC: 10 min rest, 24 alternating discharge / charge blocks "
+                        "of 60-240 s at 0.2-1C with occasional 30-180 s pauses, 30 min rest; cycler artefacts (irregular sampling, "
+                        "3 mA current noise, 0.1 mV resolution), 1 mV noise"},
+               initial_soc=0.5, seed=307, cycler=CYCLER, compare=lion.DFN())
+    # bb8: 2.5 mOhm contact resistance (about 4 mV at C/3), a C/3 capacity check with CC-CV charge, SPM at 40 degC
+    p = chen()
+    p.update({"Ambient temperature [K]": 313.15, "Initial temperature [K]": 313.15})
+    p.update({"Contact resistance [Ohm]": 0.0025}, check_already_exists=False)
+    steps = ["Rest for 10 minutes", "Charge at C/3 until 4.2 V", "Hold at 4.2 V until C/20", "Rest for 1 hour", "Discharge at C/3 until 2.5 V",
+             "Rest for 1 hour"]
+    write_case(root, "bb8_contact_2p5mOhm_c3_capacity_check_40C_spm", lion.SPM(options={"contact resistance": "true"}), p, steps,
+               {"effect": "contact_resistance", "candidate_model": "spm", "accept": ["contact", "series resistance", "ohmic"],
+                "ambient_temperature_K": 313.15,
+                "note": "a 2.5 mOhm contact resistance (a slightly worn fixture contact; 4.2 mV at C/3), a small effect, at 40 degC "
+                        "(isothermal, not recorded), in a low-rate capacity check where it has no pulse to show itself by: from 30 % "
+                        "SOC, 10 min rest, C/3 CC-CV to 4.2 V and C/20, 1 h rest, C/3 to 2.5 V, 1 h rest; sampled every 10 s, 1 mV "
+                        "noise; SPM data and model"},
+               initial_soc=0.3, seed=308, period=10, compare=lion.SPM())
+
+
+
+BATCHES = {"u": batch_u, "v": batch_v, "w": batch_w, "x": batch_x, "y": batch_y, "z": batch_z, "q": batch_q, "r": batch_r, "s": batch_s, "t": batch_t, "p": batch_p, "o": batch_o, "n": batch_n, "m": batch_m, "l": batch_l, "k": batch_k, "j": batch_j, "i": batch_i, "h": batch_h, "f": batch_f, "e": batch_e, "g": batch_g, "d": batch_d, "c": batch_c, "a": batch_a, "b": batch_b}
 
 if __name__ == "__main__":
     root = sys.argv[1] if len(sys.argv) > 1 else "out/unseen-cases"
