@@ -70,17 +70,25 @@ impl Candidate {
         }
     }
 
-    /// Why fitted values describe dynamics faster than the recording's sampling can resolve
-    /// (an RC element whose time constant is shorter than the median time step cannot be
-    /// told from a series resistance).
+    /// Why fitted values describe dynamics faster than the recording's sampling can resolve:
+    /// an RC element whose time constant is shorter than the median time step cannot be told
+    /// from a series resistance, and a voltage channel's delay shorter than it only reshapes
+    /// the first sample after each current step (standing in for whatever happens there).
     pub fn unresolved(self, names: &[String], values: &[f64], rec: &Recording) -> Option<String> {
-        if self != Candidate::RcDynamics {
-            return None;
-        }
         let get = |path: &str| names.iter().position(|n| n == path).map(|k| values[k]);
-        let tau = get("cell.rc_resistance")? * get("cell.rc_capacitance")?;
         let step = rec.stats(1.0).median_step;
-        (tau < step).then(|| format!("time constant {tau:.3} s is shorter than the {step:.2} s sampling step: unresolved, it acts as a series resistance"))
+        match self {
+            Candidate::RcDynamics => {
+                let tau = get("cell.rc_resistance")? * get("cell.rc_capacitance")?;
+                (tau < step).then(|| format!("time constant {tau:.3} s is shorter than the {step:.2} s sampling step: unresolved, it acts as a series resistance"))
+            }
+            Candidate::VoltageDelay => {
+                let tau = get(VOLTAGE_DELAY)?;
+                let step = step_sampling(rec).unwrap_or(step);
+                (tau.abs() < step).then(|| format!("a delay of {tau:.3} s is shorter than the {step:.2} s sampling step after current steps: unresolved, it only reshapes the first sample after each step"))
+            }
+            _ => None,
+        }
     }
 
     /// A more specific name from the fitted values where the candidate has one (which
@@ -124,6 +132,24 @@ impl Candidate {
             _ => self.name().to_string(),
         }
     }
+}
+
+/// Samples after a current step over which [`step_sampling`] takes its median time step.
+const AFTER_A_STEP: usize = 5;
+
+/// The median time step (s) of the first [`AFTER_A_STEP`] samples after each current step (the
+/// current moving by a fifth of its peak between two samples, or a repeated time): how finely
+/// the recording resolves a step's response (a cycler logs densely there); `None` without steps.
+fn step_sampling(rec: &Recording) -> Option<f64> {
+    let (t, i) = (&rec.time, &rec.current);
+    let peak = i.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let mut steps: Vec<f64> = Vec::new();
+    for k in 1..t.len() {
+        if (i[k] - i[k - 1]).abs() > 0.2 * peak {
+            steps.extend((k..(k + AFTER_A_STEP).min(t.len() - 1)).map(|m| t[m + 1] - t[m]).filter(|dt| *dt > 0.0));
+        }
+    }
+    (!steps.is_empty()).then(|| crate::stats::median(&steps))
 }
 
 /// Relative difference (-) within which two electrodes' fitted losses of active material
@@ -184,5 +210,25 @@ mod tests {
         assert!(name(-0.05, -0.052).contains("reading 5.1 % high"));
         assert!(name(0.12, 0.02).contains("negative electrode (12 %"));
         assert!(name(0.001, 0.001).contains("positive electrode (0 %"));
+    }
+
+    /// A delay shorter than the sampling after current steps is unresolved; one longer is not.
+    #[test]
+    fn a_delay_shorter_than_the_sampling_after_steps_is_unresolved() {
+        // Pulses logged every 1 s for their first 5 s, then every 30 s.
+        let (mut time, mut current) = (Vec::new(), Vec::new());
+        let mut t = 0.0;
+        for k in 0..6 {
+            for dt in [1.0, 1.0, 1.0, 1.0, 1.0, 30.0, 30.0, 30.0, 30.0, 30.0, 30.0] {
+                time.push(t);
+                current.push(if k % 2 == 0 { 5.0 } else { 0.0 });
+                t += dt;
+            }
+        }
+        let n = time.len();
+        let rec = Recording { time, current, voltage: vec![3.7; n], temperature: None };
+        let names = vec![VOLTAGE_DELAY.to_string()];
+        assert!(Candidate::VoltageDelay.unresolved(&names, &[0.006], &rec).is_some_and(|why| why.contains("1.00 s")));
+        assert_eq!(Candidate::VoltageDelay.unresolved(&names, &[2.0], &rec), None);
     }
 }
