@@ -74,6 +74,9 @@ fn run(cli: Cli) -> Result<(), Error> {
             if max_rounds == 0 {
                 return Err(Error::invalid("--max-rounds", 0.0, "must be at least 1"));
             }
+            if let Some(b) = time_budget.filter(|b| !(b.is_finite() && *b > 0.0)) {
+                return Err(Error::invalid("--time-budget", b, "must be a positive number of seconds"));
+            }
             let p = load_parameters(params.as_deref(), &overrides)?;
             let staged = OutputDir::create(&out, &[Some(data.as_path()), params.as_deref()].into_iter().flatten().collect::<Vec<_>>())?;
             let rec = cellstudio::data::cycler::read_recording(&data, &Default::default()).map_err(|e| e.input("--data"))?;

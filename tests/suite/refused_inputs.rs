@@ -98,6 +98,7 @@ fn an_input_file_that_does_not_exist_is_named_by_its_key_or_flag() {
     fails_with(&run(&s.0, &["simulate", "--protocol", "nope.toml"]), &["`--protocol`", "`nope.toml`"]);
     fails_with(&run(&s.0, &["eis", "--fit", "nope.csv"]), &["`--fit`", "`nope.csv`"]);
     fails_with(&run(&s.0, &["diagnose", "--data", "nope.csv"]), &["`--data`", "`nope.csv`"]);
+    fails_with(&run(&s.0, &["diagnose", "--data", seed.to_str().unwrap(), "--time-budget", "0"]), &["`--time-budget`", "positive"]);
     fails_with(&run(&s.0, &["data", "inspect", "nope.csv"]), &["`FILE`", "`nope.csv`"]);
     // An output folder that cannot be made is named as the user wrote it, not by the
     // temporary folder beside it.
