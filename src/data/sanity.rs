@@ -39,6 +39,14 @@ pub struct RecordingStats {
 const SIGN_LAGS: isize = 5;
 
 impl Recording {
+    /// The points `k` where the current moves by more than a fifth of its peak from point
+    /// `k - 1`: the current steps whose responses the sign check and a delay's resolution read.
+    pub fn large_current_steps(&self) -> Vec<usize> {
+        let i = &self.current;
+        let peak = i.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        (1..i.len()).filter(|&k| (i[k] - i[k - 1]).abs() > 0.2 * peak).collect()
+    }
+
     /// Summary numbers of the recording against nominal capacity `capacity` (A h).
     pub fn stats(&self, capacity: f64) -> RecordingStats {
         let (t, i, v) = (&self.time, &self.current, &self.voltage);
@@ -168,19 +176,19 @@ impl Recording {
     /// ```
     pub fn sign_finding(&self) -> Option<Finding> {
         let (i, v) = (&self.current, &self.voltage);
-        let peak = i.iter().fold(0.0f64, |m, x| m.max(x.abs()));
-        // A step: the current moves by a fifth of its peak between two samples; its response
-        // is the voltage's change `lag` samples later. At each lag: the steps counted, those
-        // whose voltage rose with the discharge current, and the summed `di dv` (A V).
+        // A step's response is the voltage's change `lag` samples later. At each lag: the
+        // steps counted, those whose voltage rose with the discharge current, and the summed
+        // `di dv` (A V).
+        let large = self.large_current_steps();
         let response = |lag: isize| {
             let (mut steps, mut rising, mut sum) = (0usize, 0usize, 0.0f64);
-            for k in 1..i.len() {
+            for &k in &large {
                 let m = k as isize + lag;
                 if m < 1 || m as usize >= v.len() {
                     continue;
                 }
                 let (di, dv) = (i[k] - i[k - 1], v[m as usize] - v[m as usize - 1]);
-                if di.abs() > 0.2 * peak && dv != 0.0 {
+                if dv != 0.0 {
                     steps += 1;
                     rising += usize::from(di * dv > 0.0);
                     sum += di * dv;

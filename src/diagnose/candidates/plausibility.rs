@@ -138,16 +138,13 @@ impl Candidate {
 const AFTER_A_STEP: usize = 5;
 
 /// The median time step (s) of the first [`AFTER_A_STEP`] samples after each current step (the
-/// current moving by a fifth of its peak between two samples, or a repeated time): how finely
+/// current moving by a fifth of its peak, [`Recording::large_current_steps`]): how finely
 /// the recording resolves a step's response (a cycler logs densely there); `None` without steps.
 fn step_sampling(rec: &Recording) -> Option<f64> {
-    let (t, i) = (&rec.time, &rec.current);
-    let peak = i.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let t = &rec.time;
     let mut steps: Vec<f64> = Vec::new();
-    for k in 1..t.len() {
-        if (i[k] - i[k - 1]).abs() > 0.2 * peak {
-            steps.extend((k..(k + AFTER_A_STEP).min(t.len() - 1)).map(|m| t[m + 1] - t[m]).filter(|dt| *dt > 0.0));
-        }
+    for k in rec.large_current_steps() {
+        steps.extend((k..(k + AFTER_A_STEP).min(t.len() - 1)).map(|m| t[m + 1] - t[m]).filter(|dt| *dt > 0.0));
     }
     (!steps.is_empty()).then(|| crate::stats::median(&steps))
 }
