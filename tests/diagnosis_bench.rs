@@ -949,3 +949,26 @@ fn c6_an_unrelaxed_start_left_below_the_floor_is_still_pointed_at_spme() {
     let words = report::verdict_in_words(last);
     assert!(words.starts_with("No missing physics") && words.contains("not at rest when the recording began"), "{words}");
 }
+
+#[test]
+fn ab4_a_model_that_breaks_down_early_is_not_called_complete_spme() {
+    // Blind batch ab: lumped self-heating (h = 10, recorded) through 3C fast charges from
+    // 10 % SOC at 20 degC. The user's isothermal SPMe empties its electrolyte 28 s into the
+    // first 3C charge and breaks down 628 s in; only the opening rest (3 % of the recording)
+    // was left to diagnose, and its first run said "No missing physics". A model that
+    // cannot follow the recording is not complete: the verdict is now unexplained and says
+    // where it broke down. (The self-heating itself is not named: see the README.)
+    let name = "diagnosis-extra/ab4_thermal_h10_recorded_fast_charge_cycles_20C_spme";
+    let t = truth(name);
+    let rec = Recording::from_csv(&case_dir(name).join("recording.csv")).unwrap();
+    let mut p = chen2020();
+    (p.thermal.ambient_temperature, p.thermal.initial_temperature) = (t.ambient, t.ambient);
+    let rounds = diagnose_rounds(&rec, &p, &DiagnoseOptions::new(ModelSpec::new(t.model, Submodels::default())), 3).unwrap();
+    let d = &rounds[0];
+    let b = d.broke_down.as_ref().expect("the breakdown is recorded");
+    assert!((b.at_s - 628.0).abs() < 2.0 && b.kept_points < b.recorded_points / 10, "{b:?}");
+    assert!(matches!(d.verdict, cellstudio::diagnose::select::Verdict::BrokeDown), "{:?}: {}", d.verdict, d.summary);
+    let words = report::verdict_in_words(d);
+    assert!(words.starts_with("Unexplained: the user's model breaks down 628 s"), "{words}");
+    assert!(!judged(&t, &rounds), "self-heating is not named yet; when it is, turn this into a judged case");
+}

@@ -1,6 +1,8 @@
 //! The user's model fitted to the recording before any candidate: the initial state of charge
 //! as a nuisance, and a recording cut where the model breaks down.
 
+use serde::Serialize;
+
 use super::{DiagnoseOptions, FitOutcome, Features, Split, describe, refit};
 use crate::data::Recording;
 use crate::error::Error;
@@ -19,6 +21,20 @@ fn soc_starts(p: &ParameterSet, v: f64) -> Vec<f64> {
     if (of_set - of_voltage).abs() < 0.02 { vec![of_set] } else { vec![of_set, of_voltage] }
 }
 
+/// Where the user's model broke down on the recording: the recording is diagnosed only up to
+/// a little before.
+#[derive(Clone, Debug, Serialize)]
+pub struct Breakdown {
+    /// Time into the recording (s) at which the model broke down.
+    pub at_s: f64,
+    /// Why, as the solver said.
+    pub reason: String,
+    /// The last diagnosed time (s) and the points kept of the recording's.
+    pub diagnosed_to_s: f64,
+    pub kept_points: usize,
+    pub recorded_points: usize,
+}
+
 /// The user's model fitted to a recording.
 pub(super) struct BaselineFit {
     pub fit: FitOutcome,
@@ -28,6 +44,8 @@ pub(super) struct BaselineFit {
     /// The starting points the fit tried (values of `fitted`, in order): a candidate's refit
     /// may need them where the user's fitted values compensated for the missing effect.
     pub starts: Vec<Vec<f64>>,
+    /// Where the model broke down on the whole recording, when it did.
+    pub broke_down: Option<Breakdown>,
 }
 
 /// The user's model fitted (with the nuisance initial state): on failure part-way, the
@@ -43,6 +61,7 @@ pub(super) fn fit_baseline(data: &mut Recording, base: &ParameterSet, options: &
         starts = socs.iter().map(|s| user.iter().copied().chain([*s]).collect()).collect();
     }
     const ATTEMPTS: usize = 3;
+    let mut broke_down: Option<Breakdown> = None;
     for attempt in 0..ATTEMPTS {
         let features = Features::of(data);
         let split = Split::blocks(&features.valid, options.blocks, options.holdout_every);
@@ -56,17 +75,22 @@ pub(super) fn fit_baseline(data: &mut Recording, base: &ParameterSet, options: &
         match refit::fit_and_score(label, options.spec, base.clone(), fitted.clone(), 0, &refit::Starts::at(starts.clone()), data, &split, &options.fit) {
             Ok(fit) => {
                 let starts = if starts.is_empty() { vec![fitted.iter().map(|p| p.initial).collect()] } else { starts };
-                return Ok(BaselineFit { fit, split, fitted, starts });
+                return Ok(BaselineFit { fit, split, fitted, starts, broke_down });
             }
             Err(Error::Solver { t, reason }) if attempt + 1 < ATTEMPTS && t > 0.0 => {
                 // Cut with a margin: the fit of the initial state explores around the start.
                 let t_cut = data.time[0] + 0.95 * t;
                 let keep = data.time.iter().position(|x| *x >= t_cut - 1e-9).unwrap_or(data.time.len());
+                let to = data.time[keep.saturating_sub(1).min(data.time.len() - 1)];
                 notes.push(format!(
-                    "The user's model broke down {t:.0} s into the recording ({reason}); the first {keep} of {} points (to {:.0} s) are diagnosed. A model that cannot follow the recording is itself evidence of a mismatch there.",
+                    "The user's model broke down {t:.0} s into the recording ({reason}); the first {keep} of {} points (to {to:.0} s) are diagnosed. A model that cannot follow the recording is itself evidence of a mismatch there.",
                     data.time.len(),
-                    data.time[keep.saturating_sub(1).min(data.time.len() - 1)]
                 ));
+                // The first breakdown is the recording's; a later one only cuts further.
+                let recorded_points = broke_down.as_ref().map_or(data.time.len(), |b| b.recorded_points);
+                let at_s = broke_down.as_ref().map_or(t, |b| b.at_s.min(t));
+                let reason = broke_down.take().map_or(reason, |b| b.reason);
+                broke_down = Some(Breakdown { at_s, reason, diagnosed_to_s: to, kept_points: keep, recorded_points });
                 data.time.truncate(keep);
                 data.current.truncate(keep);
                 data.voltage.truncate(keep);

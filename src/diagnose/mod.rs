@@ -22,6 +22,7 @@
 mod ageing;
 pub mod backward;
 mod baseline;
+pub use baseline::Breakdown;
 pub mod candidates;
 pub mod features;
 pub mod locate;
@@ -87,6 +88,9 @@ pub struct DiagnoseOptions {
     /// Wall time (s) after which no further round starts (`None`: no limit). A round in
     /// progress finishes; the last round says the diagnosis stopped on the budget.
     pub time_budget: Option<f64>,
+    /// Where the user's model broke down on the whole recording (found by the first round;
+    /// later rounds diagnose the same cut recording).
+    pub broke_down: Option<Breakdown>,
 }
 
 impl DiagnoseOptions {
@@ -105,6 +109,7 @@ impl DiagnoseOptions {
             fitted_baseline: None,
             pairs: true,
             time_budget: None,
+            broke_down: None,
         }
     }
 
@@ -220,6 +225,9 @@ pub struct Diagnosis {
     pub residual_after: Option<ResidualAnalysis>,
     /// Checks and events worth knowing (unit checks, truncation, temperature used).
     pub notes: Vec<String>,
+    /// Where the user's model broke down on the recording, when it did: only the part before
+    /// was diagnosed, and the verdict is never "no missing physics".
+    pub broke_down: Option<Breakdown>,
     /// On the last round: effects named in earlier rounds that the final model does not need.
     pub superseded: Vec<backward::Superseded>,
     /// The verdict in plain words.
@@ -254,14 +262,14 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
         base.thermal.initial_temperature = t0;
     }
     let base = &base;
-    let (baseline, split, warm, restarts) = match &options.fitted_baseline {
+    let (baseline, split, warm, restarts, broke_down) = match &options.fitted_baseline {
         Some(b) if b.voltage.len() == data.time.len() && b.names.len() == options.fitted.len() => {
             let features = Features::of(&data);
-            (b.clone(), Split::blocks(&features.valid, options.blocks, options.holdout_every), options.fitted.clone(), Vec::new())
+            (b.clone(), Split::blocks(&features.valid, options.blocks, options.holdout_every), options.fitted.clone(), Vec::new(), options.broke_down.clone())
         }
         _ => {
             let b = baseline::fit_baseline(&mut data, base, options, &mut notes)?;
-            (b.fit, b.split, b.fitted, b.starts)
+            (b.fit, b.split, b.fitted, b.starts, b.broke_down.or_else(|| options.broke_down.clone()))
         }
     };
     let data = data;
@@ -322,6 +330,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
     let structured = (analysis.structured || baseline.rmse_all > 2.0 * noise) && !no_room;
     let separate = |a: Candidate, b: Candidate| a.separating_experiment(b, &features);
     let mut verdict = select::verdict(&standings(&outcomes), structured, options.margins.min_delta_bic, separate);
+
     // No single effect: two may be hiding each other. One effect named that leaves far more
     // than the noise on held-out points may be standing in for two: a pair that beats it by
     // the same margins (against it, not the user's model) replaces it.
@@ -344,6 +353,11 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
             verdict = select::verdict(&standings(&named), true, options.margins.min_delta_bic, separate);
             outcomes.splice(0..0, named);
         }
+    }
+    // A model that broke down did not follow the rest of the recording: whatever the part
+    // before it shows, that is a mismatch left unexplained, not an absence of one.
+    if broke_down.is_some() && matches!(verdict, Verdict::NoMissingPhysics) {
+        verdict = Verdict::BrokeDown;
     }
     let residual_after = outcomes.first().and_then(|c| c.fit.as_ref()).map(|f| {
         let r: Vec<f64> = data.voltage.iter().zip(&f.voltage).map(|(d, m)| m - d).collect();
@@ -376,6 +390,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
         verdict,
         residual_after,
         notes,
+        broke_down,
         superseded: Vec::new(),
         summary: String::new(),
         seconds: 0.0,
@@ -436,6 +451,7 @@ pub fn diagnose_rounds_with(data: &Recording, base: &ParameterSet, options: &Dia
         options.spec = next.spec;
         options.fitted = next.fitted;
         options.fitted_baseline = Some(fit);
+        options.broke_down = rounds[0].broke_down.clone();
         options.pairs = false;
     }
     if rounds.iter().filter(|d| d.found).count() >= 2 {

@@ -198,6 +198,16 @@ const OCV_AT_REST: f64 = 0.5;
 const AT_THE_START: f64 = 0.5;
 const START_RELAXATION_S: f64 = 60.0;
 
+/// Why nothing is named: what the user's model leaves is noise, or below the size floor.
+fn no_missing_physics_why(d: &Diagnosis) -> String {
+    let b = &d.baseline;
+    if d.residual.structured || b.rmse_all > 1.5 * d.noise {
+        format!("what remains (RMSE {}, noise {}) is below the {} a named effect must remove", mv(b.rmse_all), mv(d.noise), mv(d.margins.size_floor(d.noise)))
+    } else {
+        format!("the residual (RMSE {}) is consistent with noise ({})", mv(b.rmse_all), mv(d.noise))
+    }
+}
+
 /// The verdict sentence(s), first in the summary.
 pub fn verdict_in_words(d: &Diagnosis) -> String {
     let b = &d.baseline;
@@ -242,6 +252,19 @@ pub fn verdict_in_words(d: &Diagnosis) -> String {
                 experiment,
                 mv(b.rmse_all),
                 mv(fa.rmse_all)
+            )
+        }
+        Verdict::BrokeDown => {
+            let b = d.broke_down.as_ref().expect("a breakdown verdict has its breakdown");
+            format!(
+                "Unexplained: the user's model breaks down {:.0} s into the recording and cannot follow the rest; only the {} of {} points before it (to {:.0} s, {:.0} % of the recording) were diagnosed, and there {}. A model that cannot follow the recording is itself evidence of a mismatch after {:.0} s, which this diagnosis could not reach.",
+                b.at_s,
+                b.kept_points,
+                b.recorded_points,
+                b.diagnosed_to_s,
+                100.0 * b.kept_points as f64 / b.recorded_points.max(1) as f64,
+                no_missing_physics_why(d),
+                b.at_s
             )
         }
         Verdict::Unexplained => {
@@ -289,11 +312,7 @@ pub fn verdict_in_words(d: &Diagnosis) -> String {
         }
         Verdict::NoMissingPhysics => {
             let above_noise = d.residual.structured || b.rmse_all > 1.5 * d.noise;
-            let why = if above_noise {
-                format!("what remains (RMSE {}, noise {}) is below the {} a named effect must remove", mv(b.rmse_all), mv(d.noise), mv(floor))
-            } else {
-                format!("the residual (RMSE {}) is consistent with noise ({})", mv(b.rmse_all), mv(d.noise))
-            };
+            let why = no_missing_physics_why(d);
             // Below the floor on held-out points, a remainder at the start still says how the
             // recording began.
             let start = above_noise.then(|| unrelaxed_start(d)).flatten();

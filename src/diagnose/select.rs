@@ -139,6 +139,9 @@ pub enum Verdict {
     Unexplained,
     /// The residual is at the noise level (or what remains is below the size floor).
     NoMissingPhysics,
+    /// The user's model broke down part-way, and the part before shows no missing physics:
+    /// the rest is a mismatch nothing was tried on, not an absence of one.
+    BrokeDown,
 }
 
 impl Verdict {

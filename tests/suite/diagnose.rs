@@ -245,6 +245,9 @@ fn a_model_that_breaks_down_part_way_is_diagnosed_up_to_there() {
     println!("{note}\n{}", d.summary);
     assert!(d.data.time.len() < rec.time.len(), "the diagnosed recording is cut");
     assert!(d.summary.contains("broke down"));
+    let b = d.broke_down.as_ref().expect("the breakdown is recorded");
+    assert_eq!((b.kept_points, b.recorded_points), (d.data.time.len(), rec.time.len()));
+    assert!(b.diagnosed_to_s < b.at_s && !matches!(d.verdict, cellstudio::diagnose::select::Verdict::NoMissingPhysics), "{b:?} {:?}", d.verdict);
 }
 
 /// A real LG M50 C/10 discharge (../shared/recordings, measured, not simulated) is not
