@@ -5,7 +5,7 @@ diagnosis was never developed on: a check that the method is general, not fitted
 time marks a current step).
 
     python -m venv .venv && .venv/bin/pip install pybamm==26.10.1.1
-    .venv/bin/python scripts/make_unseen_cases.py out/unseen-cases [batches, e.g. x; all by default]
+    .venv/bin/python scripts/make_unseen_cases.py out/unseen-cases [batch keys, comma-separated, e.g. ab or ab,x; all by default]
     BIN=target/release/cellstudio ../shared/tools/diagnosis-bench out/unseen-cases
 """
 
@@ -3280,10 +3280,180 @@ def batch_b(root):
                initial_soc=0.3, seed=308, period=10, compare=lion.SPM())
 
 
+def batch_ab(root):
+    """Twenty-seventh batch (key "ab"), made blind (a helper session that did not read the diagnosis
+    code, judged once on the binary /work/bin/s13fe4 before anything else). The Chen 2020 cell
+    throughout. Protocols earlier batches used little: a CC-CV charge with a long CV tail (to C/100),
+    a GITT with short rests (5 min at 1C, 3 min rest), a partial-cycle duty between 30 and 70 % SOC,
+    fast-charge cycles (3C CC then a CC-CV finish), a storage rest of a day between two C/3
+    check-ups, a cold day of driving, a pulse charge, and a pulse-relaxation test. Ambients from 0 to
+    45 degC. Small effects (a 0.7 mOhm contact resistance, 2.6 mV; a negative exchange current x0.87,
+    4.1 mV; an electrolyte conductivity x0.6 in a cold drive, 4.9 mV), DFN data handed to the SPMe (lithium loss), and one effect outside the tool's
+    listed candidates: a particle-size distribution (lognormal radii in both electrodes, PyBaMM's
+    "particle size": "distribution" SPM, the MPM) handed to the single-particle SPM. Lithium loss is
+    accepted only by its own words, active-material loss by "active material", the size
+    distribution only by words naming a distribution of particle sizes (not "particle diffusivity",
+    its nearest stand-in). Each effect's size on its own (the nominal candidate, or a replay, against
+    the noise-free voltage) is in truth.json (effect_rmse_mV and the replay keys).
 
-BATCHES = {"u": batch_u, "v": batch_v, "w": batch_w, "x": batch_x, "y": batch_y, "z": batch_z, "q": batch_q, "r": batch_r, "s": batch_s, "t": batch_t, "p": batch_p, "o": batch_o, "n": batch_n, "m": batch_m, "l": batch_l, "k": batch_k, "j": batch_j, "i": batch_i, "h": batch_h, "f": batch_f, "e": batch_e, "g": batch_g, "d": batch_d, "c": batch_c, "a": batch_a, "b": batch_b}
+    First run (2026-11-27, binary /work/bin/s13fe4, sha256 87e10d092afd, load average 3.32 before,
+    5.83 after (1 min), on 2 cores shared with a long test run; 475 s in all): 6 of 8 by the judge.
+    ab1 round 1 "loss of lithium inventory together with electrolyte transport (SPMe -> DFN)"
+    (initial concentrations 5069 / 47038 mol/m3: the cyclable lithium of the set less 2.76 % of it,
+    the truth's 4 % of the negative's lithium, to four figures), 12.44 -> 1.01 mV (noise 1.07), 38 s;
+    ab2 a tie "series/contact resistance 1.33 mOhm or charge-transfer kinetics" (negative rate
+    constant 5.613e-7, truth 5.638e-7), 4.11 -> 0.99 mV, 8 s, accepted on the tie; ab3 a tie
+    "contact resistance 0.69 mOhm (truth 0.7) or kinetics", 2.89 -> 1.01 mV, 9 s; ab5 "Parameter
+    mismatch: electrolyte transport properties" (conductivity factor 0.6004, truth 0.6; diffusivity
+    1.0028), 4.92 -> 0.99 mV, 322 s; ab6 "Parameter mismatch: loss of lithium inventory together with
+    loss of active material, negative electrode (10 %)" (negative fraction 0.6750, truth 0.675; the
+    refitted concentrations 20218 / 31869 hold the set's cyclable lithium to 0.01 %: the inventory
+    partner carries no loss, as concealed), 10.05 -> 1.00 mV, 64 s; ab7 no missing physics (1.03 mV,
+    noise 1.03), 0 s. Missed: ab4 "No missing physics" (1.03 mV) on the first 596 s only, 0 s: the
+    tool's isothermal SPMe broke down 628 s in ("a concentration at its limit"), 28 s into the
+    first 3C charge from 10 % SOC; PyBaMM's isothermal SPMe driven by the same recorded current
+    runs through it with the electrolyte at the negative current collector down to 5.9 mol/m3 at
+    629 s (found after judging: the fast charge nearly empties the electrolyte there), so the
+    breakdown is the tool's own model at near-depletion; its report says a model that cannot follow
+    the recording is evidence of a mismatch but the verdict is still "No missing physics", and the
+    heating (13.8 K recorded) is never tested. ab8 (the particle-size distribution, outside the
+    list) round 1 "OCV hysteresis" (24.04 mV half-width, rate 4.65; rest residual +7.6 mV after
+    discharges, -28.2 mV after charges), 15.16 -> 3.68 mV, round 2 "Unexplained structure in
+    8408-9471 s, 2460-3588 s, 6313-6677 s" (3.68 mV, noise 1.00; the closest, lithium inventory, cut
+    the hold-out by 2 %); the particle diffusivity refit ran to its bound on the negative (9.9e-13)
+    and was not named; 29 s. The stretched relaxation of a spread of particle radii has no candidate
+    of its own and the slow, direction-dependent return after the 1C charge is taken for hysteresis."""
+    # ab1: 4 % lithium loss, C/2 CC-CV to 4.2 V with a long CV tail (to C/100), then a 1C partial discharge, 35 degC, DFN data handed to the SPMe
+    p = scaled(chen(), "Initial concentration in negative electrode [mol.m-3]", 0.96)
+    p.update({"Ambient temperature [K]": 308.15, "Initial temperature [K]": 308.15})
+    steps = ["Rest for 15 minutes", "Charge at C/2 until 4.2 V", "Hold at 4.2 V until C/100", "Rest for 45 minutes",
+             "Discharge at 1C for 40 minutes", "Rest for 45 minutes"]
+    name = "ab1_inventory_4pct_cccv_long_cv_tail_35C_dfn_data_spme"
+    write_case(root, name, lion.DFN(), p, steps,
+               {"effect": "lithium_inventory_loss", "candidate_model": "spme", "accept": ["inventory", "lithium loss", "lithium lost", "cyclable"],
+                "ambient_temperature_K": 308.15,
+                "note": "4 % less lithium (initial negative concentration x0.96; the initial state set as 15 % SOC of the aged cell), at "
+                        "35 degC (isothermal, not recorded). From 15 % SOC: 15 min rest, C/2 CC-CV to 4.2 V with a long CV tail (held "
+                        "until C/100), 45 min rest, 1C for 40 min, 45 min rest; cycler artefacts (irregular sampling, 3 mA current "
+                        "noise, 0.1 mV resolution), 1 mV noise. DFN data handed to the SPMe: electrolyte transport (SPMe -> DFN) named "
+                        "beside the loss is right too, but the first verdict must name the lithium. spme_with_loss_rmse_mV: the SPMe "
+                        "with the true loss (the SPMe's own error against the DFN); dfn_nominal_rmse_mV: the nominal DFN (what the loss "
+                        "alone does)"},
+               initial_soc=0.15, seed=2701, cycler=CYCLER, compare=lion.SPMe())
+    replay_rmse(root, name, lion.SPMe(), p.copy(), steps, 0.15, "spme_with_loss_rmse_mV")
+    p0 = chen(); p0.update({"Ambient temperature [K]": 308.15, "Initial temperature [K]": 308.15})
+    replay_rmse(root, name, lion.DFN(), p0, steps, 0.15, "dfn_nominal_rmse_mV")
+    # ab2: negative exchange current x0.87 (small), a GITT with short rests (1C for 5 min, 3 min rest) down then up, 10 degC, SPMe
+    p = scaled(chen(), "Negative electrode exchange-current density [A.m-2]", 0.87)
+    p.update({"Ambient temperature [K]": 283.15, "Initial temperature [K]": 283.15})
+    steps = (["Rest for 10 minutes"] + ["Discharge at 1C for 5 minutes", "Rest for 3 minutes"] * 9 + ["Rest for 30 minutes"]
+             + ["Charge at 1C for 5 minutes", "Rest for 3 minutes"] * 4 + ["Rest for 30 minutes"])
+    write_case(root, "ab2_kinetics_negative_small_gitt_short_rests_10C_spme", lion.SPMe(), p, steps,
+               {"effect": "kinetics", "candidate_model": "spme", "accept": ["kinetic", "exchange", "charge-transfer", "charge transfer", "reaction rate"],
+                "ambient_temperature_K": 283.15,
+                "note": "negative exchange-current density x0.87, a small effect, at 10 degC (isothermal, not recorded). A GITT with "
+                        "short rests from 95 % SOC: 10 min rest, 9 x (1C for 5 min, 3 min rest) down to about 20 %, 30 min rest, 4 x "
+                        "(1C charge for 5 min, 3 min rest), 30 min rest; sampled every 2 s, 1 mV noise; SPMe data and model. "
+                        "effect_rmse_mV is what the slower kinetics alone do"},
+               initial_soc=0.95, seed=2702, period=2, compare=lion.SPMe())
+    # ab3: 0.7 mOhm contact resistance (small), a partial-cycle duty between 30 and 70 % SOC, 45 degC, SPM
+    p = chen()
+    p.update({"Ambient temperature [K]": 318.15, "Initial temperature [K]": 318.15})
+    p.update({"Contact resistance [Ohm]": 0.0007}, check_already_exists=False)
+    steps = ["Rest for 10 minutes"] + ["Charge at 0.8C for 30 minutes", "Rest for 10 minutes", "Discharge at 1C for 24 minutes", "Rest for 10 minutes"] * 4
+    write_case(root, "ab3_contact_0p7mOhm_small_partial_cycles_30_70pct_45C_spm", lion.SPM(options={"contact resistance": "true"}), p, steps,
+               {"effect": "contact_resistance", "candidate_model": "spm", "accept": ["contact", "series resistance", "ohmic"],
+                "ambient_temperature_K": 318.15,
+                "note": "a 0.7 mOhm contact resistance (3.5 mV at 1C), a small effect, at 45 degC (isothermal, not recorded), in a "
+                        "partial-cycle duty between 30 and 70 % SOC (as a stationary-storage or hybrid duty): from 30 % SOC, 10 min "
+                        "rest, 4 x (0.8C charge for 30 min, 10 min rest, 1C for 24 min, 10 min rest), 5.5 h; sampled every 5 s, 1 mV "
+                        "noise; SPM data and model"},
+               initial_soc=0.3, seed=2703, period=5, compare=lion.SPM())
+    # ab4: lumped self-heating (h = 10, temperature recorded) in two fast-charge cycles (3C CC, CC-CV finish, 1C discharge), 20 degC, SPMe
+    p = chen()
+    p.update({"Ambient temperature [K]": 293.15, "Initial temperature [K]": 293.15, "Total heat transfer coefficient [W.m-2.K-1]": 10.0})
+    cycle = ["Charge at 3C until 4.1 V", "Charge at 1C until 4.2 V", "Hold at 4.2 V until C/5", "Rest for 20 minutes",
+             "Discharge at 1C until 3.0 V", "Rest for 20 minutes"]
+    steps = ["Rest for 10 minutes"] + cycle * 2
+    write_case(root, "ab4_thermal_h10_recorded_fast_charge_cycles_20C_spme", lion.SPMe(options={"thermal": "lumped"}), p, steps,
+               {"effect": "thermal", "candidate_model": "spme", "accept": ["thermal", "self-heating", "heat"], "ambient_temperature_K": 293.15,
+                "note": "lumped self-heating, h = 10 W/(m2 K), ambient and initial 20 degC. From 10 % SOC: 10 min rest, 2 x (3C to "
+                        "4.1 V, 1C to 4.2 V, hold at 4.2 V until C/5, 20 min rest, 1C to 3.0 V, 20 min rest); temperature recorded "
+                        "(0.05 K noise, 0.1 K resolution); sampled every 2 s, 1 mV noise; SPMe (lumped thermal) data handed to the "
+                        "isothermal SPMe. effect_rmse_mV is what the heating alone does"},
+               initial_soc=0.1, temperature=True, seed=2704, period=2, cycler={"quantum_K": 0.1, "quantum_V": 1e-4, "quantum_A": 1e-4},
+               compare=lion.SPMe())
+    # ab5: electrolyte conductivity x0.6, a cold day of driving (a WLTP-like drive, a parking rest, an urban drive) at 0 degC, DFN
+    p = scaled(chen(), "Electrolyte conductivity [S.m-1]", 0.6)
+    p.update({"Ambient temperature [K]": 273.15, "Initial temperature [K]": 273.15})
+    steps = (["Rest for 10 minutes", pybamm.step.current(wltp_like_current(2705, peak_C=1.5, regen_C=0.75)), "Rest for 30 minutes"]
+             + urban_drive(2705, 20) + ["Rest for 30 minutes"])
+    write_case(root, "ab5_electrolyte_conductivity_cold_drive_0C_dfn", lion.DFN(), p, steps,
+               {"effect": "electrolyte_transport", "candidate_model": "dfn", "accept": ["electrolyte"], "ambient_temperature_K": 273.15,
+                "note": "electrolyte conductivity x0.6 (all concentrations), at 0 degC (isothermal, not recorded). From 85 % SOC: 10 "
+                        "min rest, a WLTP-like drive (wltp_like_current seed 2705, peak 1.5C, regeneration to 0.75C, current linear between "
+                        "1 s points, 1800 s), 30 min rest, an urban drive (urban_drive seed 2705, 20 segments), 30 min rest; sampled "
+                        "every 1 s, 1 mV noise; DFN data and model. effect_rmse_mV is what the conductivity alone does"},
+               initial_soc=0.85, seed=2705, period=1, compare=lion.DFN())
+    # ab6: 10 % negative LAM (lithium kept), a day's storage between two C/3 check-ups, 40 degC, SPMe
+    p = scaled(chen(), "Negative electrode active material volume fraction", 0.9)
+    moved = (0.1 * 0.75 * p["Negative electrode thickness [m]"] * p["Initial concentration in negative electrode [mol.m-3]"]
+             / (p["Positive electrode active material volume fraction"] * p["Positive electrode thickness [m]"]))
+    p.update({"Initial concentration in positive electrode [mol.m-3]": p["Initial concentration in positive electrode [mol.m-3]"] + moved,
+              "Ambient temperature [K]": 313.15, "Initial temperature [K]": 313.15})
+    check = ["Discharge at C/3 until 2.8 V", "Rest for 30 minutes", "Charge at C/3 until 4.2 V", "Hold at 4.2 V until C/20"]
+    steps = ["Rest for 10 minutes"] + check + ["Rest for 24 hours (10 minute period)"] + check + ["Rest for 30 minutes"]
+    write_case(root, "ab6_lam_negative_10pct_storage_with_checkups_40C_spme", lion.SPMe(), p, steps,
+               {"effect": "active_material_loss", "candidate_model": "spme", "accept": ["active material"], "ambient_temperature_K": 313.15,
+                "note": "10 % loss of negative active material (volume fraction 0.75 -> 0.675) with the lithium inventory kept (the "
+                        f"lithium of the lost material moved into the positive's initial concentration, +{moved:.0f} mol/m3, so "
+                        "that only the electrode's capacity changes), at 40 degC (isothermal, not recorded). Storage with check-ups, "
+                        "from 60 % SOC: 10 min rest, a check-up (C/3 to 2.8 V, 30 min rest, C/3 CC-CV to 4.2 V and C/20), a 24 h "
+                        "storage rest at full charge logged every 10 min, the same check-up, 30 min rest; sampled every 10 s "
+                        "elsewhere, 1 mV noise; SPMe data and model. effect_rmse_mV is what the loss alone does"},
+               initial_soc=0.6, seed=2706, period=10, compare=lion.SPMe())
+    # ab7: control, a pulse charge (2C pulses with short discharge pulses) then a C/2 discharge, 30 degC, cycler artefacts, SPM
+    p = chen()
+    p.update({"Ambient temperature [K]": 303.15, "Initial temperature [K]": 303.15})
+    steps = (["Rest for 10 minutes"] + ["Charge at 2C for 60 seconds or until 4.2 V", "Discharge at 1C for 5 seconds", "Rest for 10 seconds"] * 16
+             + ["Rest for 30 minutes", "Discharge at C/2 until 3.0 V", "Rest for 30 minutes"])
+    write_case(root, "ab7_control_pulse_charge_30C_cycler_spm", lion.SPM(), p, steps,
+               {"effect": "none", "candidate_model": "spm", "accept": ["no missing"], "ambient_temperature_K": 303.15,
+                "note": "negative control at 30 degC (isothermal, not recorded): SPM data and model, nothing concealed. A pulse charge "
+                        "from 20 % SOC: 10 min rest, 16 x (2C charge for 60 s or to 4.2 V, 1C discharge for 5 s, 10 s rest), 30 min "
+                        "rest, C/2 to 3.0 V, 30 min rest; cycler artefacts (irregular sampling, 3 mA current noise, 0.1 mV "
+                        "resolution), 1 mV noise"},
+               initial_soc=0.2, seed=2707, cycler=CYCLER, compare=lion.SPM())
+    # ab8: outside the listed candidates: a particle-size distribution (lognormal, relative spread 0.4 in both electrodes), pulse-relaxation test, 15 degC, MPM data handed to the SPM
+    p = pybamm.get_size_distribution_parameters(chen(), sd_n=0.4, sd_p=0.4)
+    p.update({"Ambient temperature [K]": 288.15, "Initial temperature [K]": 288.15})
+    steps = (["Rest for 10 minutes"] + ["Discharge at 2C for 3 minutes", "Rest for 20 minutes"] * 5
+             + ["Charge at 1C for 20 minutes", "Rest for 30 minutes"])
+    write_case(root, "ab8_particle_size_distribution_pulse_relaxation_15C_spm", lion.SPM(options={"particle size": "distribution"}), p, steps,
+               {"effect": "particle_size_distribution", "candidate_model": "spm",
+                "accept": ["size distribution", "particle-size distribution", "polydisperse", "distribution of particle",
+                           "distribution of radii", "radius distribution", "radii distribution"],
+                "ambient_temperature_K": 288.15,
+                "note": "outside the tool's listed candidates: the particles of each electrode have a lognormal distribution of radii "
+                        "(pybamm.get_size_distribution_parameters, relative standard deviation 0.4 in both electrodes, the "
+                        "area-weighted mean at the set's radius, radii from 0 to 2.5x the mean; PyBaMM's SPM with 'particle size': "
+                        "'distribution', the many-particle model), where the candidate SPM has one particle size: small particles "
+                        "fill and empty fast, large ones slowly, so the relaxation after a pulse is stretched (no single diffusion time "
+                        "fits it). At 15 degC (isothermal, not recorded), a pulse-relaxation test from 80 % SOC: 10 min rest, 5 x (2C "
+                        "for 3 min, 20 min rest), 1C charge for 20 min, 30 min rest; sampled every 1 s, 1 mV noise; MPM data handed to "
+                        "the SPM. A particle diffusivity (or a single particle radius) refit is its nearest stand-in and is not accepted; "
+                        "only words naming a distribution of particle sizes are. effect_rmse_mV is what the distribution alone does"},
+               initial_soc=0.8, seed=2708, period=1, compare=lion.SPM())
+
+
+BATCHES = {"u": batch_u, "v": batch_v, "w": batch_w, "x": batch_x, "y": batch_y, "z": batch_z, "q": batch_q, "r": batch_r, "s": batch_s, "t": batch_t, "p": batch_p, "o": batch_o, "n": batch_n, "m": batch_m, "l": batch_l, "k": batch_k, "j": batch_j, "i": batch_i, "h": batch_h, "f": batch_f, "e": batch_e, "g": batch_g, "d": batch_d, "c": batch_c, "a": batch_a, "b": batch_b, "ab": batch_ab}
 
 if __name__ == "__main__":
     root = sys.argv[1] if len(sys.argv) > 1 else "out/unseen-cases"
-    for name in (sys.argv[2] if len(sys.argv) > 2 else "".join(BATCHES)):
+    # batch keys, comma-separated ("ab" or "ab,x"); all by default
+    keys = [k.strip() for k in sys.argv[2].split(",") if k.strip()] if len(sys.argv) > 2 else list(BATCHES)
+    unknown = [k for k in keys if k not in BATCHES]
+    if unknown:
+        sys.exit(f"unknown batch keys {unknown}; known: {','.join(BATCHES)}")
+    for name in keys:
         BATCHES[name](root)
