@@ -228,8 +228,10 @@ impl Model for Dfn {
         // Interfacial current a*j per x volume (A/m^3), held in the phi_e rows until the
         // divergence of the ionic current is subtracted at the end, and particles.
         out_phie[l.nxn..l.nxn + l.nxs].fill(0.0);
-        // sum over each electrode's volumes of the surface OCP (V), for the heat source
+        // sum over each electrode's volumes of the surface OCP (V), and the heat of the side
+        // reactions that the cell balance counts and PyBaMM does not (W/m^2), for the heat source
         let mut sum_ocp = [0.0; 2];
+        let mut uncounted_heat = 0.0;
         self.clear_lam_losses(out_phis);
         for (slot, side, first, n, cs) in [(0, Side::Negative, 0, l.nxn, l.cs_n), (1, Side::Positive, l.nxn + l.nxs, l.nxp, l.cs_p)] {
             let e = ec.electrode(side);
@@ -249,8 +251,9 @@ impl Model for Dfn {
                 let a = self.lam.fraction_index(side, k).map_or(vols[i].a, |_| self.lam.surface_area_density(ec, side, y, k));
                 let (j, j_sei) = match side {
                     Side::Negative if self.side_reactions() => {
-                        let (j, j_sei, total) = self.negative_interface(y, Surface { k, i, j0, delta_phi, ocp, a, temp }, out_phis);
-                        out_phie[i] = a * total;
+                        let (j, j_sei, site) = self.negative_interface(y, Surface { k, i, j0, delta_phi, ocp, a, temp }, out_phis);
+                        out_phie[i] = a * site.total_current;
+                        uncounted_heat += vols[i].dx * site.uncounted_heat(temp, e.ocp_entropic_change);
                         (j, j_sei)
                     }
                     _ => {
@@ -301,7 +304,7 @@ impl Model for Dfn {
         if let Some(t) = l.temp {
             let v = self.voltage(y, current);
             let ocv = sum_ocp[1] / l.nxp as f64 - sum_ocp[0] / l.nxn as f64;
-            let heat = bernardi_heat(current, ocv, v, temp, ec.docv_dt());
+            let heat = bernardi_heat(current, ocv, v, temp, ec.docv_dt()) - uncounted_heat * ec.area();
             out_phis[t - l.phis_n] = ec.thermal.rate(heat, temp);
         }
     }
