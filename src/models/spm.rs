@@ -13,7 +13,7 @@ use super::electrochem::{Electrochem, Side};
 use super::kinetics::{overpotential, particle_factor};
 use super::submodels::plating::Site;
 use super::submodels::{LamDrivers, LamLayer, PlatingLayer, SeiLayer};
-use super::submodels::thermal::bernardi_heat;
+use super::submodels::thermal::{SideReactionSite, bernardi_heat};
 use super::{Model, PhysicsModel, push_tridiagonal};
 use crate::params::ParameterSet;
 
@@ -95,6 +95,20 @@ impl Spm {
         let j_plating = self.plating.rhs(ec, y, std::iter::once(site), self.sei.film(ec, y, j, a), a, temp, out);
         [j_sei, j_plating]
     }
+
+    /// Heat (W) that [`bernardi_heat`] counts and PyBaMM does not with side reactions of
+    /// current density `j_side` (A/m^2) on the negative particle of surface concentration
+    /// `sn` (mol/m^3); zero without them. See [`SideReactionSite::uncounted_heat`].
+    fn uncounted_side_heat(&self, y: &[f64], sn: f64, current: f64, j_side: f64) -> f64 {
+        if self.sei.len() + self.plating.len() == 0 {
+            return 0.0;
+        }
+        let (ec, side) = (&self.ec, Side::Negative);
+        let (j, a) = (self.lam.interfacial_current(ec, side, y, current), self.lam.surface_area_density(ec, side, y, 0));
+        let delta_phi = self.surface_potential_difference(side, sn, y, current);
+        let site = SideReactionSite { a, total_current: j, side_current: j_side, delta_phi, ocp: ec.ocp(side, sn), film: self.sei.film(ec, y, j, a) };
+        site.uncounted_heat(self.temperature(y), ec.params.negative.ocp_entropic_change) * ec.area() * ec.params.negative.thickness
+    }
 }
 
 impl Model for Spm {
@@ -134,7 +148,7 @@ impl Model for Spm {
             for i in 0..t {
                 p.push((i, t));
             }
-            for i in [nn - 2, nn - 1, nn + np - 2, nn + np - 1, t].into_iter().chain(self.sei.indices()).chain(self.lam.indices()) {
+            for i in [nn - 2, nn - 1, nn + np - 2, nn + np - 1, t].into_iter().chain(self.sei.indices()).chain(self.lam.indices()).chain(self.plating.indices()) {
                 p.push((t, i));
             }
         }
@@ -172,7 +186,7 @@ impl Model for Spm {
             let (sn, sp) = self.surface_concentrations(y);
             let ocv = ec.ocp(Side::Positive, sp) - ec.ocp(Side::Negative, sn);
             let v = self.voltage(y, current);
-            let heat = bernardi_heat(current, ocv, v, temp, ec.docv_dt());
+            let heat = bernardi_heat(current, ocv, v, temp, ec.docv_dt()) - self.uncounted_side_heat(y, sn, current, j_sei + j_plating);
             out[self.len() - 1] = ec.thermal.rate(heat, temp);
         }
     }

@@ -16,7 +16,7 @@ use super::electrolyte::ElectrolyteOp;
 use super::kinetics::{electrolyte_factor, log_mean, mean_overpotential};
 use super::submodels::plating::Site;
 use super::submodels::{LamDrivers, LamLayer, PlatingLayer, SeiLayer};
-use super::submodels::thermal::bernardi_heat;
+use super::submodels::thermal::{SideReactionSite, bernardi_heat};
 use super::{Model, PhysicsModel, push_tridiagonal};
 use crate::params::{FARADAY, GAS_CONSTANT, ParameterSet};
 
@@ -293,6 +293,21 @@ impl Spme {
         [j_sei, j_plating]
     }
 
+    /// Heat (W) that [`bernardi_heat`] counts and PyBaMM does not with side reactions of
+    /// x-averaged current density `j_side` (A/m^2) on the negative particle of surface
+    /// concentration `sn` (mol/m^3), at the x-averaged `phi_s - phi_e`; zero without them.
+    /// See [`SideReactionSite::uncounted_heat`].
+    fn uncounted_side_heat(&self, y: &[f64], sn: f64, current: f64, temp: f64, j_side: f64) -> f64 {
+        if self.sei.len() + self.plating.len() == 0 {
+            return 0.0;
+        }
+        let (ec, side) = (&self.ec, Side::Negative);
+        let (j, a) = (self.lam.interfacial_current(ec, side, y, current), self.lam.surface_area_density(ec, side, y, 0));
+        let delta_phi = self.surface_potential_difference(side, sn, y, current, temp);
+        let site = SideReactionSite { a, total_current: j, side_current: j_side, delta_phi, ocp: ec.ocp(side, sn), film: self.sei.film(ec, y, j, a) };
+        site.uncounted_heat(temp, ec.params.negative.ocp_entropic_change) * ec.area() * ec.params.negative.thickness
+    }
+
     /// Solid-phase ohmic drop between the x-averaged and current-collector potentials (V).
     fn solid_ohmic(&self, current: f64) -> f64 {
         current / self.ec.area() * self.consts.solid_resistance
@@ -390,7 +405,7 @@ impl Model for Spme {
         if ec.submodels.thermal {
             let (sn, sp) = self.surfaces(y);
             let ocv = ec.ocp(Side::Positive, sp) - ec.ocp(Side::Negative, sn);
-            let heat = bernardi_heat(current, ocv, self.voltage(y, current), temp, ec.docv_dt());
+            let heat = bernardi_heat(current, ocv, self.voltage(y, current), temp, ec.docv_dt()) - self.uncounted_side_heat(y, sn, current, temp, j_sei + j_plating);
             out[self.len() - 1] = ec.thermal.rate(heat, temp);
         }
     }

@@ -59,4 +59,5 @@ mod study;
 mod sweep_shards;
 mod sweep_study;
 mod thermal;
+mod thermal_reference;
 mod timed_energy;

@@ -20,6 +20,7 @@ use crate::models::electrochem::Side;
 use crate::models::kinetics::butler_volmer;
 use crate::models::submodels::SeiLayer;
 use crate::models::submodels::plating::Site;
+use crate::models::submodels::thermal::SideReactionSite;
 
 /// The intercalation inputs of one negative x volume.
 #[derive(Clone, Copy, Debug)]
@@ -49,8 +50,8 @@ impl Dfn {
     /// The reactions of negative volume `s`: writes the rates of its SEI and plating states
     /// and the residual of its total current into `out_phis` (the outputs from the negative
     /// solid potential's first row on), and returns the intercalation current density `j`,
-    /// the SEI's `j_sei` and the sum of all its reactions' current densities (A/m^2).
-    pub(super) fn negative_interface(&self, y: &[f64], s: Surface, out_phis: &mut [f64]) -> (f64, f64, f64) {
+    /// the SEI's `j_sei` (A/m^2) and all its reactions, for their sum and the heat.
+    pub(super) fn negative_interface(&self, y: &[f64], s: Surface, out_phis: &mut [f64]) -> (f64, f64, SideReactionSite) {
         let (l, ec) = (&self.layout, &self.ec);
         let row = |index: usize| index - l.phis_n;
         let sei = l.sei.map(|start| (start + s.k, start + l.nxn + s.k));
@@ -72,7 +73,7 @@ impl Dfn {
         if let Some((_, j_tot)) = sei {
             out_phis[row(j_tot)] = y[j_tot] - total;
         }
-        (j, j_sei, total)
+        (j, j_sei, SideReactionSite { a: s.a, total_current: total, side_current: j_sei + j_li, delta_phi: s.delta_phi, ocp: s.ocp, film })
     }
 
     /// The side states of negative volume `k` that its reactions read and write: its SEI

@@ -37,7 +37,7 @@ use super::electrochem::{Electrochem, Side};
 use super::electrolyte::ElectrolyteOp;
 use super::kinetics::{butler_volmer, exchange_current};
 use super::submodels::{LamDrivers, LamLayer, PlatingLayer, SeiLayer};
-use super::submodels::thermal::bernardi_heat;
+use super::submodels::thermal::bernardi_heat_of_power;
 use super::{Model, PhysicsModel, push_tridiagonal};
 use crate::params::ParameterSet;
 
@@ -228,10 +228,13 @@ impl Model for Dfn {
         // Interfacial current a*j per x volume (A/m^3), held in the phi_e rows until the
         // divergence of the ionic current is subtracted at the end, and particles.
         out_phie[l.nxn..l.nxn + l.nxs].fill(0.0);
-        // sum over each electrode's volumes of the surface OCP (V), for the heat source
-        let mut sum_ocp = [0.0; 2];
+        // For the heat source, per unit plate area (W/m^2): the reactions' open-circuit power
+        // `-sum a j_tot U dx` and the heat of the side reactions that the cell balance counts
+        // and PyBaMM does not.
+        let mut ocv_power = 0.0;
+        let mut uncounted_heat = 0.0;
         self.clear_lam_losses(out_phis);
-        for (slot, side, first, n, cs) in [(0, Side::Negative, 0, l.nxn, l.cs_n), (1, Side::Positive, l.nxn + l.nxs, l.nxp, l.cs_p)] {
+        for (side, first, n, cs) in [(Side::Negative, 0, l.nxn, l.cs_n), (Side::Positive, l.nxn + l.nxs, l.nxp, l.cs_p)] {
             let e = ec.electrode(side);
             let sphere = ec.sphere(side);
             let nr = l.nr(side);
@@ -243,14 +246,14 @@ impl Model for Dfn {
                 let c = self.lam.concentrations(side, y, shells, k);
                 let c_s = sphere.surface(&c);
                 let ocp = ec.ocp(side, c_s);
-                sum_ocp[slot] += ocp;
                 let j0 = exchange_current(rate, y[l.ce + i], c_e_ref, c_s, e.max_concentration);
                 let delta_phi = y[l.phis(side, k)] - y[l.phie + i];
                 let a = self.lam.fraction_index(side, k).map_or(vols[i].a, |_| self.lam.surface_area_density(ec, side, y, k));
                 let (j, j_sei) = match side {
                     Side::Negative if self.side_reactions() => {
-                        let (j, j_sei, total) = self.negative_interface(y, Surface { k, i, j0, delta_phi, ocp, a, temp }, out_phis);
-                        out_phie[i] = a * total;
+                        let (j, j_sei, site) = self.negative_interface(y, Surface { k, i, j0, delta_phi, ocp, a, temp }, out_phis);
+                        out_phie[i] = a * site.total_current;
+                        uncounted_heat += vols[i].dx * site.uncounted_heat(temp, e.ocp_entropic_change);
                         (j, j_sei)
                     }
                     _ => {
@@ -259,6 +262,7 @@ impl Model for Dfn {
                         (j, 0.0)
                     }
                 };
+                ocv_power -= vols[i].dx * out_phie[i] * ocp;
                 let flux = Electrochem::molar_flux(j);
                 let out_particle = &mut out_cs[start..start + nr];
                 match self.lam.fraction_index(side, k) {
@@ -300,8 +304,7 @@ impl Model for Dfn {
 
         if let Some(t) = l.temp {
             let v = self.voltage(y, current);
-            let ocv = sum_ocp[1] / l.nxp as f64 - sum_ocp[0] / l.nxn as f64;
-            let heat = bernardi_heat(current, ocv, v, temp, ec.docv_dt());
+            let heat = bernardi_heat_of_power(ocv_power * ec.area(), current, v, temp, ec.docv_dt()) - uncounted_heat * ec.area();
             out_phis[t - l.phis_n] = ec.thermal.rate(heat, temp);
         }
     }
