@@ -22,6 +22,7 @@
 mod ageing;
 pub mod backward;
 mod baseline;
+mod breakdown;
 pub use baseline::Breakdown;
 pub mod candidates;
 pub mod features;
@@ -228,6 +229,10 @@ pub struct Diagnosis {
     /// Where the user's model broke down on the recording, when it did: only the part before
     /// was diagnosed, and the verdict is never "no missing physics".
     pub broke_down: Option<Breakdown>,
+    /// The whole recording, when the user's model broke down on it and a named candidate
+    /// follows it: the next round diagnoses it whole.
+    #[serde(skip)]
+    pub whole: Option<Recording>,
     /// On the last round: effects named in earlier rounds that the final model does not need.
     pub superseded: Vec<backward::Superseded>,
     /// The verdict in plain words.
@@ -262,16 +267,18 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
         base.thermal.initial_temperature = t0;
     }
     let base = &base;
-    let (baseline, split, warm, restarts, broke_down) = match &options.fitted_baseline {
+    let recorded = data.clone();
+    let (baseline, split, warm, restarts, cut_here) = match &options.fitted_baseline {
         Some(b) if b.voltage.len() == data.time.len() && b.names.len() == options.fitted.len() => {
             let features = Features::of(&data);
-            (b.clone(), Split::blocks(&features.valid, options.blocks, options.holdout_every), options.fitted.clone(), Vec::new(), options.broke_down.clone())
+            (b.clone(), Split::blocks(&features.valid, options.blocks, options.holdout_every), options.fitted.clone(), Vec::new(), None)
         }
         _ => {
             let b = baseline::fit_baseline(&mut data, base, options, &mut notes)?;
-            (b.fit, b.split, b.fitted, b.starts, b.broke_down.or_else(|| options.broke_down.clone()))
+            (b.fit, b.split, b.fitted, b.starts, b.broke_down)
         }
     };
+    let broke_down = cut_here.clone().or_else(|| options.broke_down.clone());
     let data = data;
     let features = Features::of(&data);
     let mut warm = warm;
@@ -354,6 +361,17 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
             outcomes.splice(0..0, named);
         }
     }
+    // A model that broke down here and nothing named before: the candidate that lets it
+    // follow the whole recording is the missing effect; the next round diagnoses it whole.
+    let mut whole = None;
+    if let Some(b) = cut_here.as_ref().filter(|_| !verdict.found()) {
+        let followers = breakdown::followers(&recorded, &round, b.at_s);
+        if followers.verdict.found() {
+            verdict = followers.verdict;
+            whole = Some(recorded);
+        }
+        outcomes.splice(0..0, followers.candidates);
+    }
     // A model that broke down did not follow the rest of the recording: whatever the part
     // before it shows, that is a mismatch left unexplained, not an absence of one.
     if broke_down.is_some() && matches!(verdict, Verdict::NoMissingPhysics) {
@@ -391,6 +409,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
         residual_after,
         notes,
         broke_down,
+        whole,
         superseded: Vec::new(),
         summary: String::new(),
         seconds: 0.0,
@@ -443,7 +462,8 @@ pub fn diagnose_rounds_with(data: &Recording, base: &ParameterSet, options: &Dia
             ));
             next = None;
         }
-        data = d.data.clone();
+        let rescued = d.whole.is_some();
+        data = d.whole.clone().unwrap_or_else(|| d.data.clone());
         on_round(&d);
         rounds.push(d);
         let Some((next, fit)) = next else { break };
@@ -451,7 +471,7 @@ pub fn diagnose_rounds_with(data: &Recording, base: &ParameterSet, options: &Dia
         options.spec = next.spec;
         options.fitted = next.fitted;
         options.fitted_baseline = Some(fit);
-        options.broke_down = rounds[0].broke_down.clone();
+        options.broke_down = if rescued { None } else { rounds[0].broke_down.clone() };
         options.pairs = false;
     }
     if rounds.iter().filter(|d| d.found).count() >= 2 {

@@ -95,10 +95,11 @@ impl Starts {
 
 /// The point `x0` with each of the `screen` parameters moved to the value of a decade grid
 /// over its range (bounds included) that lowers the cost most with the others at `x0`, and the
-/// simulations it took; `None` when no grid value beats `x0` (or every run fails).
+/// simulations it took; `None` when no grid value beats `x0` (or every run fails). Where the
+/// model breaks down at `x0`, any grid value it follows the recording at beats it.
 fn decade_screen<P: LeastSquares>(problem: &P, x0: &[f64], screen: &[usize]) -> (Option<Vec<f64>>, usize) {
     let cost = |x: &[f64]| problem.run(x).ok().map(|r| sse(&problem.weighted_residuals(&r)));
-    let Some(c0) = cost(x0) else { return (None, 1) };
+    let c0 = cost(x0).unwrap_or(f64::INFINITY);
     let trials: Vec<(usize, f64)> = screen
         .iter()
         .flat_map(|&i| {

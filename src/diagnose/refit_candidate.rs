@@ -131,6 +131,16 @@ pub(super) fn at_soc(base: &ParameterSet, soc: Option<f64>) -> ParameterSet {
 /// One candidate refitted (when `aug` is its augmentation; `Err` says why it was not) and
 /// judged against the round's user's model: the margins, plausible values, its name by them.
 pub(super) fn judge(c: Candidate, aug: Result<candidates::Augmentation, String>, round: &Round) -> CandidateOutcome {
+    let n_train = round.split.train_points();
+    assess(c, aug, round, |f| {
+        let comparison = select::compare(round.baseline, f, n_train);
+        (comparison, round.options.margins.cleared_by(&comparison, round.noise))
+    })
+}
+
+/// As [`judge`], with the comparison and whether it clears the margins given by `standard`
+/// from the candidate's fit.
+pub(super) fn assess(c: Candidate, aug: Result<candidates::Augmentation, String>, round: &Round, standard: impl Fn(&FitOutcome) -> (Comparison, bool)) -> CandidateOutcome {
     let mut out = CandidateOutcome {
         candidate: c,
         partner: None,
@@ -158,8 +168,7 @@ pub(super) fn judge(c: Candidate, aug: Result<candidates::Augmentation, String>,
     let (fit, note, next) = refit_candidate(aug, round.warm, Some(round.restarts), None, options, round.data, round.split);
     (out.note, out.next) = (note, next);
     let Some(f) = fit else { return out };
-    out.comparison = select::compare(baseline, &f, round.split.train_points());
-    out.clears_margins = options.margins.cleared_by(&out.comparison, round.noise);
+    (out.comparison, out.clears_margins) = standard(&f);
     // Plausibility of the candidate's own values, not the baseline's.
     let (names, values): (Vec<String>, Vec<f64>) = f.names.iter().zip(&f.values).filter(|(n, _)| !baseline.names.contains(n)).map(|(n, v)| (n.clone(), *v)).unzip();
     // A candidate that makes another's structural change and keeps the set's values is that

@@ -198,6 +198,27 @@ const OCV_AT_REST: f64 = 0.5;
 const AT_THE_START: f64 = 0.5;
 const START_RELAXATION_S: f64 = 60.0;
 
+/// Where the user's model broke down and how much of the recording it followed.
+fn breakdown_words(d: &Diagnosis) -> String {
+    d.broke_down.as_ref().map_or(String::new(), |b| {
+        format!("The user's model breaks down {:.0} s into the recording and follows only the {:.0} % before it.", b.at_s, 100.0 * b.kept_points as f64 / b.recorded_points.max(1) as f64)
+    })
+}
+
+/// The candidate refitted on the whole recording that leaves the least on held-out points,
+/// when the user's model broke down and one was: what came closest to following it.
+fn closest_follower(d: &Diagnosis) -> Option<String> {
+    let whole = |c: &&CandidateOutcome| c.fit.as_ref().is_some_and(|f| f.voltage.len() > d.data.time.len());
+    let best = d.candidates.iter().filter(whole).min_by(|a, b| a.fit.as_ref().map(|f| f.rmse_holdout).unwrap_or(f64::INFINITY).total_cmp(&b.fit.as_ref().map(|f| f.rmse_holdout).unwrap_or(f64::INFINITY)))?;
+    let f = best.fit.as_ref()?;
+    Some(format!(
+        " Refitted on the whole recording, {} lets the model follow it but leaves {} RMS on held-out points{}.",
+        best.name,
+        mv(f.rmse_holdout),
+        best.implausible.as_ref().map_or(String::new(), |why| format!(" ({why})"))
+    ))
+}
+
 /// Why nothing is named: what the user's model leaves is noise, or below the size floor.
 fn no_missing_physics_why(d: &Diagnosis) -> String {
     let b = &d.baseline;
@@ -214,6 +235,22 @@ pub fn verdict_in_words(d: &Diagnosis) -> String {
     let find = |c: Candidate, partner: Option<Candidate>| d.candidates.iter().find(|o| (o.candidate, o.partner) == (c, partner));
     let floor = d.margins.size_floor(d.noise);
     match &d.verdict {
+        Verdict::Found { candidate, partner, class } if d.whole.is_some() => {
+            let c = find(*candidate, *partner).expect("named candidate");
+            let f = c.fit.as_ref().expect("named candidate has a fit");
+            format!(
+                "{}: {} ({}){}. {} With it the model follows the whole recording, leaving {} RMS (hold-out {}) against a noise level of {}, about what the user's model left before the breakdown ({}).",
+                class_words(*class),
+                c.name,
+                c.change,
+                candidate_values(d, c),
+                breakdown_words(d),
+                mv(f.rmse_all),
+                mv(f.rmse_holdout),
+                mv(d.noise),
+                mv(b.rmse_all)
+            )
+        }
         Verdict::Found { candidate, partner, class } => {
             let c = find(*candidate, *partner).expect("named candidate");
             let f = c.fit.as_ref().expect("named candidate has a fit");
@@ -233,6 +270,22 @@ pub fn verdict_in_words(d: &Diagnosis) -> String {
                 c.comparison.effective_points,
                 c.comparison.ln_bayes_factor,
                 truncated(f)
+            )
+        }
+        Verdict::Tie { first, first_partner, second, second_partner, class, experiment } if d.whole.is_some() => {
+            let (a, c2) = (find(*first, *first_partner).expect("tied"), find(*second, *second_partner).expect("tied"));
+            let (fa, fb) = (a.fit.as_ref().expect("tied fit"), c2.fit.as_ref().expect("tied fit"));
+            format!(
+                "{}: {}{} or {}{}: with either the model follows the whole recording and the recording cannot tell them apart (hold-out RMSE {} vs {}); {} would separate them. {}",
+                class_words(*class),
+                a.name,
+                candidate_values(d, a),
+                c2.name,
+                candidate_values(d, c2),
+                mv(fa.rmse_holdout),
+                mv(fb.rmse_holdout),
+                experiment,
+                breakdown_words(d)
             )
         }
         Verdict::Tie { first, first_partner, second, second_partner, class, experiment } => {
@@ -265,7 +318,7 @@ pub fn verdict_in_words(d: &Diagnosis) -> String {
                 100.0 * b.kept_points as f64 / b.recorded_points.max(1) as f64,
                 no_missing_physics_why(d),
                 b.at_s
-            )
+            ) + &closest_follower(d).unwrap_or_default()
         }
         Verdict::Unexplained => {
             let windows: Vec<String> = d.residual.segments.iter().take(3).map(|s| format!("{:.0}-{:.0} s", s.start, s.end)).collect();
