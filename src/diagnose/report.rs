@@ -272,27 +272,20 @@ pub fn verdict_in_words(d: &Diagnosis) -> String {
                 truncated(f)
             )
         }
-        Verdict::Tie { first, first_partner, second, second_partner, class, experiment } if d.whole.is_some() => {
-            let (a, c2) = (find(*first, *first_partner).expect("tied"), find(*second, *second_partner).expect("tied"));
-            let (fa, fb) = (a.fit.as_ref().expect("tied fit"), c2.fit.as_ref().expect("tied fit"));
-            format!(
-                "{}: {}{} or {}{}: with either the model follows the whole recording and the recording cannot tell them apart (hold-out RMSE {} vs {}); {} would separate them. {}",
-                class_words(*class),
-                a.name,
-                candidate_values(d, a),
-                c2.name,
-                candidate_values(d, c2),
-                mv(fa.rmse_holdout),
-                mv(fb.rmse_holdout),
-                experiment,
-                breakdown_words(d)
-            )
-        }
         Verdict::Tie { first, first_partner, second, second_partner, class, experiment } => {
             let (a, c2) = (find(*first, *first_partner).expect("tied"), find(*second, *second_partner).expect("tied"));
             let (fa, fb) = (a.fit.as_ref().expect("tied fit"), c2.fit.as_ref().expect("tied fit"));
+            // Refitted on the whole recording past the user's breakdown, they have no ΔBIC
+            // against it.
+            let (evidence, after) = match d.whole {
+                Some(_) => (String::new(), format!("With either the model follows the whole recording. {}", breakdown_words(d))),
+                None => (
+                    format!(", ΔBIC {:.0} vs {:.0}", a.comparison.delta_bic, c2.comparison.delta_bic),
+                    format!("Either cuts the RMSE from {} to about {}.", mv(b.rmse_all), mv(fa.rmse_all)),
+                ),
+            };
             format!(
-                "{}: {}{} or {}{}: the recording cannot tell them apart (hold-out RMSE {} vs {}, ΔBIC {:.0} vs {:.0}); {} would separate them. Either cuts the RMSE from {} to about {}.",
+                "{}: {}{} or {}{}: the recording cannot tell them apart (hold-out RMSE {} vs {}{evidence}); {experiment} would separate them. {after}",
                 class_words(*class),
                 a.name,
                 candidate_values(d, a),
@@ -300,11 +293,6 @@ pub fn verdict_in_words(d: &Diagnosis) -> String {
                 candidate_values(d, c2),
                 mv(fa.rmse_holdout),
                 mv(fb.rmse_holdout),
-                a.comparison.delta_bic,
-                c2.comparison.delta_bic,
-                experiment,
-                mv(b.rmse_all),
-                mv(fa.rmse_all)
             )
         }
         Verdict::BrokeDown => {
