@@ -37,34 +37,17 @@ pub(super) fn followers(whole: &Recording, round: &Round, at_s: f64) -> Follower
         .copied()
         .filter(|&c| !(c == Candidate::UnrelaxedStart && options.fit.start_at_rest) && c.not_identifiable(whole, &features, q).is_none())
         .collect();
+    let progress = crate::progress::bar("diagnose", plan.len() as u64, "{msg} {bar:30} {pos}/{len} [{elapsed}]");
+    progress.set_message(format!("the user's model broke down at {at_s:.0} s: refitting candidates on the whole recording"));
     let mut candidates: Vec<CandidateOutcome> = plan
         .into_par_iter()
         .filter_map(|c| {
-            let mut aug = c.augment(&options.spec, round.base, round.fitted_paths, &whole_round.load)?;
-            // No effect is the user's model, which breaks down: each of the candidate's rates
-            // and factors is screened a decade apart for a start that follows the recording.
-            aug.screened = true;
-            let mut out = refit_candidate::assess(c, Ok(aug), &whole_round, |f| {
-                let comparison = Comparison {
-                    delta_bic: f64::NAN,
-                    ln_bayes_factor: f64::NAN,
-                    holdout_gain: f64::NAN,
-                    explained: f64::NAN,
-                    effective_points: f.effective_points(n_train),
-                    rmse_train: f.rmse_train,
-                    parameters: f.parameters as f64,
-                };
-                (comparison, f.rmse_holdout <= level)
-            });
-            out.fit.as_ref()?;
-            out.note = Some(format!(
-                "refitted on the whole recording, which the user's model cannot follow past {at_s:.0} s: named when it leaves at most {} RMS on held-out points (the user's model's {} before the breakdown and the size floor, in quadrature)",
-                super::report::mv(level),
-                super::report::mv(round.baseline.rmse_holdout)
-            ));
-            Some(out)
+            let out = refit_on_whole(c, &whole_round, level, n_train, at_s);
+            progress.inc(1);
+            out
         })
         .collect();
+    progress.finish_and_clear();
     let n_common = select::common_effective_points(candidates.iter().filter(|c| c.named).map(|c| &c.comparison));
     candidates.sort_by(|a, b| {
         let key = |c: &CandidateOutcome| c.named;
@@ -76,6 +59,36 @@ pub(super) fn followers(whole: &Recording, round: &Round, at_s: f64) -> Follower
     let separate = |a: Candidate, b: Candidate| a.separating_experiment(b, &features);
     let verdict = select::verdict(&standings(&candidates), true, options.margins.min_delta_bic, separate);
     Followers { candidates, verdict }
+}
+
+/// Candidate `c` refitted on the whole recording of `round` (its user's model broke down at
+/// `at_s`, s), named when it leaves at most `level` (V) on held-out points; `None` when it
+/// does not apply or its fit fails (it breaks down too).
+fn refit_on_whole(c: Candidate, round: &Round, level: f64, n_train: usize, at_s: f64) -> Option<CandidateOutcome> {
+    let options = round.options;
+    let mut aug = c.augment(&options.spec, round.base, round.fitted_paths, &round.load)?;
+    // No effect is the user's model, which breaks down: each of the candidate's rates
+    // and factors is screened a decade apart for a start that follows the recording.
+    aug.screened = true;
+    let mut out = refit_candidate::assess(c, Ok(aug), round, |f| {
+        let comparison = Comparison {
+            delta_bic: f64::NAN,
+            ln_bayes_factor: f64::NAN,
+            holdout_gain: f64::NAN,
+            explained: f64::NAN,
+            effective_points: f.effective_points(n_train),
+            rmse_train: f.rmse_train,
+            parameters: f.parameters as f64,
+        };
+        (comparison, f.rmse_holdout <= level)
+    });
+    out.fit.as_ref()?;
+    out.note = Some(format!(
+        "refitted on the whole recording, which the user's model cannot follow past {at_s:.0} s: named when it leaves at most {} RMS on held-out points (the user's model's {} before the breakdown and the size floor, in quadrature)",
+        super::report::mv(level),
+        super::report::mv(round.baseline.rmse_holdout)
+    ));
+    Some(out)
 }
 
 fn rmse_holdout(c: &CandidateOutcome) -> f64 {
