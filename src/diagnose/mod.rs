@@ -337,7 +337,6 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
     let structured = (analysis.structured || baseline.rmse_all > 2.0 * noise) && !no_room;
     let separate = |a: Candidate, b: Candidate| a.separating_experiment(b, &features);
     let mut verdict = select::verdict(&standings(&outcomes), structured, options.margins.min_delta_bic, separate);
-
     // No single effect: two may be hiding each other. One effect named that leaves far more
     // than the noise on held-out points may be standing in for two: a pair that beats it by
     // the same margins (against it, not the user's model) replaces it.
