@@ -235,42 +235,35 @@ pub fn verdict_in_words(d: &Diagnosis) -> String {
     let find = |c: Candidate, partner: Option<Candidate>| d.candidates.iter().find(|o| (o.candidate, o.partner) == (c, partner));
     let floor = d.margins.size_floor(d.noise);
     match &d.verdict {
-        Verdict::Found { candidate, partner, class } if d.whole.is_some() => {
-            let c = find(*candidate, *partner).expect("named candidate");
-            let f = c.fit.as_ref().expect("named candidate has a fit");
-            format!(
-                "{}: {} ({}){}. {} With it the model follows the whole recording, leaving {} RMS (hold-out {}) against a noise level of {}, about what the user's model left before the breakdown ({}).",
-                class_words(*class),
-                c.name,
-                c.change,
-                candidate_values(d, c),
-                breakdown_words(d),
-                mv(f.rmse_all),
-                mv(f.rmse_holdout),
-                mv(d.noise),
-                mv(b.rmse_all)
-            )
-        }
         Verdict::Found { candidate, partner, class } => {
             let c = find(*candidate, *partner).expect("named candidate");
             let f = c.fit.as_ref().expect("named candidate has a fit");
-            format!(
-                "{}: {} ({}){}. Adding it cuts the RMSE from {} to {} (hold-out {} -> {}), removing {} RMS against a noise level of {}; ΔBIC = {:.0} with {:.0} effective points, Laplace ln Bayes factor {:.0}{}.",
-                class_words(*class),
-                c.name,
-                c.change,
-                candidate_values(d, c),
-                mv(b.rmse_all),
-                mv(f.rmse_all),
-                mv(b.rmse_holdout),
-                mv(f.rmse_holdout),
-                mv(c.comparison.explained),
-                mv(d.noise),
-                c.comparison.delta_bic,
-                c.comparison.effective_points,
-                c.comparison.ln_bayes_factor,
-                truncated(f)
-            )
+            // Refitted on the whole recording past the user's breakdown, it has no cut or
+            // ΔBIC against the user's model.
+            let evidence = match d.whole {
+                Some(_) => format!(
+                    "{} With it the model follows the whole recording, leaving {} RMS (hold-out {}) against a noise level of {}, about what the user's model left before the breakdown ({}).",
+                    breakdown_words(d),
+                    mv(f.rmse_all),
+                    mv(f.rmse_holdout),
+                    mv(d.noise),
+                    mv(b.rmse_all)
+                ),
+                None => format!(
+                    "Adding it cuts the RMSE from {} to {} (hold-out {} -> {}), removing {} RMS against a noise level of {}; ΔBIC = {:.0} with {:.0} effective points, Laplace ln Bayes factor {:.0}{}.",
+                    mv(b.rmse_all),
+                    mv(f.rmse_all),
+                    mv(b.rmse_holdout),
+                    mv(f.rmse_holdout),
+                    mv(c.comparison.explained),
+                    mv(d.noise),
+                    c.comparison.delta_bic,
+                    c.comparison.effective_points,
+                    c.comparison.ln_bayes_factor,
+                    truncated(f)
+                ),
+            };
+            format!("{}: {} ({}){}. {evidence}", class_words(*class), c.name, c.change, candidate_values(d, c))
         }
         Verdict::Tie { first, first_partner, second, second_partner, class, experiment } => {
             let (a, c2) = (find(*first, *first_partner).expect("tied"), find(*second, *second_partner).expect("tied"));
