@@ -44,8 +44,9 @@ pub(super) struct BaselineFit {
     /// The starting points the fit tried (values of `fitted`, in order): a candidate's refit
     /// may need them where the user's fitted values compensated for the missing effect.
     pub starts: Vec<Vec<f64>>,
-    /// Where the model broke down on the whole recording, when it did.
-    pub broke_down: Option<Breakdown>,
+    /// Where the model broke down on the whole recording, when it did, and that recording
+    /// (before it was cut).
+    pub broke_down: Option<(Breakdown, Recording)>,
 }
 
 /// The user's model fitted (with the nuisance initial state): on failure part-way, the
@@ -61,7 +62,7 @@ pub(super) fn fit_baseline(data: &mut Recording, base: &ParameterSet, options: &
         starts = socs.iter().map(|s| user.iter().copied().chain([*s]).collect()).collect();
     }
     const ATTEMPTS: usize = 3;
-    let mut broke_down: Option<Breakdown> = None;
+    let mut broke_down: Option<(Breakdown, Recording)> = None;
     for attempt in 0..ATTEMPTS {
         let features = Features::of(data);
         let split = Split::blocks(&features.valid, options.blocks, options.holdout_every);
@@ -87,10 +88,11 @@ pub(super) fn fit_baseline(data: &mut Recording, base: &ParameterSet, options: &
                     data.time.len(),
                 ));
                 // The first breakdown is the recording's; a later one only cuts further.
-                let recorded_points = broke_down.as_ref().map_or(data.time.len(), |b| b.recorded_points);
-                let at_s = broke_down.as_ref().map_or(t, |b| b.at_s.min(t));
-                let reason = broke_down.take().map_or(reason, |b| b.reason);
-                broke_down = Some(Breakdown { at_s, reason, diagnosed_to_s: to, kept_points: keep, recorded_points });
+                let (first, recorded) = match broke_down.take() {
+                    Some((b, recorded)) => (Breakdown { at_s: b.at_s.min(t), diagnosed_to_s: to, kept_points: keep, ..b }, recorded),
+                    None => (Breakdown { at_s: t, reason, diagnosed_to_s: to, kept_points: keep, recorded_points: data.time.len() }, data.clone()),
+                };
+                broke_down = Some((first, recorded));
                 data.time.truncate(keep);
                 data.current.truncate(keep);
                 data.voltage.truncate(keep);

@@ -267,7 +267,6 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
         base.thermal.initial_temperature = t0;
     }
     let base = &base;
-    let recorded = data.clone();
     let (baseline, split, warm, restarts, cut_here) = match &options.fitted_baseline {
         Some(b) if b.voltage.len() == data.time.len() && b.names.len() == options.fitted.len() => {
             let features = Features::of(&data);
@@ -278,7 +277,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
             (b.fit, b.split, b.fitted, b.starts, b.broke_down)
         }
     };
-    let broke_down = cut_here.clone().or_else(|| options.broke_down.clone());
+    let broke_down = cut_here.as_ref().map(|(b, _)| b.clone()).or_else(|| options.broke_down.clone());
     let data = data;
     let features = Features::of(&data);
     let mut warm = warm;
@@ -363,7 +362,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
     // A model that broke down here and nothing named before: the candidate that lets it
     // follow the whole recording is the missing effect; the next round diagnoses it whole.
     let mut whole = None;
-    if let Some(b) = cut_here.as_ref().filter(|_| !verdict.found()) {
+    if let Some((b, recorded)) = cut_here.filter(|_| !verdict.found()) {
         let followers = breakdown::followers(&recorded, &round, b.at_s);
         if followers.verdict.found() {
             verdict = followers.verdict;
