@@ -4,9 +4,10 @@
 use crate::geometry::{Discretisation, Geometry, MeshSizes};
 use crate::error::Error;
 use super::dfn::Dfn;
+use super::mpm::Mpm;
 use super::spm::Spm;
 use super::spme::Spme;
-use super::submodels::Augmented;
+use super::submodels::{Augmented, ParticleSize};
 use super::{Electrochem, ModelKind, PhysicsModel, Submodels};
 use crate::params::ParameterSet;
 use crate::solver::Workspace;
@@ -50,8 +51,13 @@ impl ModelBuilder {
             built.model.set_params(params.clone());
         } else {
             self.submodels.check()?;
+            let distribution = self.submodels.particle_size == ParticleSize::Distribution;
+            if distribution && self.kind != ModelKind::Spm {
+                return Err(Error::InvalidSetting { field: "model.submodels.particle_size".into(), reason: format!("\"distribution\" is built on the SPM only, not the {}", self.kind) });
+            }
             let ec = Electrochem::new(params.clone(), Discretisation::new(geometry), self.submodels);
             let mut model: Box<dyn PhysicsModel> = match self.kind {
+                ModelKind::Spm if distribution => Box::new(Mpm::new(ec)),
                 ModelKind::Spm => Box::new(Spm::new(ec)),
                 ModelKind::Spme => Box::new(Spme::new(ec)),
                 ModelKind::Dfn => Box::new(Dfn::new(ec)),
