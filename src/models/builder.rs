@@ -50,11 +50,8 @@ impl ModelBuilder {
             let built = self.last.as_mut().expect("checked above");
             built.model.set_params(params.clone());
         } else {
-            self.submodels.check()?;
+            self.submodels.check_for(self.kind)?;
             let distribution = self.submodels.particle_size == ParticleSize::Distribution;
-            if distribution && self.kind != ModelKind::Spm {
-                return Err(Error::InvalidSetting { field: "model.submodels.particle_size".into(), reason: format!("\"distribution\" is built on the SPM only, not the {}", self.kind) });
-            }
             let ec = Electrochem::new(params.clone(), Discretisation::new(geometry), self.submodels);
             let mut model: Box<dyn PhysicsModel> = match self.kind {
                 ModelKind::Spm if distribution => Box::new(Mpm::new(ec)),

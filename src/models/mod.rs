@@ -129,6 +129,16 @@ impl Submodels {
         Ok(())
     }
 
+    /// [`Self::check`], and that they are built on `kind` (the particle-size distribution on
+    /// the SPM only); the error names `model.submodels.NAME`.
+    pub fn check_for(&self, kind: ModelKind) -> Result<(), crate::error::Error> {
+        self.check()?;
+        if self.particle_size == submodels::ParticleSize::Distribution && kind != ModelKind::Spm {
+            return Err(crate::error::Error::InvalidSetting { field: "model.submodels.particle_size".into(), reason: format!("\"distribution\" is built on the SPM only, not the {kind}") });
+        }
+        Ok(())
+    }
+
     /// Whether the particle diffusivities are stress-induced (`D (1 + theta_M (c - c_0))`):
     /// stress-driven LAM without `stress_induced_diffusion = false`.
     pub fn stressed_diffusion(&self) -> bool {

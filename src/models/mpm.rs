@@ -148,6 +148,11 @@ impl Model for Mpm {
         Some(self.reaction(Side::Negative, y, current).delta)
     }
 
+    fn fields(&self, y: &[f64]) -> Vec<super::Field> {
+        let field = |name, side| super::Field::concentration_radius(name, self.sizes(side).radii.clone(), self.surface_concentrations(side, y));
+        vec![field("negative particle surface concentration", Side::Negative), field("positive particle surface concentration", Side::Positive)]
+    }
+
     fn output_states(&self) -> Vec<usize> {
         let nn = self.sizes[0].states();
         let mut out: Vec<usize> = self.sizes[0].surface_states().collect();
