@@ -59,6 +59,11 @@ pub(crate) enum Command {
         /// Switch on the lumped thermal submodel.
         #[arg(long)]
         thermal: bool,
+        /// Switch on the particle-size distribution (SPM only): lognormal radii of relative
+        /// standard deviation negative.radius_relative_std and positive.radius_relative_std
+        /// (0.3 unless set; a `--set` of either also switches it on), 30 sizes per electrode.
+        #[arg(long)]
+        size_distribution: bool,
         /// Volumes per domain and per particle (x_n = x_s = x_p = r_n = r_p).
         #[arg(long, default_value_t = 20)]
         mesh: usize,

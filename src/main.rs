@@ -8,6 +8,7 @@ mod cli;
 use cli::{Cli, Command, DataCommand, Overrides};
 
 use cellstudio::models::Submodels;
+use cellstudio::models::submodels::ParticleSize;
 use cellstudio::output::OutputDir;
 use cellstudio::params::{ParameterSet, apply_overrides};
 use cellstudio::Error;
@@ -304,7 +305,7 @@ fn run(cli: Cli) -> Result<(), Error> {
             }
             Ok(())
         }
-        Command::Simulate { overrides, model, c_rate, protocol, experiment, params, contact_resistance, thermal, mesh, out, repeat, json } => {
+        Command::Simulate { overrides, model, c_rate, protocol, experiment, params, contact_resistance, thermal, size_distribution, mesh, out, repeat, json } => {
             let mut p = load_parameters(params.as_deref(), &overrides)?;
             set_contact_resistance(&mut p, contact_resistance)?;
             let protocol = match protocol {
@@ -312,7 +313,15 @@ fn run(cli: Cli) -> Result<(), Error> {
                 None if !experiment.is_empty() => ProtocolSource::Experiment(experiment),
                 None => ProtocolSource::Discharge { c_rate },
             };
-            let submodels = Submodels { contact_resistance: contact_resistance.is_some() || overrides.sets("cell.contact_resistance"), thermal, ..Default::default() };
+            // `--size-distribution`, or a `--set` of a relative spread, switches it on.
+            let spread = ["negative.radius_relative_std", "positive.radius_relative_std"].into_iter().find(|p| overrides.sets(p));
+            let switch = if size_distribution { Some("--size-distribution".to_string()) } else { spread.map(|p| format!("--set {p}")) };
+            let particle_size = if switch.is_some() { ParticleSize::Distribution } else { ParticleSize::Single };
+            let submodels = Submodels { contact_resistance: contact_resistance.is_some() || overrides.sets("cell.contact_resistance"), thermal, particle_size, ..Default::default() };
+            submodels.check_for(model).map_err(|e| match (e, &switch) {
+                (Error::InvalidSetting { reason, .. }, Some(field)) => Error::InvalidSetting { field: field.clone(), reason },
+                (other, _) => other,
+            })?;
             let run = SimulateRun { model, submodels, params: p, protocol, mesh, repeat, out, inputs: params.into_iter().collect() };
             let outcome = run_simulate(&run)?;
             warn(&outcome.warnings);

@@ -71,7 +71,7 @@ fn run(kind: ModelKind, p: &cellstudio::params::ParameterSet, experiment: &[Stri
     let source = if experiment.is_empty() { ProtocolSource::Discharge { c_rate } } else { ProtocolSource::Experiment(experiment.to_vec()) };
     let protocol = source.protocol(p)?;
     let submodels = Submodels { contact_resistance: contact_resistance || p.cell.contact_resistance > 0.0, thermal, ..Default::default() };
-    let sizes = MeshSizes { x_n: mesh, x_s: mesh, x_p: mesh, r_n: mesh, r_p: mesh };
+    let sizes = MeshSizes { x_n: mesh, x_s: mesh, x_p: mesh, r_n: mesh, r_p: mesh, ..Default::default() };
     let t = Instant::now();
     let mut builder = ModelBuilder::new(kind, submodels, sizes);
     let built = builder.build(p)?;

@@ -24,12 +24,17 @@ pub struct MeshSizes {
     pub r_n: usize,
     /// Positive particle, radial.
     pub r_p: usize,
+    /// Negative particle sizes (radius classes) of the particle-size distribution submodel
+    /// (PyBaMM's `R_n` points); unused without it.
+    pub size_n: usize,
+    /// Positive particle sizes, as `size_n` (PyBaMM's `R_p`).
+    pub size_p: usize,
 }
 
 impl Default for MeshSizes {
-    /// PyBaMM's default mesh: 20 volumes per domain and per particle.
+    /// PyBaMM's default mesh: 20 volumes per domain and per particle, 30 particle sizes.
     fn default() -> Self {
-        Self { x_n: 20, x_s: 20, x_p: 20, r_n: 20, r_p: 20 }
+        Self { x_n: 20, x_s: 20, x_p: 20, r_n: 20, r_p: 20, size_n: 30, size_p: 30 }
     }
 }
 
@@ -44,6 +49,11 @@ impl MeshSizes {
         ] {
             if n < 2 {
                 return Err(Error::invalid(name, n as f64, "needs at least 2 volumes"));
+            }
+        }
+        for (name, n) in [("mesh.size_n", self.size_n), ("mesh.size_p", self.size_p)] {
+            if n < 1 {
+                return Err(Error::invalid(name, n as f64, "needs at least 1 particle size"));
             }
         }
         Ok(())

@@ -4,9 +4,10 @@
 use crate::geometry::{Discretisation, Geometry, MeshSizes};
 use crate::error::Error;
 use super::dfn::Dfn;
+use super::mpm::Mpm;
 use super::spm::Spm;
 use super::spme::Spme;
-use super::submodels::Augmented;
+use super::submodels::{Augmented, ParticleSize};
 use super::{Electrochem, ModelKind, PhysicsModel, Submodels};
 use crate::params::ParameterSet;
 use crate::solver::Workspace;
@@ -49,9 +50,11 @@ impl ModelBuilder {
             let built = self.last.as_mut().expect("checked above");
             built.model.set_params(params.clone());
         } else {
-            self.submodels.check()?;
+            self.submodels.check_for(self.kind)?;
+            let distribution = self.submodels.particle_size == ParticleSize::Distribution;
             let ec = Electrochem::new(params.clone(), Discretisation::new(geometry), self.submodels);
             let mut model: Box<dyn PhysicsModel> = match self.kind {
+                ModelKind::Spm if distribution => Box::new(Mpm::new(ec)),
                 ModelKind::Spm => Box::new(Spm::new(ec)),
                 ModelKind::Spme => Box::new(Spme::new(ec)),
                 ModelKind::Dfn => Box::new(Dfn::new(ec)),

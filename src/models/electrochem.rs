@@ -60,6 +60,18 @@ impl Electrochem {
         e.ocp.eval(c_s / e.max_concentration)
     }
 
+    /// [`Self::ocp`] as PyBaMM 26 wraps it: the stoichiometry clipped to `[1e-10, 1 - 1e-10]`
+    /// inside the function, plus [`ocp_asymptotes`] of the unclipped one, which push the
+    /// OCP up near an empty particle and down near a full one (1 mV at a stoichiometry 1e-3
+    /// from the end, 1 V at the end). The particle-size distribution uses it (its smallest
+    /// particles reach the ends); elsewhere the asymptotes are below 1e-100 V in the tested
+    /// ranges and `ocp` leaves them out.
+    pub fn bounded_ocp(&self, side: Side, c_s: f64) -> f64 {
+        let e = self.electrode(side);
+        let sto = c_s / e.max_concentration;
+        e.ocp.eval(sto.clamp(1e-10, 1.0 - 1e-10)) + ocp_asymptotes(sto)
+    }
+
     /// Particle diffusivity (m^2/s) at temperature `t` (K).
     pub fn diffusivity(&self, side: Side, t: f64) -> f64 {
         let e = self.electrode(side);
@@ -149,4 +161,22 @@ impl Electrochem {
     pub fn docv_dt(&self) -> f64 {
         self.params.positive.ocp_entropic_change - self.params.negative.ocp_entropic_change
     }
+}
+
+/// PyBaMM 26's `U_asymptotes(sto)` (V): `A(sto) - A(1 - sto)` with the softplus barrier
+/// `A(s) = a ln(1 + exp(-b (s - c)))` (`a` = 205.06 V, `b` = 6910.2, `c` = -7.7e-4), continued
+/// linearly below the stoichiometry where `1 + exp` rounds to `exp`. Exactly zero (as in
+/// PyBaMM's floating point) farther than about 0.0046 from both ends.
+pub fn ocp_asymptotes(sto: f64) -> f64 {
+    fn barrier(s: f64) -> f64 {
+        const A: f64 = 205.0568621937484;
+        const B: f64 = 6910.192179565431;
+        const C: f64 = -7.7e-4;
+        if s > 0.006 {
+            return 0.0;
+        }
+        let limit = C - (2.0 / f64::EPSILON).ln() / B;
+        A * ((1.0 + (-B * (s.max(limit) - C)).exp()).ln() - B * (s - limit).min(0.0))
+    }
+    barrier(sto) - barrier(1.0 - sto)
 }

@@ -12,8 +12,8 @@ pub struct Field {
     pub name: &'static str,
     /// Unit of the values, e.g. "mol/m^3".
     pub unit: &'static str,
-    /// What the positions measure: "x" (through the cell from the negative current collector)
-    /// or "r" (from a particle's centre).
+    /// What the positions measure: "x" (through the cell from the negative current collector),
+    /// "r" (from a particle's centre) or "R" (the particle radius, across a size distribution).
     pub axis: &'static str,
     /// Positions (m): volume centres.
     pub position: Vec<f64>,
@@ -29,6 +29,11 @@ impl Field {
     /// A concentration (mol/m^3) against x.
     pub fn concentration_x(name: &'static str, position: Vec<f64>, value: Vec<f64>) -> Self {
         Self::new(name, "mol/m^3", "x", position, value)
+    }
+
+    /// A concentration (mol/m^3) against the particle radius R of a size distribution.
+    pub fn concentration_radius(name: &'static str, radius: Vec<f64>, value: Vec<f64>) -> Self {
+        Self::new(name, "mol/m^3", "R", radius, value)
     }
 
     /// A potential (V) against x.

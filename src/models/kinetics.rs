@@ -54,6 +54,51 @@ pub fn overpotential(j: f64, j0: f64, alpha: f64, t: f64) -> f64 {
     GAS_CONSTANT * t / (alpha * FARADAY) * asinh(j / (2.0 * j0))
 }
 
+/// The potential difference `delta = phi_s - phi_e` (V) shared by parallel particle classes
+/// with fractions `weights` (-, summing to 1), exchange-current densities `j0` (A/m^2) and
+/// open-circuit potentials `ocp` (V) such that their weighted Butler-Volmer currents
+/// `j_i = 2 j0_i sinh(alpha F (delta - U_i) / (R T))` add up to `j` (A/m^2):
+/// `sum w_i j_i = j`. Writes each `j_i` into `currents`.
+///
+/// Newton's method kept inside a bracket: with `jbar0 = sum w_i j0_i` and `eta0` the
+/// overpotential that drives `j` through `jbar0`, the root lies between `min U_i + eta0` and
+/// `max U_i + eta0` (every term increases with `delta`). It iterates to round-off, so that
+/// finite differences of the result are clean. NaN when every `j0` is zero.
+pub fn shared_potential(weights: &[f64], j0: &[f64], ocp: &[f64], j: f64, alpha: f64, t: f64, currents: &mut [f64]) -> f64 {
+    let k = alpha * FARADAY / (GAS_CONSTANT * t);
+    let jbar0: f64 = weights.iter().zip(j0).map(|(w, j0)| w * j0).sum();
+    let eta0 = overpotential(j, jbar0, alpha, t);
+    let (u_min, u_max) = ocp.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &u| (a.min(u), b.max(u)));
+    let (mut lo, mut hi) = (u_min + eta0, u_max + eta0);
+    let mut delta = weights.iter().zip(j0).zip(ocp).map(|((w, j0), u)| w * j0 * u).sum::<f64>() / jbar0 + eta0;
+    if !delta.is_finite() {
+        currents.fill(f64::NAN);
+        return f64::NAN;
+    }
+    for _ in 0..200 {
+        let (mut g, mut dg) = (-j, 0.0);
+        for ((w, j0), u) in weights.iter().zip(j0).zip(ocp) {
+            let e = (k * (delta - u)).exp();
+            g += w * j0 * (e - 1.0 / e);
+            dg += w * j0 * k * (e + 1.0 / e);
+        }
+        if g > 0.0 { hi = delta } else { lo = delta }
+        let mut next = delta - g / dg;
+        if !(next > lo && next < hi) {
+            next = 0.5 * (lo + hi);
+        }
+        let step = (next - delta).abs();
+        delta = next;
+        if step <= 1e-14 * delta.abs().max(1.0) || hi - lo <= 1e-15 * delta.abs().max(1.0) {
+            break;
+        }
+    }
+    for ((c, j0), u) in currents.iter_mut().zip(j0).zip(ocp) {
+        *c = butler_volmer(*j0, delta - u, alpha, t);
+    }
+    delta
+}
+
 /// Mean of [`overpotential`]`(j, j0_k, alpha, t)` over the exchange-current densities `j0`
 /// (A/m^2, non-negative). All terms share the sign of `j`, so the mean of
 /// `asinh(j / 2 j0_k) = sign(j) ln(|x_k| + sqrt(x_k^2 + 1))` is one logarithm of a product.
@@ -136,6 +181,24 @@ mod tests {
             // 1e-15 V absolute: ln(1 + x) rounds x at tiny currents, far below any voltage of interest.
             assert!((fast - direct).abs() <= 1e-13 * direct.abs() + 1e-15, "j = {j}: {fast} vs {direct}");
         }
+    }
+
+    #[test]
+    fn shared_potential_splits_the_current_and_reduces_to_one_particle() {
+        let (w, j0, u) = ([0.2, 0.5, 0.3], [0.1, 0.4, 2.0], [0.08, 0.1, 0.25]);
+        let mut j = [0.0; 3];
+        for target in [-30.0, -1.0, 0.0, 0.3, 5.0, 200.0] {
+            let delta = super::shared_potential(&w, &j0, &u, target, 0.5, 298.15, &mut j);
+            let total: f64 = w.iter().zip(&j).map(|(w, j)| w * j).sum();
+            assert!((total - target).abs() <= 1e-12 * target.abs().max(1.0), "{target}: {total}");
+            for i in 0..3 {
+                assert_eq!(j[i], super::butler_volmer(j0[i], delta - u[i], 0.5, 298.15));
+            }
+        }
+        // identical classes: one particle's inverse kinetics
+        let mut j = [0.0; 2];
+        let delta = super::shared_potential(&[0.5, 0.5], &[0.3, 0.3], &[0.1, 0.1], 2.0, 0.5, 298.15, &mut j);
+        assert!((delta - 0.1 - super::overpotential(2.0, 0.3, 0.5, 298.15)).abs() < 1e-15, "{delta}");
     }
 
     #[test]

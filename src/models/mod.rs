@@ -10,6 +10,7 @@ pub mod electrochem;
 pub mod electrolyte;
 pub mod fields;
 pub mod kinetics;
+pub mod mpm;
 pub mod pool;
 pub mod spm;
 pub mod spme;
@@ -99,19 +100,41 @@ pub struct Submodels {
     /// PyBaMM's "stress-induced diffusion" under stress-driven LAM: `None` follows PyBaMM (on
     /// with stress-driven LAM), `Some(false)` keeps the particle diffusivities unstressed.
     pub stress_induced_diffusion: Option<bool>,
+    /// PyBaMM's "particle size": `Distribution` gives each electrode a lognormal
+    /// distribution of particle radii (`negative.radius_relative_std`,
+    /// `positive.radius_relative_std`; `mesh.size_n`, `mesh.size_p` classes), each class its
+    /// own particle, all sharing the electrode's potential (PyBaMM's MPM). SPM only.
+    pub particle_size: submodels::ParticleSize,
 }
 
 impl Submodels {
     /// Checks the submodels go together; the error names `model.submodels.NAME`. (Every
-    /// submodel is built on the SPM, SPMe and DFN.)
+    /// submodel but the particle-size distribution is built on the SPM, SPMe and DFN; the
+    /// builder refuses that one on another model.)
     pub fn check(&self) -> Result<(), crate::error::Error> {
         use submodels::SeiModel;
         let invalid = |name: &str, reason: String| crate::error::Error::InvalidSetting { field: format!("model.submodels.{name}"), reason };
         if self.stress_induced_diffusion == Some(true) && !self.lam.stress() {
             return Err(invalid("stress_induced_diffusion", format!("true needs a stress-driven loss of active material (lam = \"stress-driven\"), not {:?}", self.lam)));
         }
+        if self.particle_size == submodels::ParticleSize::Distribution {
+            let others = [("sei", self.sei != SeiModel::None), ("lam", self.lam != submodels::LamModel::None), ("plating", self.plating != submodels::PlatingModel::None)];
+            if let Some((name, _)) = others.iter().find(|(_, on)| *on) {
+                return Err(invalid("particle_size", format!("\"distribution\" is not built with the {name} submodel (only with contact resistance, thermal and the voltage-level submodels)")));
+            }
+        }
         if self.lam.reaction() && self.sei == SeiModel::None {
             return Err(invalid("lam", format!("{:?} loss of active material is driven by the SEI reaction: it needs an SEI submodel (e.g. sei = \"reaction limited\")", self.lam)));
+        }
+        Ok(())
+    }
+
+    /// [`Self::check`], and that they are built on `kind` (the particle-size distribution on
+    /// the SPM only); the error names `model.submodels.NAME`.
+    pub fn check_for(&self, kind: ModelKind) -> Result<(), crate::error::Error> {
+        self.check()?;
+        if self.particle_size == submodels::ParticleSize::Distribution && kind != ModelKind::Spm {
+            return Err(crate::error::Error::InvalidSetting { field: "model.submodels.particle_size".into(), reason: format!("\"distribution\" is built on the SPM only, not the {kind}") });
         }
         Ok(())
     }

@@ -58,6 +58,7 @@ pub fn chen2020() -> ParameterSet {
             inactive_density: 1800.0,
             volumetric_heat_capacity: 1657.0 * 700.0,
             double_layer_capacitance: 0.2,
+            radius_relative_std: super::DEFAULT_RADIUS_RELATIVE_STD,
         },
         separator: Separator {
             thickness: 12e-6,
@@ -87,6 +88,7 @@ pub fn chen2020() -> ParameterSet {
             inactive_density: 1800.0,
             volumetric_heat_capacity: 3262.0 * 700.0,
             double_layer_capacitance: 0.2,
+            radius_relative_std: super::DEFAULT_RADIUS_RELATIVE_STD,
         },
         electrolyte: Electrolyte {
             initial_concentration: 1000.0,

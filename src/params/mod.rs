@@ -30,4 +30,4 @@ pub use lam::{Lam, LamElectrode};
 pub use plating::Plating;
 pub use ocv_correction::OcvCorrection;
 pub use sei::Sei;
-pub use set::{Cell, Electrode, Electrolyte, FARADAY, GAS_CONSTANT, ParameterSet, Separator, Thermal};
+pub use set::{Cell, DEFAULT_RADIUS_RELATIVE_STD, Electrode, Electrolyte, FARADAY, GAS_CONSTANT, MAX_RADIUS_RELATIVE_STD, ParameterSet, Separator, Thermal};

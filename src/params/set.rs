@@ -57,6 +57,23 @@ pub struct Electrode {
     pub volumetric_heat_capacity: f64,
     /// Double-layer capacitance (F/m^2).
     pub double_layer_capacitance: f64,
+    /// Relative standard deviation `sd / R` (-) of the area-weighted lognormal distribution
+    /// of particle radii about `particle_radius`, used when the particle-size distribution
+    /// submodel is on (PyBaMM's `get_size_distribution_parameters`, default 0.3); 0 keeps
+    /// this electrode's single particle size.
+    #[serde(default = "default_radius_relative_std")]
+    pub radius_relative_std: f64,
+}
+
+/// PyBaMM's default relative standard deviation of the particle radii (-).
+pub const DEFAULT_RADIUS_RELATIVE_STD: f64 = 0.3;
+
+/// Largest relative standard deviation of the particle radii accepted (-): the radii then
+/// span 0 to 6 times the mean.
+pub const MAX_RADIUS_RELATIVE_STD: f64 = 1.0;
+
+fn default_radius_relative_std() -> f64 {
+    DEFAULT_RADIUS_RELATIVE_STD
 }
 
 impl Electrode {
@@ -104,6 +121,8 @@ impl Electrode {
         positive(&f("inactive_density"), self.inactive_density)?;
         positive(&f("volumetric_heat_capacity"), self.volumetric_heat_capacity)?;
         non_negative(&f("double_layer_capacitance"), self.double_layer_capacitance)?;
+        let std = self.radius_relative_std;
+        check(&f("radius_relative_std"), std, (0.0..=MAX_RADIUS_RELATIVE_STD).contains(&std), &format!("must lie between 0 (one particle size) and {MAX_RADIUS_RELATIVE_STD} (relative standard deviation of the particle radii)"))?;
         let sto = self.initial_concentration / self.max_concentration;
         if !(sto > 0.0 && sto < 1.0) {
             return Err(Error::invalid(
@@ -412,6 +431,7 @@ impl ParameterSet {
                     "inactive_density" => &mut e.inactive_density,
                     "volumetric_heat_capacity" => &mut e.volumetric_heat_capacity,
                     "double_layer_capacitance" => &mut e.double_layer_capacitance,
+                    "radius_relative_std" => &mut e.radius_relative_std,
                     _ => return Err(unknown()),
                 }
             }

@@ -119,7 +119,7 @@ pub fn run_simulate(run: &SimulateRun) -> Result<SimulateOutcome, Error> {
     let staged = OutputDir::create(&run.out, &inputs)?;
     let dir = staged.path();
     let m = run.mesh;
-    let mut builder = ModelBuilder::new(run.model, run.submodels, MeshSizes { x_n: m, x_s: m, x_p: m, r_n: m, r_p: m });
+    let mut builder = ModelBuilder::new(run.model, run.submodels, MeshSizes { x_n: m, x_s: m, x_p: m, r_n: m, r_p: m, ..Default::default() });
     let t_build = Instant::now();
     let built = builder.build(p)?;
     let build_time = t_build.elapsed().as_secs_f64();

@@ -8,6 +8,7 @@ use crate::problem::design::Metric;
 impl Study {
     /// Checks bounds, paths and settings against the base parameter set.
     pub fn validate(&self) -> Result<(), Error> {
+        self.model.submodels.check_for(self.model.kind)?;
         if !self.model.submodels.thermal && self.metrics().any(|m| m == Metric::TemperatureRise) {
             return Err(Error::InvalidSetting {
                 field: "model.submodels".into(),

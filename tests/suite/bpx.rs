@@ -76,10 +76,10 @@ fn chen2020_round_trip() {
         1e-12,
     );
     println!("{n} scalar fields round-trip within 1e-12");
-    // 78 (with the leak current, the voltage offset and gain, carried as `cellstudio.` keys), plus
-    // the 15 SEI, the 18 LAM (9 per electrode) and the 6 plating fields, which BPX does not
-    // carry: both sides hold their defaults.
-    assert_eq!(n, 78 + 15 + 18 + 6, "every scalar field compared");
+    // 80 (with the leak current, the voltage offset and gain and the two particle-radius
+    // spreads, carried as `cellstudio.` keys), plus the 15 SEI, the 18 LAM (9 per electrode)
+    // and the 6 plating fields, which BPX does not carry: both sides hold their defaults.
+    assert_eq!(n, 80 + 15 + 18 + 6, "every scalar field compared");
     assert_eq!(p.name, original.name);
 
     // OCPs: tables against the Chen 2020 functions at 50 stoichiometries.
@@ -451,6 +451,7 @@ fn modified_set_round_trip() {
     p.thermal.heat_transfer_coefficient = 25.0;
     p.cell.electrode_height = 0.1;
     p.cell.electrode_width = 1.0;
+    p.positive.radius_relative_std = 0.2;
     let imported = from_bpx_json(&to_bpx_json(&p).unwrap()).unwrap();
     let n = compare_scalars(
         &serde_json::to_value(&p).unwrap(),
@@ -458,7 +459,8 @@ fn modified_set_round_trip() {
         "",
         1e-12,
     );
-    assert_eq!(n, 78 + 15 + 18 + 6);
+    assert_eq!(n, 80 + 15 + 18 + 6);
+    assert_eq!(imported.params.positive.radius_relative_std, 0.2);
     assert_eq!(imported.params.electrolyte.diffusivity, p.electrolyte.diffusivity);
     assert_eq!(imported.params.electrolyte.conductivity, p.electrolyte.conductivity);
 }

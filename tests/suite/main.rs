@@ -45,6 +45,8 @@ mod physics;
 mod plating;
 mod power;
 mod profile_likelihood;
+mod psd;
+mod psd_reference;
 mod pulse_power;
 mod readers_never_panic;
 mod readme;

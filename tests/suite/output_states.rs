@@ -3,7 +3,7 @@
 
 use cellstudio::geometry::MeshSizes;
 use cellstudio::models::ModelBuilder;
-use cellstudio::models::submodels::{LamModel, SeiModel};
+use cellstudio::models::submodels::{LamModel, ParticleSize, SeiModel};
 use cellstudio::models::{ModelKind, Submodels};
 use cellstudio::params::chen2020;
 use cellstudio::protocol::Protocol;
@@ -22,11 +22,12 @@ fn voltage_and_temperature_read_only_the_output_states() {
         Submodels { rc: true, hysteresis: true, thermal: true, ..Default::default() },
         Submodels { sei: SeiModel::ReactionLimited, thermal: true, ..Default::default() },
         Submodels { sei: SeiModel::ReactionLimited, lam: LamModel::StressAndReactionDriven, thermal: true, ..Default::default() },
+        Submodels { particle_size: ParticleSize::Distribution, contact_resistance: true, thermal: true, ..Default::default() },
     ];
     for kind in [ModelKind::Spm, ModelKind::Spme, ModelKind::Dfn] {
         for sub in variants {
-            if kind == ModelKind::Dfn && sub.lam != LamModel::None {
-                continue; // not built on the DFN
+            if kind == ModelKind::Dfn && sub.lam != LamModel::None || kind != ModelKind::Spm && sub.particle_size != ParticleSize::Single {
+                continue; // not built on the DFN, or on the SPM only
             }
             let mut b = ModelBuilder::new(kind, sub, MeshSizes::default());
             let built = b.build(&p).unwrap();

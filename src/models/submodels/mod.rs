@@ -1,16 +1,18 @@
 //! Optional physics added to a model: lumped thermal balance (contact resistance is a
 //! single series term applied in each model's voltage), states appended by a wrapper
 //! (series RC element, OCV hysteresis), and SEI growth, loss of active material and lithium
-//! plating inside the single-particle models.
+//! plating inside the single-particle models, and a particle-size distribution in the SPM.
 
 pub mod augmented;
 pub mod lam;
 pub mod plating;
 pub mod sei;
+pub mod size_distribution;
 pub mod thermal;
 
 pub use augmented::Augmented;
 pub use lam::{LamDrivers, LamLayer, LamModel};
 pub use plating::{PlatingLayer, PlatingModel};
 pub use sei::{SeiLayer, SeiModel};
+pub use size_distribution::{ParticleSize, SizeClasses};
 pub use thermal::LumpedThermal;

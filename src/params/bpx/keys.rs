@@ -74,12 +74,14 @@ pub(super) const USER_DEFINED_FIELDS: &[&str] = &[
     "negative.inactive_density",
     "negative.volumetric_heat_capacity",
     "negative.double_layer_capacitance",
+    "negative.radius_relative_std",
     "positive.bruggeman_solid",
     "positive.charge_transfer_coefficient",
     "positive.active_density",
     "positive.inactive_density",
     "positive.volumetric_heat_capacity",
     "positive.double_layer_capacitance",
+    "positive.radius_relative_std",
     "separator.solid_density",
     "separator.volumetric_heat_capacity",
     "electrolyte.thermodynamic_factor",
@@ -126,6 +128,7 @@ const ELECTRODE_FIELDS: &[&str] = &[
     "inactive_density",
     "volumetric_heat_capacity",
     "double_layer_capacitance",
+    "radius_relative_std",
 ];
 
 /// Scalar fields outside the electrodes, as dotted paths.

@@ -37,7 +37,7 @@ pub fn run(
 }
 
 pub fn uniform_mesh(n: usize) -> MeshSizes {
-    MeshSizes { x_n: n, x_s: n, x_p: n, r_n: n, r_p: n }
+    MeshSizes { x_n: n, x_s: n, x_p: n, r_n: n, r_p: n, ..Default::default() }
 }
 
 /// Rows of a PyBaMM reference CSV in `tests/data/{folder}/{file}` (header skipped).
