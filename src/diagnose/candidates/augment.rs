@@ -67,6 +67,17 @@ impl Candidate {
             }
             Candidate::Kinetics => (self.refitted_paths().iter().map(|p| around(p)).collect::<Option<_>>()?, "reaction rate constants of both electrodes refitted".into()),
             Candidate::SolidDiffusion => (self.refitted_paths().iter().map(|p| around(p)).collect::<Option<_>>()?, "particle diffusivities refitted".into()),
+            Candidate::SizeDistribution => {
+                // Built on the SPM only (PyBaMM's MPM), without the ageing submodels.
+                let mut sized = spec.submodels;
+                sized.particle_size = ParticleSize::Distribution;
+                if spec.kind != ModelKind::Spm || spec.submodels.particle_size == ParticleSize::Distribution || sized.check_for(spec.kind).is_err() {
+                    return None;
+                }
+                spec.submodels = sized;
+                let spread = |path: &str| FitParameter::linear(path, SIZE_SPREAD_START, 0.0, 1.0);
+                (vec![spread("negative.radius_relative_std"), spread("positive.radius_relative_std")], "particle-size distribution submodel on (lognormal radii about the set's mean)".into())
+            }
             Candidate::LithiumInventory => {
                 let c = |path: &str, c0: f64, cmax: f64| FitParameter::linear(path, c0, 0.01 * cmax, 0.99 * cmax);
                 replaces.push(INITIAL_SOC.to_string());

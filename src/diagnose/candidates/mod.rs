@@ -15,6 +15,7 @@ use super::ageing::{self, Load};
 use super::features::Features;
 use crate::data::Recording;
 use crate::models::ModelKind;
+use crate::models::submodels::ParticleSize;
 use crate::params::ParameterSet;
 use crate::problem::fitting::{FitParameter, INITIAL_SOC, ModelSpec};
 use crate::problem::delay::VOLTAGE_DELAY;
@@ -30,6 +31,7 @@ pub enum Candidate {
     ElectrolyteTransport,
     Kinetics,
     SolidDiffusion,
+    SizeDistribution,
     LithiumInventory,
     ActiveMaterial,
     Thermal,
@@ -100,6 +102,11 @@ const HISTORY_C_RATE: f64 = 3.0;
 const HISTORY_START_S: f64 = 600.0;
 const HISTORY_RANGE_S: (f64, f64) = (10.0, 7200.0);
 
+/// The size-distribution candidate's starting and largest plausible relative standard
+/// deviation of the particle radii (-); PyBaMM's default spread is the start.
+const SIZE_SPREAD_START: f64 = 0.3;
+const SIZE_SPREAD_PLAUSIBLE: f64 = 0.8;
+
 /// The voltage-offset candidate's search range and plausible size (V).
 const VOLTAGE_OFFSET_SEARCH: f64 = 0.05;
 const VOLTAGE_OFFSET_PLAUSIBLE: f64 = 0.02;
@@ -122,13 +129,14 @@ const HYSTERESIS_START_RATE: f64 = 10.0;
 const HYSTERESIS_BRANCH: f64 = 0.5;
 
 impl Candidate {
-    pub const ALL: [Candidate; 22] = [
+    pub const ALL: [Candidate; 23] = [
         Candidate::SeriesResistance,
         Candidate::Electrolyte,
         Candidate::ElectrolyteComposite,
         Candidate::ElectrolyteTransport,
         Candidate::Kinetics,
         Candidate::SolidDiffusion,
+        Candidate::SizeDistribution,
         Candidate::LithiumInventory,
         Candidate::ActiveMaterial,
         Candidate::Thermal,
@@ -161,6 +169,7 @@ impl Candidate {
             Candidate::ElectrolyteTransport => "electrolyte transport properties (diffusivity, conductivity)",
             Candidate::Kinetics => "charge-transfer kinetics (exchange-current density)",
             Candidate::SolidDiffusion => "solid (particle) diffusivity",
+            Candidate::SizeDistribution => "particle-size distribution (a spread of particle radii in each electrode)",
             Candidate::LithiumInventory => "loss of lithium inventory (stoichiometry offset)",
             Candidate::ActiveMaterial => "loss of active material (electrode capacity)",
             Candidate::Thermal => "thermal (self-heating, temperature dependence)",
@@ -196,7 +205,8 @@ impl Candidate {
             | Candidate::ActiveMaterialThroughput
             | Candidate::Leak
             | Candidate::VoltageOffset
-            | Candidate::VoltageGain => {
+            | Candidate::VoltageGain
+            | Candidate::SizeDistribution => {
                 Class::MissingPhysics
             }
             Candidate::UnrelaxedStart | Candidate::VoltageDelay => Class::RecordingCondition,
@@ -213,6 +223,7 @@ impl Candidate {
             Candidate::ElectrolyteTransport => "rate-dependent polarisation that builds over the first minutes of a load and relaxes in rests, with the electrolyte model already present",
             Candidate::Kinetics => "an instantaneous overpotential at current steps that is not proportional to the current (asinh) and grows towards the ends of the stoichiometry range",
             Candidate::SolidDiffusion => "an extra drop late in a high-rate discharge and slow (many minutes) relaxation in rests",
+            Candidate::SizeDistribution => "relaxation in rests stretched over a range of times that no single diffusion time fits (small particles settle in minutes, large ones over hours), with an extra drop late in a load as the small particles run out first",
             Candidate::LithiumInventory => "the end of discharge (the knee) arrives earlier or later and the OCV is shifted along the capacity axis; persists at rest",
             Candidate::ActiveMaterial => "one electrode's OCV features are compressed along the capacity axis (less capacity), with a shifted knee; persists at rest",
             Candidate::Thermal => "losses that fall as the cell warms under load (correlated with the recorded temperature rise or with the accumulated I²)",
@@ -238,6 +249,7 @@ impl Candidate {
             Candidate::SeriesResistance => "0.1 to 100 mOhm",
             Candidate::Electrolyte | Candidate::ElectrolyteComposite => "no fitted parameters",
             Candidate::ElectrolyteTransport | Candidate::Kinetics | Candidate::SolidDiffusion => "0.05 to 20 times the set's value, not on a search bound",
+            Candidate::SizeDistribution => "relative standard deviation of the radii up to 0.8 in each electrode (the mean radius the set's)",
             Candidate::LithiumInventory => "up to 40 % of the cyclable lithium lost (or gained)",
             Candidate::ActiveMaterial => "up to 50 % of an electrode's active material lost",
             Candidate::Thermal => "heat-transfer coefficient 1 to 500 W/(m^2 K)",

@@ -42,6 +42,10 @@ impl Candidate {
                 let tau = get("cell.rc_resistance")? * get("cell.rc_capacitance")?;
                 (!(1e-3..=30.0).contains(&tau)).then(|| format!("time constant {tau:.3} s is outside 1 ms to 30 s"))
             }
+            Candidate::SizeDistribution => ["negative", "positive"].iter().find_map(|side| {
+                let s = get(&format!("{side}.radius_relative_std"))?;
+                (s > SIZE_SPREAD_PLAUSIBLE).then(|| format!("a {side} radius spread of {s:.2} exceeds {SIZE_SPREAD_PLAUSIBLE}"))
+            }),
             Candidate::Hysteresis => {
                 let h = get("cell.hysteresis_voltage")?;
                 (h > 0.05).then(|| format!("hysteresis half-width {:.1} mV exceeds 50 mV", h * 1e3))
@@ -227,5 +231,20 @@ mod tests {
         let names = vec![VOLTAGE_DELAY.to_string()];
         assert!(Candidate::VoltageDelay.unresolved(&names, &[0.006], &rec).is_some_and(|why| why.contains("1.00 s")));
         assert_eq!(Candidate::VoltageDelay.unresolved(&names, &[2.0], &rec), None);
+    }
+
+    /// The size distribution is offered on the SPM only (PyBaMM's MPM), fits both spreads,
+    /// and refuses a spread above 0.8.
+    #[test]
+    fn a_size_distribution_is_offered_on_the_spm_and_refuses_wide_spreads() {
+        let base = crate::params::chen2020();
+        let spec = |kind| ModelSpec::new(kind, crate::models::Submodels::default());
+        let aug = Candidate::SizeDistribution.augment(&spec(ModelKind::Spm), &base, &[], &Load::default()).expect("offered on the SPM");
+        assert_eq!(aug.spec.submodels.particle_size, ParticleSize::Distribution);
+        assert_eq!(aug.extra.iter().map(|e| e.path.as_str()).collect::<Vec<_>>(), ["negative.radius_relative_std", "positive.radius_relative_std"]);
+        assert!(Candidate::SizeDistribution.augment(&spec(ModelKind::Spme), &base, &[], &Load::default()).is_none());
+        let names: Vec<String> = ["negative.radius_relative_std", "positive.radius_relative_std"].map(String::from).to_vec();
+        assert_eq!(Candidate::SizeDistribution.implausible(&names, &[0.4, 0.8], &base, &Load::default()), None);
+        assert!(Candidate::SizeDistribution.implausible(&names, &[0.4, 0.85], &base, &Load::default()).is_some_and(|why| why.contains("positive radius spread of 0.85")));
     }
 }
