@@ -3446,7 +3446,208 @@ def batch_ab(root):
                initial_soc=0.8, seed=2708, period=1, compare=lion.SPM())
 
 
-BATCHES = {"u": batch_u, "v": batch_v, "w": batch_w, "x": batch_x, "y": batch_y, "z": batch_z, "q": batch_q, "r": batch_r, "s": batch_s, "t": batch_t, "p": batch_p, "o": batch_o, "n": batch_n, "m": batch_m, "l": batch_l, "k": batch_k, "j": batch_j, "i": batch_i, "h": batch_h, "f": batch_f, "e": batch_e, "g": batch_g, "d": batch_d, "c": batch_c, "a": batch_a, "b": batch_b, "ab": batch_ab}
+def batch_ac(root):
+    """Twenty-eighth batch (key "ac"), made blind (a helper session that did not read the diagnosis
+    code, judged once on the binary /work/bin/s14final before anything else). The Chen 2020 cell
+    throughout, ambients from 0 to 45 degC, each of the three models handed over (and DFN data handed
+    to the SPMe once), sampling from 1 to 60 s (one cycler-thinned log, one with current noise and
+    resolution), protocols: a cold HPPC, CC-CV with partial charges, a slow pseudo-OCV cycle, a
+    WLTP-like drive, mixed-rate cycling with poor cooling, an urban drive then a CC-CV charge, long
+    relaxation rests, constant-power steps. A control (DFN at 0 degC), a pair (negative OCP
+    hysteresis with positive active-material loss, lithium kept), two effects outside the usual
+    parameter list (the negative electrode's OCP is another graphite's, Mohtat 2020's, in place of
+    Chen 2020's; the electrolyte's transference number and thermodynamic factor are Landesfeind
+    2019's concentration- and temperature-dependent fits in place of Chen's constants 0.2594 and 1),
+    and ordinary single effects of various sizes (self-heating, temperature recorded; 5 % lithium
+    loss; a negative particle diffusivity x0.25; a small positive exchange current x0.6 at 45 degC).
+    Words as an engineer would judge them: lithium loss by its own words, active-material loss by
+    "active material", the OCP swap by words naming the electrode's open-circuit potential (not an
+    inventory / stoichiometry stand-in, which cannot reproduce a different plateau structure), the
+    electrolyte by "electrolyte" or the transference / thermodynamic factor. Each effect's size on its
+    own (the nominal candidate, or a replay, against the noise-free voltage) is in truth.json
+    (effect_rmse_mV and the replay keys).
+
+    First run (2026-11-27, binary /work/bin/s14final, sha256 61e212ae7977, load average 4.73 before,
+    3.42 after (1 min), on 2 cores shared with other sessions; 1178 s in all): 6 of 8 by the judge.
+    ac1 no missing physics (0.99 mV, noise 1.02; initial SOC 80.0 %), 1 s; ac2 round 1 "Parameter
+    mismatch: loss of active material, positive electrode (10 % of its capacity) together with loss of
+    lithium inventory", 12.23 -> 2.46 mV, round 2 "Missing physics: OCV hysteresis" (8.02 mV, truth 8),
+    -> 1.00 mV (noise 1.02), round 3 no missing physics (positive fraction 0.6119, truth 0.6118; the
+    inventory partner holds the concealed cyclable lithium to 0.02 %, as concealed), 101 s; ac5
+    "Missing physics: thermal" (h 7.959, truth 8; ambient 313.11 K), 9.27 -> 0.98 mV, 5 s; ac6 "Missing
+    physics: loss of lithium inventory together with electrolyte transport (SPMe -> DFN)" (cyclable
+    lithium within 0.003 % of the truth's, 3.45 % less than the set's), 28.26 -> 1.02 mV, 150 s; ac7
+    "Parameter mismatch: solid (particle) diffusivity" (negative 8.307e-15, truth 8.25e-15; positive
+    4.002e-15, the set's 4e-15), 3.67 -> 0.98 mV (noise 0.99), 3 s; ac8 a tie "charge-transfer
+    kinetics (positive rate constant 2.054e-6, truth 2.052e-6; negative 6.477e-7, the set's 6.48e-7) or
+    series/contact resistance 1.45 mOhm", 3.99 -> 1.00 mV, 11 s, accepted on the tie (two load levels
+    whose overpotentials are still linear in the current, as the report says). Missed: ac3 (the other
+    graphite's OCP, outside the list) round 1 "Parameter mismatch: loss of lithium inventory" (5.1 %
+    more cyclable lithium than the set's, the negative's initial concentration on its search bound),
+    83.94 -> 16.96 mV, round 2 "Unexplained structure in 14340-18450 s, 0-630 s" (16.96 mV, noise 1.01;
+    closest a voltage offset of +22.5 mV, over its 20 mV bound), whose text does say "at rest the model
+    is off by 27.48 mV RMS: the cell's open-circuit voltage differs from the set's (its electrodes' OCP
+    curves or their balance)" and suggests a pseudo-OCV fit; 3 s. The judge takes the first verdict,
+    the inventory stand-in, which is not accepted here. ac4 (Landesfeind t+ and thermodynamic factor)
+    timed out at the judge's 900 s with nothing written ("?"). An uncounted rerun afterwards (same
+    binary, no cap but a 2700 s timeout, load average about 4) printed round 1 and then timed out in
+    round 2: "Missing physics: RC / double-layer dynamics together with loss of lithium inventory" (RC
+    4.52 mOhm, 3580 F, a 16 s time constant), 11.79 -> 3.90 mV (hold-out 10.55 -> 4.99); electrolyte
+    transport properties ranked fourth (conductivity factor 0.51, diffusivity 0.95; 6.78 mV, hold-out
+    cut 16 %), so the first verdict would have missed the electrolyte even without the cap: the extra
+    concentration overpotential, building over tens of seconds under the drive's bursts, is taken for
+    an interface RC.
+    """
+    # ac1: control, a cold HPPC (four levels, two rates each way), DFN data and model at 0 degC, cycler artefacts
+    p = chen()
+    p.update({"Ambient temperature [K]": 273.15, "Initial temperature [K]": 273.15})
+    level = ["Discharge at 1C for 10 seconds", "Rest for 40 seconds", "Charge at 0.5C for 10 seconds", "Rest for 40 seconds",
+             "Discharge at 2C for 10 seconds", "Rest for 40 seconds", "Charge at 1C for 10 seconds", "Rest for 5 minutes"]
+    steps = ["Rest for 10 minutes"] + (["Discharge at C/2 for 12 minutes", "Rest for 20 minutes"] + level) * 4 + ["Rest for 10 minutes"]
+    write_case(root, "ac1_control_hppc_0C_cycler_dfn", lion.DFN(), p, steps,
+               {"effect": "none", "candidate_model": "dfn", "accept": ["no missing"], "ambient_temperature_K": 273.15,
+                "note": "negative control at 0 degC (isothermal, not recorded): DFN data and model, nothing concealed. A cold HPPC "
+                        "from 80 % SOC: 10 min rest, then 4 x (C/2 for 12 min, 20 min rest, 1C discharge 10 s, 40 s rest, C/2 "
+                        "charge 10 s, 40 s rest, 2C discharge 10 s, 40 s rest, 1C charge 10 s, 5 min rest; charge pulses at half the "
+                        "discharge rates, as a cold HPPC limits them), 10 min rest (levels at about 70, 60, 50, 40 % SOC); cycler artefacts (irregular sampling, 3 mA current noise, 0.1 mV resolution), 1 mV noise"},
+               initial_soc=0.8, seed=2801, cycler=CYCLER, compare=lion.DFN())
+    # ac2: negative OCP hysteresis +-8 mV with 8 % positive LAM (lithium kept), CC-CV with partial charges, 15 degC, SPMe
+    p = scaled(chen(), "Positive electrode active material volume fraction", 0.92)
+    moved = (0.08 * 0.665 * p["Positive electrode thickness [m]"] * p["Initial concentration in positive electrode [mol.m-3]"]
+             / (p["Negative electrode active material volume fraction"] * p["Negative electrode thickness [m]"]))
+    p.update({"Initial concentration in negative electrode [mol.m-3]": p["Initial concentration in negative electrode [mol.m-3]"] + moved,
+              "Ambient temperature [K]": 288.15, "Initial temperature [K]": 288.15})
+    with_negative_hysteresis(p, 0.008)
+    steps = ["Rest for 10 minutes", "Charge at C/2 for 40 minutes", "Rest for 30 minutes", "Discharge at 1C for 20 minutes", "Rest for 30 minutes",
+             "Charge at C/2 until 4.1 V", "Hold at 4.1 V until C/20", "Rest for 1 hour", "Discharge at C/3 for 2 hours", "Rest for 1 hour",
+             "Charge at 1C for 15 minutes", "Rest for 30 minutes"]
+    name = "ac2_hysteresis_8mV_and_lam_positive_8pct_partial_cccv_15C_spme"
+    write_case(root, name, lion.SPMe(options={"open-circuit potential": ("one-state hysteresis", "single")}), p, steps,
+               {"effect": "hysteresis+active_material_loss", "candidate_model": "spme", "accept": ["hysteresis", "active material"],
+                "ambient_temperature_K": 288.15,
+                "note": "one-state hysteresis of the negative OCP, +-8 mV (decay rate 10, initial state 0), together with an 8 % loss "
+                        "of positive active material (volume fraction 0.665 -> 0.6118) with the lithium inventory kept (the lithium of "
+                        f"the lost material moved into the negative's initial concentration, +{moved:.0f} mol/m3), at 15 degC "
+                        "(isothermal, not recorded). CC-CV with partial charges, from 30 % SOC: 10 min rest, C/2 charge for 40 min, 30 "
+                        "min rest, 1C for 20 min, 30 min rest, C/2 CC-CV to 4.1 V and C/20, 1 h rest, C/3 for 2 h, 1 h rest, 1C charge "
+                        "for 15 min, 30 min rest; sampled every 10 s, 1 mV noise; SPMe (one-state hysteresis) data and the SPMe without "
+                        "it. spme_hysteresis_only_rmse_mV: the SPMe with the hysteresis alone (LAM missing) against the recording; "
+                        "spme_lam_only_rmse_mV: with the LAM alone (hysteresis missing). These replays and effect_rmse_mV are "
+                        "time-aligned, and the CV hold ends at another time in each (the data's CC-CV takes 6549 s, the nominal's "
+                        "6739 s), so after it they also measure a shift of the protocol; before it (the first 2.6 h) the hysteresis "
+                        "alone is 3-5 mV RMS (the smaller member, 3-5x the noise) and the LAM alone (with the initial state set as 30 % "
+                        "SOC of each cell) about 40 mV"},
+               initial_soc=0.3, seed=2802, period=10, compare=lion.SPMe())
+    p_h = chen(); p_h.update({"Ambient temperature [K]": 288.15, "Initial temperature [K]": 288.15}); with_negative_hysteresis(p_h, 0.008)
+    replay_rmse(root, name, lion.SPMe(options={"open-circuit potential": ("one-state hysteresis", "single")}), p_h, steps, 0.3,
+                "spme_hysteresis_only_rmse_mV", period=10)
+    p_l = scaled(chen(), "Positive electrode active material volume fraction", 0.92)
+    p_l.update({"Initial concentration in negative electrode [mol.m-3]": p_l["Initial concentration in negative electrode [mol.m-3]"] + moved,
+                "Ambient temperature [K]": 288.15, "Initial temperature [K]": 288.15})
+    replay_rmse(root, name, lion.SPMe(), p_l, steps, 0.3, "spme_lam_only_rmse_mV", period=10)
+    # ac3: outside the list: the negative OCP is another graphite's (Mohtat 2020) in place of Chen 2020's; slow cycle with long rests, 30 degC, SPM
+    p = chen()
+    mohtat = pybamm.ParameterValues("Mohtat2020")["Negative electrode OCP [V]"]
+    p.update({"Negative electrode OCP [V]": lambda sto, f=mohtat: f(sto), "Ambient temperature [K]": 303.15, "Initial temperature [K]": 303.15})
+    steps = ["Rest for 10 minutes", "Discharge at C/5 until 2.7 V", "Rest for 1 hour", "Charge at C/5 for 3 hours", "Rest for 1 hour"]
+    write_case(root, "ac3_negative_ocp_other_graphite_c5_cycle_30C_spm", lion.SPM(), p, steps,
+               {"effect": "ocp_mismatch", "candidate_model": "spm",
+                "accept": ["OCP", "open-circuit potential", "open circuit potential", "equilibrium potential", "OCV curve", "OCV shape",
+                           "OCV function", "half-cell"],
+                "ambient_temperature_K": 303.15,
+                "note": "outside the tool's listed candidates: the negative electrode's OCP is another graphite's (PyBaMM's Mohtat 2020 "
+                        "graphite_ocp_PeymanMPM) in place of Chen 2020's LG M50 graphite: the stage-2 plateau sits about 38 mV lower "
+                        "and ends at another stoichiometry (a cell whose graphite is not the one its parameter set was measured on). Not "
+                        "a constant offset and not a stretch of the stoichiometry axis, so a lithium-inventory / active-material / "
+                        "stoichiometry refit is a stand-in and is not accepted; only words naming the electrode's open-circuit "
+                        "(equilibrium) potential curve are. At 30 degC (isothermal, not recorded), from full (4.2 V): 10 min rest, C/5 "
+                        "to 2.7 V, 1 h rest, C/5 charge for 3 h, 1 h rest; sampled every 30 s, 1 mV noise; SPM data and model"},
+               initial_soc=1.0, seed=2803, period=30, compare=lion.SPM())
+    # ac4: outside the list: Landesfeind 2019 concentration-dependent transference number and thermodynamic factor, WLTP-like drive, 25 degC, DFN
+    p = chen()
+    o = pybamm.ParameterValues("ORegan2022")
+    p.update({"Cation transference number": o["Cation transference number"], "Thermodynamic factor": o["Thermodynamic factor"]})
+    steps = ["Rest for 5 minutes", pybamm.step.current(wltp_like_current(2804)), "Rest for 20 minutes", "Discharge at 2C for 5 minutes",
+             "Rest for 20 minutes"]
+    write_case(root, "ac4_electrolyte_transference_and_tdf_landesfeind_wltp_25C_dfn", lion.DFN(), p, steps,
+               {"effect": "electrolyte_transport", "candidate_model": "dfn",
+                "accept": ["electrolyte", "transference", "thermodynamic factor"],
+                "note": "outside the tool's usual parameters: the electrolyte's cation transference number and thermodynamic factor "
+                        "are Landesfeind 2019's concentration- and temperature-dependent fits for LiPF6 in EC:EMC 3:7 (as in PyBaMM's "
+                        "ORegan2022 set; at 25 degC and 1 M t+ = 0.22 and a thermodynamic factor of 2.2, 3.8 at 2 M) in place of "
+                        "Chen 2020's constants 0.2594 and 1 (the same electrolyte); conductivity and diffusivity are Chen's: the "
+                        "concentration overpotential is about twice the candidate's. Its physics is electrolyte transport. At 25 "
+                        "degC (isothermal, not recorded), from 85 % SOC: 5 min rest, a WLTP-like drive (wltp_like_current seed 2804: "
+                        "1800 s, four phases, peak 3C discharge, regeneration to 1.5C charge, current linear between 1 s points), 20 "
+                        "min rest, 2C for 5 min, 20 min rest; sampled every 1 s, 1 mV noise; "
+                        "DFN data and model"},
+               initial_soc=0.85, seed=2804, period=1, compare=lion.DFN())
+    # ac5: lumped self-heating, poor cooling (h = 8), temperature recorded, mixed-rate cycling at 40 degC, SPM
+    p = chen()
+    p.update({"Ambient temperature [K]": 313.15, "Initial temperature [K]": 313.15, "Total heat transfer coefficient [W.m-2.K-1]": 8.0})
+    steps = ["Rest for 5 minutes", "Discharge at 1C for 10 minutes", "Discharge at 2C for 6 minutes", "Discharge at C/2 for 15 minutes",
+             "Discharge at 3C for 2 minutes", "Rest for 10 minutes", "Charge at 1.5C for 12 minutes", "Discharge at 2C for 8 minutes",
+             "Rest for 10 minutes", "Discharge at 1C until 3.0 V", "Rest for 30 minutes"]
+    write_case(root, "ac5_thermal_h8_recorded_mixed_rate_40C_spm", lion.SPM(options={"thermal": "lumped"}), p, steps,
+               {"effect": "thermal", "candidate_model": "spm", "accept": ["thermal", "self-heating", "heat"], "ambient_temperature_K": 313.15,
+                "note": "lumped self-heating of a poorly cooled cell, h = 8 W/(m2 K), ambient and initial 40 degC (at 40 degC the "
+                        "Arrhenius dependences are flatter, so a given rise moves the voltage less than in a cold cell). Mixed-rate "
+                        "cycling from 95 % SOC: 5 min rest, 1C for 10 min, 2C for 6 min, C/2 for 15 min, 3C for 2 min, 10 min rest, "
+                        "1.5C charge for 12 min, 2C for 8 min, 10 min rest, 1C to 3.0 V, 30 min rest; temperature recorded (0.05 K "
+                        "noise, 0.1 K resolution); sampled every 10 s, 1 mV noise; SPM (lumped thermal) data handed to the isothermal "
+                        "SPM. effect_rmse_mV is what the heating alone does"},
+               initial_soc=0.95, temperature=True, seed=2805, period=10, cycler={"quantum_K": 0.1, "quantum_V": 1e-4, "quantum_A": 1e-4},
+               compare=lion.SPM())
+    # ac6: 5 % lithium loss, an urban drive then a CC-CV charge and a 1C discharge, 20 degC, DFN data handed to the SPMe
+    p = scaled(chen(), "Initial concentration in negative electrode [mol.m-3]", 0.95)
+    p.update({"Ambient temperature [K]": 293.15, "Initial temperature [K]": 293.15})
+    steps = (["Rest for 5 minutes"] + urban_drive(2806, 25) + ["Rest for 15 minutes", "Charge at C/2 until 4.2 V", "Hold at 4.2 V until C/20",
+                                                              "Rest for 20 minutes", "Discharge at 1C until 3.0 V", "Rest for 15 minutes"])
+    name = "ac6_inventory_5pct_urban_drive_cccv_20C_dfn_data_spme"
+    write_case(root, name, lion.DFN(), p, steps,
+               {"effect": "lithium_inventory_loss", "candidate_model": "spme", "accept": ["inventory", "lithium loss", "lithium lost", "cyclable"],
+                "ambient_temperature_K": 293.15,
+                "note": "5 % less lithium (initial negative concentration x0.95; the initial state set as 55 % SOC of the aged cell), "
+                        "at 20 degC (isothermal, not recorded). From 55 % SOC: 5 min rest, an urban drive (urban_drive seed 2806, 25 "
+                        "segments: bursts of 1.5-3C, cruising, regeneration, idling), 15 min rest, C/2 CC-CV to 4.2 V and C/20, 20 min "
+                        "rest, 1C to 3.0 V, 15 min rest; sampled every 2 s, 1 mV noise. DFN data handed to the SPMe: electrolyte "
+                        "transport (SPMe -> DFN) named beside the loss is right too, but the first verdict must name the lithium. "
+                        "spme_with_loss_rmse_mV: the SPMe with the true loss (the SPMe's own error against the DFN); "
+                        "dfn_nominal_rmse_mV: the nominal DFN (what the loss alone does)"},
+               initial_soc=0.55, seed=2806, period=2, compare=lion.SPMe())
+    replay_rmse(root, name, lion.SPMe(), p.copy(), steps, 0.55, "spme_with_loss_rmse_mV", period=2)
+    p0 = chen(); p0.update({"Ambient temperature [K]": 293.15, "Initial temperature [K]": 293.15})
+    replay_rmse(root, name, lion.DFN(), p0, steps, 0.55, "dfn_nominal_rmse_mV", period=2)
+    # ac7: negative particle diffusivity x0.25, 1C partial discharges and a charge with 2 h relaxation rests, 10 degC, logged every 60 s, SPMe
+    p = scaled(chen(), "Negative particle diffusivity [m2.s-1]", 0.25)
+    p.update({"Ambient temperature [K]": 283.15, "Initial temperature [K]": 283.15})
+    steps = ["Rest for 10 minutes", "Discharge at 1C for 20 minutes", "Rest for 2 hours", "Discharge at 1C for 20 minutes", "Rest for 2 hours",
+             "Charge at 1C for 15 minutes", "Rest for 90 minutes"]
+    write_case(root, "ac7_diffusivity_negative_long_relaxations_10C_60s_spme", lion.SPMe(), p, steps,
+               {"effect": "solid_diffusivity", "candidate_model": "spme", "accept": ["diffusiv"], "ambient_temperature_K": 283.15,
+                "note": "negative particle diffusivity x0.25 (all stoichiometries), at 10 degC (isothermal, not recorded). From full: "
+                        "10 min rest, 1C for 20 min, 2 h rest, 1C for 20 min, 2 h rest, 1C charge for 15 min, 90 min rest (6.6 h; the "
+                        "long rests show the slow relaxation); logged every 60 s (a step's first and last points kept), 1 mV noise; "
+                        "SPMe data and model. effect_rmse_mV is what the slower diffusion alone does"},
+               initial_soc=1.0, seed=2807, period=60, compare=lion.SPMe())
+    # ac8: positive exchange current x0.6 (small at 45 degC), constant-power steps, 45 degC, DFN, 5 s, current noise and resolution
+    p = scaled(chen(), "Positive electrode exchange-current density [A.m-2]", 0.6)
+    p.update({"Ambient temperature [K]": 318.15, "Initial temperature [K]": 318.15})
+    steps = ["Rest for 10 minutes", "Discharge at 10 W for 15 minutes", "Discharge at 25 W for 3 minutes", "Rest for 10 minutes",
+             "Charge at 12 W for 10 minutes", "Rest for 10 minutes", "Discharge at 18 W for 20 minutes", "Discharge at 30 W for 1 minute",
+             "Rest for 15 minutes", "Charge at 8 W for 15 minutes", "Rest for 20 minutes"]
+    write_case(root, "ac8_kinetics_positive_small_constant_power_45C_dfn", lion.DFN(), p, steps,
+               {"effect": "kinetics", "candidate_model": "dfn", "accept": ["kinetic", "exchange", "charge-transfer", "charge transfer", "reaction rate"],
+                "ambient_temperature_K": 318.15,
+                "note": "positive exchange-current density x0.6 (a small effect: at 45 degC the exchange currents are large), at 45 "
+                        "degC (isothermal, not recorded). Constant-power steps from 80 % SOC: 10 min rest, 10 W for 15 min, 25 W for 3 "
+                        "min, 10 min rest, 12 W charge for 10 min, 10 min rest, 18 W for 20 min, 30 W for 1 min, 15 min rest, 8 W charge "
+                        "for 15 min, 20 min rest (2.3 h); sampled every 5 s, 3 mA current noise, 0.1 mV / 0.1 mA resolution, 1 mV "
+                        "noise; DFN data and model. effect_rmse_mV is what the slower kinetics alone do"},
+               initial_soc=0.8, seed=2808, period=5, cycler={"current_noise_A": 3e-3, "quantum_V": 1e-4, "quantum_A": 1e-4}, compare=lion.DFN())
+
+
+BATCHES = {"u": batch_u, "v": batch_v, "w": batch_w, "x": batch_x, "y": batch_y, "z": batch_z, "q": batch_q, "r": batch_r, "s": batch_s, "t": batch_t, "p": batch_p, "o": batch_o, "n": batch_n, "m": batch_m, "l": batch_l, "k": batch_k, "j": batch_j, "i": batch_i, "h": batch_h, "f": batch_f, "e": batch_e, "g": batch_g, "d": batch_d, "c": batch_c, "a": batch_a, "b": batch_b, "ab": batch_ab, "ac": batch_ac}
 
 if __name__ == "__main__":
     root = sys.argv[1] if len(sys.argv) > 1 else "out/unseen-cases"
