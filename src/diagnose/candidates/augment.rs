@@ -79,7 +79,7 @@ impl Candidate {
                 (vec![spread("negative.radius_relative_std"), spread("positive.radius_relative_std")], "particle-size distribution submodel on (lognormal radii about the set's mean)".into())
             }
             Candidate::LithiumInventory => {
-                let c = |path: &str, c0: f64, cmax: f64| FitParameter::linear(path, c0, 0.01 * cmax, 0.99 * cmax);
+                let c = |path: &str, c0: f64, cmax: f64| FitParameter::linear(path, c0, INVENTORY_EDGE * cmax, (1.0 - INVENTORY_EDGE) * cmax);
                 replaces.push(INITIAL_SOC.to_string());
                 (
                     vec![

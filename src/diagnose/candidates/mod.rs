@@ -102,6 +102,10 @@ const HISTORY_C_RATE: f64 = 3.0;
 const HISTORY_START_S: f64 = 600.0;
 const HISTORY_RANGE_S: (f64, f64) = (10.0, 7200.0);
 
+/// The lithium-inventory candidate searches each electrode's initial stoichiometry within
+/// this much of its ends (-); a fit that ends there has run out of the OCP curve.
+const INVENTORY_EDGE: f64 = 0.01;
+
 /// The size-distribution candidate's starting and largest plausible relative standard
 /// deviation of the particle radii (-); PyBaMM's default spread is the start.
 const SIZE_SPREAD_START: f64 = 0.3;

@@ -28,6 +28,15 @@ impl Candidate {
                 let (cn, cp) = (get("negative.initial_concentration")?, get("positive.initial_concentration")?);
                 let lithium = |a: f64, b: f64| base.negative.active_fraction * base.negative.thickness * a + base.positive.active_fraction * base.positive.thickness * b;
                 let change = lithium(cn, cp) / lithium(base.negative.initial_concentration, base.positive.initial_concentration) - 1.0;
+                // A start at the end of an electrode's stoichiometry range is where the search
+                // stopped, not an estimate: the fit ran out of that electrode's OCP curve (more
+                // likely the curve itself, or the balance, differs from the set's).
+                let edge = [("negative", cn / base.negative.max_concentration), ("positive", cp / base.positive.max_concentration)]
+                    .into_iter()
+                    .find(|(_, x)| (x - INVENTORY_EDGE).min(1.0 - INVENTORY_EDGE - x) < 1e-3 * (1.0 - 2.0 * INVENTORY_EDGE));
+                if let Some((side, x)) = edge {
+                    return Some(format!("the {side} electrode would start at stoichiometry {x:.3}, the end of its search range: the fit ran out of its OCP curve (the curve or the balance may differ from the set's)"));
+                }
                 (change.abs() > 0.4).then(|| format!("a change of {:.0} % of the cyclable lithium exceeds 40 %", 100.0 * change))
             }
             Candidate::ActiveMaterial => self.own(names, values).find_map(|(n, v)| {
@@ -246,5 +255,18 @@ mod tests {
         let names: Vec<String> = ["negative.radius_relative_std", "positive.radius_relative_std"].map(String::from).to_vec();
         assert_eq!(Candidate::SizeDistribution.implausible(&names, &[0.4, 0.8], &base, &Load::default()), None);
         assert!(Candidate::SizeDistribution.implausible(&names, &[0.4, 0.85], &base, &Load::default()).is_some_and(|why| why.contains("positive radius spread of 0.85")));
+    }
+
+    /// Lithium inventory fitted to the end of an electrode's stoichiometry range has run out
+    /// of its OCP curve: implausible, whatever the change of lithium.
+    #[test]
+    fn an_inventory_at_the_end_of_the_stoichiometry_range_is_implausible() {
+        let base = crate::params::chen2020();
+        let names: Vec<String> = ["negative.initial_concentration", "positive.initial_concentration"].map(String::from).to_vec();
+        let (cn, cp) = (base.negative.initial_concentration, base.positive.initial_concentration);
+        assert_eq!(Candidate::LithiumInventory.implausible(&names, &[0.97 * cn, cp], &base, &Load::default()), None);
+        let edge = (1.0 - INVENTORY_EDGE) * base.negative.max_concentration;
+        let why = Candidate::LithiumInventory.implausible(&names, &[edge, cp], &base, &Load::default());
+        assert!(why.as_ref().is_some_and(|w| w.contains("negative electrode would start at stoichiometry 0.990")), "{why:?}");
     }
 }
