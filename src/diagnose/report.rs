@@ -392,7 +392,7 @@ pub fn superseded(superseded: &[super::backward::Superseded]) -> String {
 }
 
 /// The conclusion over all rounds: the effects named and kept (not superseded), and the fit
-/// they reach.
+/// they reach; "part of the recording" when the last round leaves structure unexplained.
 pub fn conclusion(rounds: &[Diagnosis]) -> String {
     let Some(last) = rounds.last() else { return String::new() };
     let named: Vec<(usize, &CandidateOutcome)> = rounds.iter().enumerate().filter(|(_, d)| d.found).filter_map(|(k, d)| d.best().map(|c| (k + 1, c))).collect();
@@ -422,13 +422,18 @@ pub fn conclusion(rounds: &[Diagnosis]) -> String {
     let dropped: Vec<String> = last.superseded.iter().map(|s| format!("{} (round {})", s.name, s.round)).collect();
     let final_rmse = last.best().filter(|_| last.found).and_then(|c| c.fit.as_ref()).map_or(last.baseline.rmse_all, |f| f.rmse_all);
     let rmse = last.superseded.iter().map(|s| s.rmse_without).fold(final_rmse, f64::min);
+    // A last round that leaves structure no candidate removes: the named effects are only
+    // part of the story.
+    let rest = (!last.found && matches!(last.verdict, Verdict::Unexplained | Verdict::BrokeDown)).then(|| format!(" The rest is unexplained (round {}).", rounds.len()));
     let mut out = format!(
-        "Conclusion: {} explain{} the recording, RMSE {} -> {} (noise {}).",
+        "Conclusion: {} explain{} {}, RMSE {} -> {} (noise {}).{}",
         kept.join(" + "),
         if kept.len() == 1 { "s" } else { "" },
+        if rest.is_some() { "part of the recording" } else { "the recording" },
         mv(rounds[0].baseline.rmse_all),
         mv(rmse),
-        mv(rounds[0].noise)
+        mv(rounds[0].noise),
+        rest.unwrap_or_default()
     );
     if !dropped.is_empty() {
         out.push_str(&format!(" Superseded by the later effects: {}.", dropped.join(", ")));
