@@ -37,6 +37,12 @@ impl Default for LmSettings {
     }
 }
 
+/// Whether `value` lies within 1e-3 of the range of either end of `[lower, upper]`: where a
+/// fit counts a parameter as ended on its search bound.
+pub fn near_bound(value: f64, lower: f64, upper: f64) -> bool {
+    (value - lower).abs() <= 1e-3 * (upper - lower) || (upper - value).abs() <= 1e-3 * (upper - lower)
+}
+
 /// The result of a least-squares fit.
 #[derive(Clone, Debug, Serialize)]
 pub struct LeastSquaresFit {
@@ -258,7 +264,7 @@ pub fn levenberg_marquardt<P: LeastSquares>(problem: &P, start: &[f64], settings
     let (cov, ln_det, rank) = informed_inverse_and_log_det(&jtj, k, &informed)?;
     let dxdz = scale.dx_dz(&x);
     let std_errors = (0..k).map(|i| (sigma2 * inflation * cov[i * k + i]).sqrt() * dxdz[i]).collect();
-    let on_bound = z.iter().zip(&bounds).map(|(v, (lo, hi))| (v - lo).abs() <= 1e-3 * (hi - lo) || (hi - v).abs() <= 1e-3 * (hi - lo)).collect();
+    let on_bound = z.iter().zip(&bounds).map(|(v, (lo, hi))| near_bound(*v, *lo, *hi)).collect();
     Ok(LeastSquaresFit {
         x,
         std_errors,

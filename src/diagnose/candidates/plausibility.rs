@@ -33,7 +33,7 @@ impl Candidate {
                 // likely the curve itself, or the balance, differs from the set's).
                 let edge = [("negative", cn / base.negative.max_concentration), ("positive", cp / base.positive.max_concentration)]
                     .into_iter()
-                    .find(|(_, x)| (x - INVENTORY_EDGE).min(1.0 - INVENTORY_EDGE - x) < 1e-3 * (1.0 - 2.0 * INVENTORY_EDGE));
+                    .find(|(_, x)| crate::problem::least_squares::near_bound(*x, INVENTORY_EDGE, 1.0 - INVENTORY_EDGE));
                 if let Some((side, x)) = edge {
                     return Some(format!("the {side} electrode would start at stoichiometry {x:.3}, the end of its search range: the fit ran out of its OCP curve (the curve or the balance may differ from the set's)"));
                 }
