@@ -68,10 +68,11 @@ impl Candidate {
             Candidate::Kinetics => (self.refitted_paths().iter().map(|p| around(p)).collect::<Option<_>>()?, "reaction rate constants of both electrodes refitted".into()),
             Candidate::SolidDiffusion => (self.refitted_paths().iter().map(|p| around(p)).collect::<Option<_>>()?, "particle diffusivities refitted".into()),
             Candidate::SizeDistribution => {
-                // Built on the SPM only (PyBaMM's MPM), without the ageing submodels.
+                // Built on the SPM only (PyBaMM's MPM), without the ageing submodels: what
+                // `check_for` refuses is not offered.
                 let mut sized = spec.submodels;
                 sized.particle_size = ParticleSize::Distribution;
-                if spec.kind != ModelKind::Spm || spec.submodels.particle_size == ParticleSize::Distribution || sized.check_for(spec.kind).is_err() {
+                if spec.submodels.particle_size == ParticleSize::Distribution || sized.check_for(spec.kind).is_err() {
                     return None;
                 }
                 spec.submodels = sized;
