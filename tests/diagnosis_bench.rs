@@ -109,7 +109,9 @@ fn judged(t: &Truth, rounds: &[Diagnosis]) -> bool {
     }
 }
 
-fn run_case(name: &str) -> Vec<Diagnosis> {
+/// A case's truth and its diagnosis (up to 3 rounds) on Chen 2020 at the case's ambient,
+/// unjudged.
+fn diagnose_case(name: &str) -> (Truth, Vec<Diagnosis>) {
     let t = truth(name);
     let rec = Recording::from_csv(&case_dir(name).join("recording.csv")).unwrap();
     let mut p = chen2020();
@@ -119,6 +121,11 @@ fn run_case(name: &str) -> Vec<Diagnosis> {
     let start = std::time::Instant::now();
     let rounds = diagnose_rounds(&rec, &p, &options, 3).unwrap();
     println!("{name}: {:.1} s", start.elapsed().as_secs_f64());
+    (t, rounds)
+}
+
+fn run_case(name: &str) -> Vec<Diagnosis> {
+    let (t, rounds) = diagnose_case(name);
     for (k, d) in rounds.iter().enumerate() {
         println!("  round {}: {}", k + 1, d.summary);
     }
@@ -962,12 +969,7 @@ fn ab4_a_model_that_breaks_down_early_is_not_called_complete_spme() {
     // was left to diagnose, and its first run said "No missing physics". A model that
     // cannot follow the recording is not complete: the verdict is now unexplained and says
     // where it broke down. (The self-heating itself is not named: see the README.)
-    let name = "diagnosis-extra/ab4_thermal_h10_recorded_fast_charge_cycles_20C_spme";
-    let t = truth(name);
-    let rec = Recording::from_csv(&case_dir(name).join("recording.csv")).unwrap();
-    let mut p = chen2020();
-    (p.thermal.ambient_temperature, p.thermal.initial_temperature) = (t.ambient, t.ambient);
-    let rounds = diagnose_rounds(&rec, &p, &DiagnoseOptions::new(ModelSpec::new(t.model, Submodels::default())), 3).unwrap();
+    let (t, rounds) = diagnose_case("diagnosis-extra/ab4_thermal_h10_recorded_fast_charge_cycles_20C_spme");
     let d = &rounds[0];
     let b = d.broke_down.as_ref().expect("the breakdown is recorded");
     assert!((b.at_s - 628.0).abs() < 2.0 && b.kept_points < b.recorded_points / 10, "{b:?}");
@@ -999,15 +1001,11 @@ fn ac3_another_graphites_ocp_is_not_called_a_lithium_loss_at_the_stoichiometry_e
     // concentration, the end of the search range. That is where the fit ran out of the OCP
     // curve, not a loss: implausible now. Whatever is named instead leaves tens of mV, and
     // the conclusion says the named effect explains only part of the recording.
-    let name = "diagnosis-extra/ac3_negative_ocp_other_graphite_c5_cycle_30C_spm";
-    let t = truth(name);
-    let rec = Recording::from_csv(&case_dir(name).join("recording.csv")).unwrap();
-    let mut p = chen2020();
-    (p.thermal.ambient_temperature, p.thermal.initial_temperature) = (t.ambient, t.ambient);
-    let rounds = diagnose_rounds(&rec, &p, &DiagnoseOptions::new(ModelSpec::new(t.model, Submodels::default())), 3).unwrap();
+    let (_, rounds) = diagnose_case("diagnosis-extra/ac3_negative_ocp_other_graphite_c5_cycle_30C_spm");
+    let c_max = chen2020().negative.max_concentration;
     let edge = |c: &cellstudio::diagnose::CandidateOutcome| {
         let f = c.fit.as_ref()?;
-        let x = f.values[f.names.iter().position(|n| n == "negative.initial_concentration")?] / p.negative.max_concentration;
+        let x = f.values[f.names.iter().position(|n| n == "negative.initial_concentration")?] / c_max;
         Some(x > 0.989)
     };
     for d in &rounds {
