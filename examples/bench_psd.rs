@@ -13,11 +13,7 @@ use cellstudio::models::{ModelBuilder, ModelKind, Submodels};
 use cellstudio::params::chen2020;
 use cellstudio::protocol::{Protocol, Step};
 use cellstudio::simulation::{SimOptions, simulate};
-
-fn median(mut v: Vec<f64>) -> f64 {
-    v.sort_by(f64::total_cmp);
-    v[v.len() / 2]
-}
+use cellstudio::stats::median;
 
 fn main() {
     let repeats: usize = std::env::args().nth(1).and_then(|s| s.parse().ok()).unwrap_or(20);
@@ -50,7 +46,7 @@ fn main() {
                     stats = Some(sol.stats);
                 }
                 let s = stats.unwrap();
-                println!("| {label} | {} | {:.0e} | {name} | {:.2} | {} | {} | {} |", built.model.len(), opts.solver.rtol, median(times) * 1e3, s.steps, s.jacobian_evals, s.rhs_evals);
+                println!("| {label} | {} | {:.0e} | {name} | {:.2} | {} | {} | {} |", built.model.len(), opts.solver.rtol, median(&times) * 1e3, s.steps, s.jacobian_evals, s.rhs_evals);
             }
         }
     }
