@@ -113,6 +113,15 @@ impl Step {
         }
     }
 
+    /// Times (s, from the step start) inside the step where its current has a kink: the
+    /// interior points of a table; none for the other steps.
+    pub fn kinks(&self) -> &[f64] {
+        match self {
+            Step::Table { time, .. } if time.len() > 2 => &time[1..time.len() - 1],
+            _ => &[],
+        }
+    }
+
     /// Whether voltage cut-offs end this step.
     pub fn has_cutoffs(&self) -> bool {
         !matches!(self, Step::Rest { .. } | Step::Hold { .. })

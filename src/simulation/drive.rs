@@ -75,10 +75,12 @@ impl Driven<'_> {
     }
 }
 
-/// A model as a DAE for the integrator, under the applied current `current(t, y)` (A).
+/// A model as a DAE for the integrator, under the applied current `current(t, y)` (A) whose
+/// kinks in time are at `kinks` (s, increasing).
 pub(crate) struct UnderCurrent<'a, F> {
     pub model: &'a dyn Model,
     pub current: F,
+    pub kinks: Vec<f64>,
 }
 
 impl<F: Fn(f64, &[f64]) -> f64> Dae for UnderCurrent<'_, F> {
@@ -93,5 +95,8 @@ impl<F: Fn(f64, &[f64]) -> f64> Dae for UnderCurrent<'_, F> {
     }
     fn rhs(&self, t: f64, y: &[f64], out: &mut [f64]) {
         self.model.rhs(y, (self.current)(t, y), out)
+    }
+    fn breakpoints(&self) -> &[f64] {
+        &self.kinks
     }
 }

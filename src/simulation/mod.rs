@@ -325,7 +325,8 @@ pub fn simulate_observed(
         };
         let t_end = t0 + step.duration();
         let mut stats = SolverStats::default();
-        let dae = UnderCurrent { model, current: |t: f64, y: &[f64]| drive.current(t, y) };
+        let kinks = step.kinks().iter().map(|k| t0 + k).collect();
+        let dae = UnderCurrent { model, current: |t: f64, y: &[f64]| drive.current(t, y), kinks };
         let reason = match &held {
             Some(hold) => {
                 let mut hold_ws = Workspace::new(n + 1, hold::VoltageHold::pattern(model))?;

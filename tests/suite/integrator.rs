@@ -1,6 +1,7 @@
 //! The integrator and its linear algebra on problems with known solutions (issue 17): error
 //! proportional to the tolerance, event location, an index-1 DAE kept consistent, the stepper
-//! driven one step at a time, and the sparse LU's pivoting fallback.
+//! driven one step at a time, steps ending on an input's kinks, and the sparse LU's pivoting
+//! fallback.
 
 use cellstudio::solver::sparse::SparseSystem;
 use cellstudio::solver::{Bdf, Dae, SolverOptions, SolverStats, StopReason, Workspace, integrate};
@@ -195,4 +196,88 @@ fn a_zero_static_pivot_falls_back_to_partial_pivoting() {
     // A well-posed matrix on the same system goes back to the static LU.
     system.factorise(&[1.0, 1.0], 0.1, &[-2.0, -3.0]).unwrap();
     assert!(!system.pivoted());
+}
+
+/// `y0' = z - y0`, `0 = z - u(t)` (index 1) under a piecewise-linear input `u` through the
+/// points `(k, u_k)`, k = 0, 1, 2, ... s: a recorded current replayed sample by sample. `z`
+/// has a kink at every point; `breaks` are the points the integrator is told about.
+struct KinkedInput {
+    u: Vec<f64>,
+    breaks: Vec<f64>,
+}
+
+impl KinkedInput {
+    fn input(&self, t: f64) -> f64 {
+        let k = (t.floor() as usize).min(self.u.len() - 2);
+        self.u[k] + (t - k as f64) * (self.u[k + 1] - self.u[k])
+    }
+
+    /// `y0` at every point, exactly: on each interval `u = a + b s` (s from its start),
+    /// `y0 = a - b + b s + (y0(start) - a + b) e^-s`.
+    fn exact(&self, y_start: f64) -> Vec<f64> {
+        let mut y = vec![y_start];
+        for k in 0..self.u.len() - 1 {
+            let (a, b) = (self.u[k], self.u[k + 1] - self.u[k]);
+            y.push(a + (y[k] - a + b) * (-1f64).exp());
+        }
+        y
+    }
+}
+
+impl Dae for KinkedInput {
+    fn len(&self) -> usize {
+        2
+    }
+    fn mass(&self) -> &[f64] {
+        &[1.0, 0.0]
+    }
+    fn scale(&self) -> &[f64] {
+        &[1.0, 1.0]
+    }
+    fn rhs(&self, t: f64, y: &[f64], out: &mut [f64]) {
+        out[0] = y[1] - y[0];
+        out[1] = y[1] - self.input(t);
+    }
+    fn breakpoints(&self) -> &[f64] {
+        &self.breaks
+    }
+}
+
+#[test]
+fn steps_end_on_the_breakpoints_of_a_kinked_input_and_keep_its_accuracy() {
+    // A 1 s sampled drive-like input: steps that straddle its kinks fail the error test (the
+    // algebraic state's slope jumps); told where they are, the integrator ends a step on each
+    // and judges the algebraic row only once its history no longer reaches across one.
+    let u: Vec<f64> = (0..=300).map(|k| { let k = k as f64; (0.05 * k).sin() + 0.5 * (0.31 * k).sin() + 0.3 * (1.7 * k).sin() }).collect();
+    let tol = 1e-6;
+    let t_end = (u.len() - 1) as f64;
+    let run = |breaks: Vec<f64>| {
+        let dae = KinkedInput { u: u.clone(), breaks };
+        let exact = dae.exact(0.0);
+        let mut ws = Workspace::new(2, vec![(0, 0), (0, 1), (1, 1)]).unwrap();
+        let mut y = vec![0.0, u[0]];
+        let (mut ends, mut worst) = (Vec::new(), 0.0f64);
+        let mut buf = [0.0; 2];
+        let mut stats = SolverStats::default();
+        integrate(&dae, &mut ws, &options(tol), 0.0, &mut y, t_end, None, &mut |t_old, dense| {
+            ends.push(dense.t_end());
+            // The exact solution at every sample point the step covers.
+            for k in (t_old.floor() as usize + 1)..=(dense.t_end().floor() as usize) {
+                dense.eval(k as f64, &mut buf);
+                worst = worst.max((buf[0] - exact[k]).abs() / tol);
+            }
+        }, &mut stats)
+        .unwrap();
+        (ends, worst, stats)
+    };
+    let (ends, worst, with) = run((1..u.len() - 1).map(|k| k as f64).collect());
+    let (_, worst_blind, without) = run(Vec::new());
+    println!("told: {with:?}, worst error {worst:.2} tol\nuntold: {without:?}, worst error {worst_blind:.2} tol");
+    // Achieved (November 2026): 1190 vs 4165 rejected steps, 14763 vs 27574 right-hand sides,
+    // worst error 12.8 vs 7.3 tolerances (at rtol 1e-5 told: 9457 right-hand sides, 7.6 tol;
+    // so at matched accuracy told costs about 0.6 of untold).
+    assert!((1..u.len()).all(|k| ends.contains(&(k as f64))), "a step ends on every breakpoint");
+    assert!(worst < 2.5 * worst_blind, "worst error {worst} tolerances told, {worst_blind} untold");
+    assert!(10 * with.rejected_steps < 4 * without.rejected_steps, "{} rejected steps told, {} untold", with.rejected_steps, without.rejected_steps);
+    assert!(100 * with.rhs_evals < 65 * without.rhs_evals, "{} right-hand sides told, {} untold", with.rhs_evals, without.rhs_evals);
 }

@@ -32,6 +32,11 @@ pub trait Dae {
     fn scale(&self) -> &[f64];
     /// Evaluates `f(t, y)` into `out`.
     fn rhs(&self, t: f64, y: &[f64], out: &mut [f64]);
+    /// Times (s), increasing, where `f` has a kink in `t` (the points of a piecewise-linear
+    /// input): steps end on them rather than straddle them, as CVODE's stop times.
+    fn breakpoints(&self) -> &[f64] {
+        &[]
+    }
 }
 
 /// Tolerances and limits of the integrator.

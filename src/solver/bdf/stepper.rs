@@ -36,6 +36,13 @@ pub struct Bdf<'a> {
     t: f64,
     /// The stop time (s): steps end on it rather than pass it.
     t_stop: f64,
+    /// The DAE's breakpoints (s, increasing) from the first after the current time on:
+    /// steps end on them rather than pass them.
+    breaks: &'a [f64],
+    /// Accepted steps since one ended on a breakpoint (`usize::MAX` before any did).
+    since_break: usize,
+    /// Diagonal of the mass matrix (0 marks an algebraic row).
+    mass: &'a [f64],
     /// Size (s) of the last accepted step.
     h: f64,
     /// Size (s) of the next step to try.
@@ -76,7 +83,10 @@ impl<'a> Bdf<'a> {
             return Err(Error::Solver { t: t0, reason: "non-finite right-hand side at start".into() });
         }
         let fdiff: Vec<f64> = f0.iter().zip(dae.mass()).map(|(f, m)| f * m).collect();
-        let h_abs = control::initial_step(dae, t0, y0, &fdiff, &atol, opts, span, &mut stats);
+        let breaks = dae.breakpoints();
+        let breaks = &breaks[breaks.partition_point(|&b| b <= t0)..];
+        let first_end = breaks.first().map_or(t_stop, |&b| b.min(t_stop));
+        let h_abs = control::initial_step(dae, t0, y0, &fdiff, &atol, opts, first_end - t0, &mut stats);
         Ok(Self {
             opts,
             atol,
@@ -87,6 +97,9 @@ impl<'a> Bdf<'a> {
             weight: vec![0.0; n],
             t: t0,
             t_stop,
+            breaks,
+            since_break: usize::MAX,
+            mass: dae.mass(),
             h: 0.0,
             h_abs,
             order: 1,
@@ -153,11 +166,18 @@ impl<'a> Bdf<'a> {
                 return Err(Error::Solver { t, reason: "step size fell below its minimum".into() });
             }
             let mut t_new = t + self.h_abs;
-            // Snap to the end rather than leave a sliver of a step.
-            if t_new >= self.t_stop - 1e-3 * self.h_abs {
-                t_new = self.t_stop;
-                self.d.rescale(order, (t_new - t) / self.h_abs);
-                self.n_equal_steps = 0;
+            // Snap to the next breakpoint or the end rather than pass it or leave a sliver of a
+            // step. A step that already ends there (a breakpoint every step) keeps its size.
+            let limit = self.breaks.first().map_or(self.t_stop, |&b| b.min(self.t_stop));
+            if t_new >= limit - 1e-3 * self.h_abs {
+                t_new = limit;
+                let factor = (t_new - t) / self.h_abs;
+                if factor != 1.0 {
+                    self.d.rescale(order, factor);
+                }
+                if (factor - 1.0).abs() > 1e-9 {
+                    self.n_equal_steps = 0;
+                }
             }
             let h = t_new - t;
             self.h_abs = h;
@@ -175,6 +195,17 @@ impl<'a> Bdf<'a> {
             };
             self.safety = control::safety(n_iter, NEWTON_MAXITER);
             set_weights(&mut self.weight, &self.atol, self.opts.rtol, &self.newton.y_new);
+            // An algebraic state's slope jumps at a breakpoint, so while the predictor still
+            // extrapolates from points before it, the corrector's distance from the prediction
+            // is no error estimate for those rows; the corrector has solved them exactly given
+            // the differential states, whose error the test still bounds.
+            if self.since_break < order {
+                for (w, &m) in self.weight.iter_mut().zip(self.mass) {
+                    if m == 0.0 {
+                        *w = 0.0;
+                    }
+                }
+            }
             self.error_norm = weighted_rms(self.coeffs.error_const[order], &self.newton.dvec, &self.weight);
             if self.error_norm > 1.0 {
                 let factor = control::rejection_factor(self.safety, self.error_norm, order);
@@ -187,6 +218,9 @@ impl<'a> Bdf<'a> {
             }
             self.t = t_new;
             self.h = h;
+            let passed = self.breaks.partition_point(|&b| b <= t_new);
+            self.since_break = if passed > 0 { 0 } else { self.since_break.saturating_add(1) };
+            self.breaks = &self.breaks[passed..];
             self.stats.steps += 1;
             self.newton.age_jacobian();
             self.n_equal_steps += 1;
