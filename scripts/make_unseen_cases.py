@@ -3647,7 +3647,187 @@ def batch_ac(root):
                initial_soc=0.8, seed=2808, period=5, cycler={"current_noise_A": 3e-3, "quantum_V": 1e-4, "quantum_A": 1e-4}, compare=lion.DFN())
 
 
-BATCHES = {"u": batch_u, "v": batch_v, "w": batch_w, "x": batch_x, "y": batch_y, "z": batch_z, "q": batch_q, "r": batch_r, "s": batch_s, "t": batch_t, "p": batch_p, "o": batch_o, "n": batch_n, "m": batch_m, "l": batch_l, "k": batch_k, "j": batch_j, "i": batch_i, "h": batch_h, "f": batch_f, "e": batch_e, "g": batch_g, "d": batch_d, "c": batch_c, "a": batch_a, "b": batch_b, "ab": batch_ab, "ac": batch_ac}
+def batch_ad(root):
+    """Twenty-ninth batch (key "ad"), made blind (a helper session that did not read the diagnosis
+    code, judged once on the binary /work/bin/s15final before anything else). The Chen 2020 cell
+    throughout, ambients from 0 to 45 degC, each of the three models handed over (DFN data handed to
+    the SPM and to the SPMe once each), sampling from 1 to 60 s (one cycler-thinned log), noise from
+    0.5 to 2 mV, protocols: a warm C/5 GITT, a C/20 pseudo-OCV discharge and C/10 charge, pulses at
+    seven SOCs, USABC DST drives, cold 2C CC-CV fast charges, CC-CV cycling at 40 degC, an urban drive
+    then a partial C/3 discharge and a 1C charge, constant-power steps at low SOC. A control (DFN at 45
+    degC, 2 mV noise), single effects (3 % lithium loss; a 2.5 mOhm contact resistance; a negative
+    exchange current x0.6; partially reversible lithium plating; solvent-diffusion-limited SEI growth
+    over five cycles), a pair on one electrode (5 % positive active-material loss with the positive
+    particle diffusivity x0.6), and one effect outside the usual list: the electrodes' OCP entropic
+    change (O'Regan 2022's measured dU/dT of the same LG M50 cell), which the Chen 2020 set leaves at
+    zero, so the candidate's OCPs are 25 K off their reference at 0 degC. Words as an engineer would
+    judge them: lithium loss by its own words (SEI also by a lithium-inventory stand-in), active
+    material by "active material", the entropic term by words naming the OCP or its temperature
+    dependence. Each effect's size on its own is in the note (a replay of the truth's current through
+    the nominal candidate where a step ends on a voltage, since effect_rmse_mV, time-aligned, then also
+    measures the shifted step ends).
+
+    First run (2026-11-28, binary /work/bin/s15final, sha256 fbc70adb4d9c, load average 7.84 before,
+    4.07 after (1 min), on 2 cores shared with other sessions; 1360 s in all): 7 of 8 by the judge.
+    ad1 no missing physics (1.97 mV, noise 1.94; initial SOC 95.0 %), 0 s; ad2 "Missing physics: loss
+    of lithium inventory together with series/contact resistance" (cyclable lithium within 0.01 % of
+    the truth's, 2.07 % less than the set's; the partner 12.08 mOhm, not concealed, stands where the
+    SPM lacks the DFN's electrolyte: inventory with electrolyte transport ranked 2nd and 3rd at 1.04 and
+    0.99 mV), 22.52 -> 1.04 mV, 86 s; ad3 a tie "series/contact resistance 2.50 mOhm (truth 2.5) or
+    electrolyte transport properties (conductivity factor 0.618)", 5.67 -> 1.00 mV, 25 s; ad4
+    "Parameter mismatch: charge-transfer kinetics" (negative rate constant 3.892e-7, truth 3.888e-7;
+    positive 3.416e-6, the set's 3.42e-6), 12.95 -> 1.00 mV, 244 s; ad5 "Missing physics: lithium
+    plating, partially reversible" (rate constant 1.019e-9, truth 1e-9; dead-lithium decay 1.38e-6,
+    truth 1e-6), 3.97 -> 1.06 mV, 306 s; ad6 round 1 "Missing physics: SEI growth, reaction and
+    transport in series" (the tool's EC-reaction-limited law for the concealed solvent-diffusion one),
+    22.04 -> 2.94 mV, round 2 electrolyte transport (SPMe -> DFN), -> 1.55 mV (noise 1.55), 543 s; ad7
+    "Parameter mismatch: solid (particle) diffusivity together with loss of active material, positive
+    electrode (5 %)" (positive diffusivity 2.402e-15, truth 2.4e-15; positive fraction 0.6317, truth
+    0.6318; negative at the set's), 27.13 -> 0.99 mV, 99 s. Missed: ad8 (the entropic term, outside
+    the list): the initial-SOC fit alone took the candidate from the noise-free 4.13 mV to 1.69 mV
+    (initial SOC 35.2 %, truth 35.0 %); round 1 "Parameter mismatch: loss of lithium inventory" (0.28 %
+    more cyclable lithium than the set's), 1.69 -> 0.90 mV (noise 0.47), round 2 "Unexplained
+    structure in 8160-12480 s, 18030-18660 s" (closest OCV hysteresis, hold-out -14 %); a voltage
+    offset of -2.6 mV ranked 4th and a thermal candidate 14th, neither named; nothing in the report
+    names the OCP's temperature dependence; 51 s."""
+    # ad1: control, a C/5 GITT down and a charge, DFN data and model at 45 degC, 10 s sampling, 2 mV noise
+    p = chen()
+    p.update({"Ambient temperature [K]": 318.15, "Initial temperature [K]": 318.15})
+    steps = ["Rest for 10 minutes"] + ["Discharge at C/5 for 30 minutes", "Rest for 40 minutes"] * 8 + ["Charge at C/5 for 1 hour", "Rest for 40 minutes"]
+    write_case(root, "ad1_control_gitt_c5_45C_10s_2mV_dfn", lion.DFN(), p, steps,
+               {"effect": "none", "candidate_model": "dfn", "accept": ["no missing"], "ambient_temperature_K": 318.15,
+                "note": "negative control at 45 degC (isothermal, not recorded): DFN data and model, nothing concealed. A C/5 GITT "
+                        "from 95 % SOC: 10 min rest, 8 x (C/5 for 30 min, 40 min rest) down to about 15 %, C/5 charge for 1 h, 40 min "
+                        "rest (11.2 h); sampled every 10 s, 2 mV noise (noisier than most)"},
+               initial_soc=0.95, seed=2901, period=10, noise=2e-3, compare=lion.DFN())
+    # ad2: 3 % lithium loss, a C/20 pseudo-OCV discharge and a C/10 CC-CV charge, 35 degC, 60 s, DFN data handed to the SPM
+    p = scaled(chen(), "Initial concentration in negative electrode [mol.m-3]", 0.97)
+    p.update({"Ambient temperature [K]": 308.15, "Initial temperature [K]": 308.15})
+    steps = ["Rest for 30 minutes", "Discharge at C/20 until 2.7 V", "Rest for 2 hours", "Charge at C/10 until 4.2 V", "Hold at 4.2 V until C/50",
+             "Rest for 1 hour"]
+    write_case(root, "ad2_inventory_3pct_c20_pseudo_ocv_35C_60s_dfn_data_spm", lion.DFN(), p, steps,
+               {"effect": "lithium_inventory_loss", "candidate_model": "spm", "accept": ["inventory", "lithium loss", "lithium lost", "cyclable"],
+                "ambient_temperature_K": 308.15,
+                "note": "3 % less lithium (initial negative concentration x0.97; the initial state set as 100 % SOC of the aged cell), at "
+                        "35 degC (isothermal, not recorded). A slow pseudo-OCV test from full (4.2 V): 30 min rest, C/20 to 2.7 V, 2 h "
+                        "rest, C/10 CC-CV to 4.2 V and C/50, 1 h rest (33.3 h); sampled every 60 s, 1 mV noise. DFN data handed to "
+                        "the SPM: electrolyte transport (SPM -> DFN) named beside the loss is right too, but the first verdict must "
+                        "name the lithium. Replaying the truth's current (1 s) through the nominal SPM: 60.8 mV RMS (mostly at the end "
+                        "of the discharge, 336 mV at most); through the SPM with the true loss: 3.9 mV (the SPM's own error against the "
+                        "DFN here). effect_rmse_mV is time-aligned on the experiment, whose steps end at other times"},
+               initial_soc=1.0, seed=2902, period=60, compare=lion.SPM())
+    # ad3: 2.5 mOhm contact resistance, pulses at seven SOCs (1C, 3C discharge, 2C charge), 25 degC, 1 s, SPMe
+    p = chen()
+    p.update({"Contact resistance [Ohm]": 0.0025}, check_already_exists=False)
+    level = ["Discharge at 1C for 18 seconds", "Rest for 1 minute", "Discharge at 3C for 10 seconds", "Rest for 1 minute",
+             "Charge at 2C for 10 seconds", "Rest for 1 minute", "Discharge at 1C for 6 minutes", "Rest for 25 minutes"]
+    steps = ["Rest for 10 minutes"] + level * 7
+    write_case(root, "ad3_contact_2p5mOhm_pulses_seven_socs_25C_spme", lion.SPMe(options={"contact resistance": "true"}), p, steps,
+               {"effect": "contact_resistance", "candidate_model": "spme", "accept": ["contact", "series resistance", "ohmic"],
+                "note": "a 2.5 mOhm contact resistance (12.5 mV at 1C, 37.5 mV at 3C), at 25 degC (isothermal, not recorded). Pulses "
+                        "at seven SOCs from 95 %: 10 min rest, then 7 x (1C for 18 s, 1 min rest, 3C for 10 s, 1 min rest, 2C charge "
+                        "for 10 s, 1 min rest, 1C for 6 min to the next level, 25 min rest) down to about 20 %; sampled every 1 s, 1 mV "
+                        "noise; SPMe data and model. effect_rmse_mV is what the resistance alone does"},
+               initial_soc=0.95, seed=2903, period=1, compare=lion.SPMe())
+    # ad4: negative exchange current x0.6, USABC DST drives (2.5C peak) with rests, 10 degC, 1 s, SPM
+    p = scaled(chen(), "Negative electrode exchange-current density [A.m-2]", 0.6)
+    p.update({"Ambient temperature [K]": 283.15, "Initial temperature [K]": 283.15})
+    steps = ["Rest for 5 minutes"] + dst_steps(2.5) * 5 + ["Rest for 20 minutes"] + dst_steps(2.5) * 3 + ["Rest for 20 minutes"]
+    write_case(root, "ad4_kinetics_negative_x0p6_dst_drive_10C_spm", lion.SPM(), p, steps,
+               {"effect": "kinetics", "candidate_model": "spm", "accept": ["kinetic", "exchange", "charge-transfer", "charge transfer", "reaction rate"],
+                "ambient_temperature_K": 283.15,
+                "note": "negative exchange-current density x0.6 (all stoichiometries), at 10 degC (isothermal, not recorded). From 90 % "
+                        "SOC: 5 min rest, 5 USABC DST cycles (dst_steps(2.5): 360 s each, peak 2.5C, regeneration to 1.25C), 20 min "
+                        "rest, 3 more DST cycles, 20 min rest (93 min); sampled every 1 s, 1 mV noise; SPM data and model. "
+                        "effect_rmse_mV is what the slower kinetics alone do"},
+               initial_soc=0.9, seed=2904, period=1, compare=lion.SPM())
+    # ad5: partially reversible lithium plating in cold 2C CC-CV fast charges, 5 degC, cycler artefacts, SPMe
+    p = with_okane2022(chen(), PLATING_KEYS)
+    p.update({"Ambient temperature [K]": 278.15, "Initial temperature [K]": 278.15})
+    cycle = ["Charge at 2C until 4.2 V", "Hold at 4.2 V until C/20", "Rest for 40 minutes", "Discharge at C/2 until 3.0 V", "Rest for 40 minutes"]
+    steps = ["Rest for 10 minutes"] + cycle * 3
+    write_case(root, "ad5_plating_partially_reversible_2C_cccv_5C_cycler_spme", lion.SPMe(options={"lithium plating": "partially reversible"}), p,
+               steps,
+               {"effect": "lithium_plating", "candidate_model": "spme", "accept": ["plating"], "ambient_temperature_K": 278.15,
+                "note": "partially reversible lithium plating (PyBaMM 'partially reversible', OKane2022's plating parameters as they "
+                        "are: rate constant 1e-9 m/s, transfer coefficient 0.65, dead-lithium decay constant 1e-6 1/s) in cold fast "
+                        "charges at 5 degC (isothermal, not recorded): a 2C CC-CV charge plates up to 0.0082 mol (0.22 A h; the third "
+                        "charge), most of it stripped again in the CV hold as the current falls (0.0019 mol left at its end) and the 40 "
+                        "min rest after (0.0003 mol left). From "
+                        "10 % SOC: 10 min rest, 3 x (2C to 4.2 V, hold at 4.2 V until C/20, 40 min rest, C/2 to 3.0 V, 40 min rest), "
+                        "14.5 h; cycler artefacts (irregular sampling, 3 mA current noise, 0.1 mV resolution), 1 mV noise; SPMe data and "
+                        "model. Replaying the truth's current (1 s) through the nominal SPMe: 3.9 mV RMS, 137 mV at most. "
+                        "effect_rmse_mV is time-aligned on the experiment, whose steps end at other times"},
+               initial_soc=0.1, seed=2905, cycler=CYCLER, compare=lion.SPMe())
+    # ad6: solvent-diffusion-limited SEI over 5 cycles (1C / C/2 CC-CV), 40 degC, 60 s, 1.5 mV noise, DFN data handed to the SPMe
+    p = scaled(chen(), "SEI solvent diffusivity [m2.s-1]", 2000.0)
+    p.update({"Ambient temperature [K]": 313.15, "Initial temperature [K]": 313.15})
+    cycle = ["Discharge at 1C until 2.8 V", "Rest for 20 minutes", "Charge at C/2 until 4.2 V", "Hold at 4.2 V until C/20", "Rest for 20 minutes"]
+    steps = ["Rest for 10 minutes"] + cycle * 5
+    write_case(root, "ad6_sei_solvent_diffusion_5_cycles_40C_60s_dfn_data_spme", lion.DFN(options={"SEI": "solvent-diffusion limited"}), p, steps,
+               {"effect": "sei_growth", "candidate_model": "spme", "accept": ["SEI", "inventory", "lithium loss", "cyclable"],
+                "ambient_temperature_K": 313.15,
+                "note": "SEI growth limited by solvent diffusion (PyBaMM 'solvent-diffusion limited', distributed film resistance), "
+                        "solvent diffusivity 5e-19 m2/s (2000x Chen 2020's 2.5e-22: an accelerated test at 40 degC; isothermal, not "
+                        "recorded): 0.00625 mol of lithium (0.168 A h) lost to the SEI over the 5 cycles, the 1C discharge capacity "
+                        "4.841, 4.726, 4.695, 4.670, 4.649 A h. A lithium-inventory loss growing through the recording is the SEI's "
+                        "nearest stand-in and is accepted. From full: 10 min rest, 5 x (1C to 2.8 V, 20 min rest, C/2 CC-CV to 4.2 V and "
+                        "C/20, 20 min rest), 19.5 h; sampled every 60 s, 1.5 mV noise. DFN data handed to the SPMe: electrolyte "
+                        "transport named beside the SEI is right too, but the first verdict must name the SEI or the lithium. Replaying "
+                        "the truth's current (1 s) through the nominal SPMe: 22.7 mV RMS (about 10 mV in the first quarter, 37.3 mV in "
+                        "the seventh eighth; 176 mV at most); through the nominal DFN: 22.6 mV (the SPMe's own error is small at 40 degC). "
+                        "effect_rmse_mV is time-aligned on the experiment, whose steps end at other times"},
+               initial_soc=1.0, seed=2906, period=60, noise=1.5e-3, compare=lion.SPMe())
+    # ad7: pair on the positive: 5 % LAM and particle diffusivity x0.6, an urban drive then C/3 and a 1C charge, 15 degC, 2 s, SPMe
+    def positive(lam, diffusivity):
+        q = scaled(scaled(chen(), "Positive electrode active material volume fraction", lam), "Positive particle diffusivity [m2.s-1]", diffusivity)
+        q.update({"Ambient temperature [K]": 288.15, "Initial temperature [K]": 288.15})
+        return q
+    steps = (["Rest for 5 minutes"] + urban_drive(2907, 30) + ["Rest for 20 minutes", "Discharge at C/3 for 80 minutes", "Rest for 30 minutes",
+                                                              "Charge at 1C for 30 minutes", "Rest for 30 minutes"])
+    name = "ad7_lam_positive_5pct_and_diffusivity_positive_x0p6_urban_drive_15C_spme"
+    write_case(root, name, lion.SPMe(), positive(0.95, 0.6), steps,
+               {"effect": "active_material_loss+solid_diffusivity", "candidate_model": "spme", "accept": ["active material", "diffusiv"],
+                "ambient_temperature_K": 288.15,
+                "note": "two effects on the positive electrode (as particle cracking would give): 5 % loss of positive active material "
+                        "(volume fraction 0.665 -> 0.632, the set's initial concentrations, so the lithium of the lost material goes "
+                        "with it) and positive particle diffusivity x0.6, at 15 degC (isothermal, not recorded). From 90 % SOC: 5 min "
+                        "rest, an urban drive (urban_drive seed 2907, 30 segments: bursts of 1.5-3C, cruising, regeneration, idling), 20 "
+                        "min rest, C/3 for 80 min, 30 min rest, 1C charge for 30 min, 30 min rest (3.7 h); sampled every 2 s, 1 mV noise; "
+                        "SPMe data and model. spme_lam_only_rmse_mV: the SPMe with the LAM alone against the recording (what the "
+                        "diffusivity leaves); spme_diffusivity_only_rmse_mV: with the diffusivity alone (what the LAM leaves); "
+                        "effect_rmse_mV: both"},
+               initial_soc=0.9, seed=2907, period=2, compare=lion.SPMe())
+    replay_rmse(root, name, lion.SPMe(), positive(0.95, 1.0), steps, 0.9, "spme_lam_only_rmse_mV", period=2)
+    replay_rmse(root, name, lion.SPMe(), positive(1.0, 0.6), steps, 0.9, "spme_diffusivity_only_rmse_mV", period=2)
+    # ad8: outside the list: the OCPs' entropic change (O'Regan 2022, same LG M50 cell) missing from the set, constant-power steps at low SOC, 0 degC, SPM
+    o = pybamm.ParameterValues("ORegan2022")
+    p = chen()
+    p.update({"Ambient temperature [K]": 273.15, "Initial temperature [K]": 273.15})
+    for side in ["Negative", "Positive"]:
+        p.update({f"{side} electrode OCP entropic change [V.K-1]": o[f"{side} electrode OCP entropic change [V.K-1]"]})
+    steps = (["Rest for 20 minutes"] + ["Discharge at 3 W for 30 minutes", "Rest for 1 hour"] * 3
+             + ["Charge at 5 W for 90 minutes", "Rest for 1 hour", "Discharge at 4 W for 45 minutes", "Rest for 1 hour"])
+    write_case(root, "ad8_entropic_ocp_term_constant_power_low_soc_0C_spm", lion.SPM(), p, steps,
+               {"effect": "ocp_temperature_dependence", "candidate_model": "spm",
+                "accept": ["entropic", "entropy", "dU/dT", "OCP", "open-circuit potential", "open circuit potential", "equilibrium potential",
+                           "temperature coefficient"],
+                "ambient_temperature_K": 273.15,
+                "note": "outside the tool's listed candidates: the electrodes' OCPs depend on temperature through their entropic change "
+                        "(O'Regan 2022's measured dU/dT of the same LG M50 cell, graphite and NMC 811, as in PyBaMM's ORegan2022 set: "
+                        "graphite +0.18 mV/K at low lithiation, -0.08 mV/K when full; NMC down to -0.06 mV/K), which the Chen 2020 set "
+                        "leaves at zero, so at 0 degC (isothermal, not recorded; 25 K below the OCPs' 25 degC reference) the cell's "
+                        "open-circuit voltage differs from the set's by an SOC-dependent few mV (about +5 mV near empty, -1 to -2 mV at "
+                        "mid and high SOC). Not a constant offset and not a stretch of the stoichiometry axis; a thermal (self-heating) "
+                        "verdict is not accepted (the cell is isothermal at the stated ambient), only words naming the OCP or its "
+                        "temperature dependence are. Constant-power steps at low SOC, from 35 % SOC: 20 min rest, 3 x (3 W for 30 min, "
+                        "1 h rest) down to about 10 %, 5 W charge for 90 min, 1 h rest, 4 W for 45 min, 1 h rest (9.1 h); sampled "
+                        "every 30 s, 0.5 mV noise (a quiet channel); SPM data and model. effect_rmse_mV is what the entropic term "
+                        "alone does"},
+               initial_soc=0.35, seed=2908, period=30, noise=5e-4, compare=lion.SPM())
+
+
+BATCHES = {"u": batch_u, "v": batch_v, "w": batch_w, "x": batch_x, "y": batch_y, "z": batch_z, "q": batch_q, "r": batch_r, "s": batch_s, "t": batch_t, "p": batch_p, "o": batch_o, "n": batch_n, "m": batch_m, "l": batch_l, "k": batch_k, "j": batch_j, "i": batch_i, "h": batch_h, "f": batch_f, "e": batch_e, "g": batch_g, "d": batch_d, "c": batch_c, "a": batch_a, "b": batch_b, "ab": batch_ab, "ac": batch_ac, "ad": batch_ad}
 
 if __name__ == "__main__":
     root = sys.argv[1] if len(sys.argv) > 1 else "out/unseen-cases"
