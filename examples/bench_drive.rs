@@ -15,7 +15,7 @@ use cellstudio::models::{ModelBuilder, ModelKind, Submodels};
 use cellstudio::params::chen2020;
 use cellstudio::protocol::Protocol;
 use cellstudio::simulation::{SimOptions, simulate};
-use cellstudio::stats::median;
+use cellstudio::stats::{median, rms};
 
 /// A 30-minute drive sampled every second (A): three incommensurate sines.
 fn synthetic_drive(capacity: f64) -> Recording {
@@ -60,7 +60,7 @@ fn main() {
                 last = Some(sol);
             }
             let sol = last.expect("five replays");
-            let err = (sol.voltage.iter().zip(&reference.voltage).map(|(a, b)| (a - b).powi(2)).sum::<f64>() / sol.voltage.len() as f64).sqrt();
+            let err = rms(&sol.voltage.iter().zip(&reference.voltage).map(|(a, b)| a - b).collect::<Vec<_>>());
             let s = sol.stats;
             println!("| {kind} | {tol:e} | {:.1} | {} | {} | {} | {:.1e} |", 1e3 * median(&times), s.steps, s.rejected_steps, s.factorisations, 1e3 * err);
         }

@@ -33,7 +33,7 @@ pub(super) struct Newton<'a> {
     dae: &'a dyn Dae,
     ws: &'a mut Workspace,
     /// The DAE's mass-matrix diagonal and state scales.
-    mass: &'a [f64],
+    pub(super) mass: &'a [f64],
     scale: &'a [f64],
     /// Stopping threshold on the estimated remaining correction, in error weights.
     tol: f64,

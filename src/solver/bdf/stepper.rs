@@ -41,8 +41,6 @@ pub struct Bdf<'a> {
     breaks: &'a [f64],
     /// Accepted steps since one ended on a breakpoint (`usize::MAX` before any did).
     since_break: usize,
-    /// Diagonal of the mass matrix (0 marks an algebraic row).
-    mass: &'a [f64],
     /// Size (s) of the last accepted step.
     h: f64,
     /// Size (s) of the next step to try.
@@ -85,8 +83,7 @@ impl<'a> Bdf<'a> {
         let fdiff: Vec<f64> = f0.iter().zip(dae.mass()).map(|(f, m)| f * m).collect();
         let breaks = dae.breakpoints();
         let breaks = &breaks[breaks.partition_point(|&b| b <= t0)..];
-        let first_end = breaks.first().map_or(t_stop, |&b| b.min(t_stop));
-        let h_abs = control::initial_step(dae, t0, y0, &fdiff, &atol, opts, first_end - t0, &mut stats);
+        let h_abs = control::initial_step(dae, t0, y0, &fdiff, &atol, opts, next_end(breaks, t_stop) - t0, &mut stats);
         Ok(Self {
             opts,
             atol,
@@ -99,7 +96,6 @@ impl<'a> Bdf<'a> {
             t_stop,
             breaks,
             since_break: usize::MAX,
-            mass: dae.mass(),
             h: 0.0,
             h_abs,
             order: 1,
@@ -168,7 +164,7 @@ impl<'a> Bdf<'a> {
             let mut t_new = t + self.h_abs;
             // Snap to the next breakpoint or the end rather than pass it or leave a sliver of a
             // step. A step that already ends there (a breakpoint every step) keeps its size.
-            let limit = self.breaks.first().map_or(self.t_stop, |&b| b.min(self.t_stop));
+            let limit = next_end(self.breaks, self.t_stop);
             if t_new >= limit - 1e-3 * self.h_abs {
                 t_new = limit;
                 let factor = (t_new - t) / self.h_abs;
@@ -200,7 +196,7 @@ impl<'a> Bdf<'a> {
             // is no error estimate for those rows; the corrector has solved them exactly given
             // the differential states, whose error the test still bounds.
             if self.since_break < order {
-                for (w, &m) in self.weight.iter_mut().zip(self.mass) {
+                for (w, &m) in self.weight.iter_mut().zip(self.newton.mass) {
                     if m == 0.0 {
                         *w = 0.0;
                     }
@@ -248,4 +244,10 @@ impl<'a> Bdf<'a> {
         self.d.rescale(new_order, factor);
         self.n_equal_steps = 0;
     }
+}
+
+/// Where the next step must end at the latest (s): the first of `breaks` (the breakpoints
+/// still ahead) or the stop time `t_stop`, whichever comes first.
+fn next_end(breaks: &[f64], t_stop: f64) -> f64 {
+    breaks.first().map_or(t_stop, |&b| b.min(t_stop))
 }
