@@ -77,6 +77,6 @@ fn kinetics(ec: &cellstudio::models::Electrochem) {
     use cellstudio::models::kinetics::butler_volmer;
     for (side, c_s, eta) in [(Side::Negative, 29866.0, 0.0978551), (Side::Positive, 17038.0, -0.1)] {
         let j0 = ec.j0(side, 1000.0, c_s, 298.15);
-        println!("{side:?}: ocp {:.12} j0 {:.12} j(eta) {:.12}", ec.ocp(side, c_s), j0, butler_volmer(j0, eta, 0.5, 298.15));
+        println!("{side:?}: ocp {:.12} j0 {:.12} j(eta) {:.12}", ec.ocp(side, c_s, 298.15), j0, butler_volmer(j0, eta, 0.5, 298.15));
     }
 }

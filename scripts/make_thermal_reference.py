@@ -12,6 +12,12 @@ leaves out of the heat source (its reaction heat is `a j eta_r` with the interca
 - `spm_thermal_plating`: the SPM with "lithium plating" = "irreversible" (PyBaMM then sets
   "SEI" = "constant": no film) and OKane2022's plating parameters (as
   scripts/make_plating_submodel_reference.py), at 5 degC ambient so that the 2C charge plates.
+- `{spm,spme,dfn}_thermal_entropic`: thermal with the OCPs' entropic change of the same
+  LG M50 cell (O'Regan 2022, PyBaMM's ORegan2022 functions; Chen 2020 has none): the OCP is
+  `U(x) + (T - T_ref) dU/dT(x)` and the reversible heat `a j T dU/dT(x)` at the particle
+  surface;
+- `{spm,dfn}_entropic_cold`: that entropic change isothermal at 0 degC (25 K below the OCPs'
+  reference temperature), one 1C cycle (ENTROPIC_CYCLE).
 PyBaMM's default mesh (20 volumes per x-domain and per particle, as ours), IDAKLU at
 rtol = atol = 1e-8, outputs every 10 s, from full (initial_soc = 1).
 
@@ -46,8 +52,10 @@ CYCLE = ["Discharge at 2C until 2.7 V", "Rest for 15 minutes", "Charge at 1C unt
          "Hold at 4.2 V until C/10", "Rest for 15 minutes"]
 PLATING_CYCLE = ["Discharge at 1C until 3.0 V", "Rest for 15 minutes", "Charge at 2C until 4.2 V",
                  "Hold at 4.2 V until C/10", "Rest for 15 minutes"]
+ENTROPIC_CYCLE = ["Discharge at 1C until 2.7 V", "Rest for 15 minutes", "Charge at 1C until 4.2 V",
+                  "Hold at 4.2 V until C/10", "Rest for 15 minutes"]
 CYCLES = 2
-WARM, COLD = 308.15, 278.15
+WARM, COLD, FREEZING = 308.15, 278.15, 273.15
 H = 12.0
 SEI_FACTOR = 100.0
 lion = pybamm.lithium_ion
@@ -61,7 +69,21 @@ CASES = {
     "spme_thermal_sei": (lion.SPMe, {"thermal": "lumped", "SEI": "reaction limited"}, True, CYCLE, CYCLES, WARM),
     "dfn_thermal_sei": (lion.DFN, {"thermal": "lumped", "SEI": "reaction limited"}, True, CYCLE, 1, WARM),
     "spm_thermal_plating": (lion.SPM, {"thermal": "lumped", "lithium plating": "irreversible"}, False, PLATING_CYCLE, CYCLES, COLD),
+    "spm_thermal_entropic": (lion.SPM, {"thermal": "lumped"}, False, CYCLE, CYCLES, WARM),
+    "spme_thermal_entropic": (lion.SPMe, {"thermal": "lumped"}, False, CYCLE, CYCLES, WARM),
+    "dfn_thermal_entropic": (lion.DFN, {"thermal": "lumped"}, False, CYCLE, 1, WARM),
+    "spm_entropic_cold": (lion.SPM, {}, False, ENTROPIC_CYCLE, 1, FREEZING),
+    "dfn_entropic_cold": (lion.DFN, {}, False, ENTROPIC_CYCLE, 1, FREEZING),
 }
+
+
+def entropic(p):
+    """The OCPs' entropic change of O'Regan 2022 (same LG M50 cell) put into `p`."""
+    o = pybamm.ParameterValues("ORegan2022")
+    for side in ["Negative", "Positive"]:
+        key = f"{side} electrode OCP entropic change [V.K-1]"
+        p.update({key: o[key]})
+    return p
 
 
 def parameters(sei100, ambient):
@@ -89,7 +111,10 @@ def main(root):
         cls, options, sei100, cycle, cycles, ambient = CASES[name]
         # PyBaMM's SPM writes "x-average side reactions" = "true" into the options it is
         # given: each model gets its own copy.
-        sim = pybamm.Simulation(cls(dict(options)), parameter_values=parameters(sei100, ambient),
+        p = parameters(sei100, ambient)
+        if "entropic" in name:
+            entropic(p)
+        sim = pybamm.Simulation(cls(dict(options)), parameter_values=p,
                                 experiment=pybamm.Experiment(cycle * cycles, period="10 seconds"),
                                 solver=pybamm.IDAKLUSolver(rtol=1e-8, atol=1e-8))
         start = time.perf_counter()
@@ -102,6 +127,7 @@ def main(root):
                    header="time_s,current_A,voltage_V,temperature_K,step", comments="", fmt="%.10g")
         meta["cases"][name] = {"model": cls.__name__, "options": options, "sei_exchange_current_x100": sei100,
                                "cycle": cycle, "cycles": cycles, "ambient_K": ambient, "points": len(step),
+                               "entropic_change": "ORegan2022" if "entropic" in name else "none",
                                "solve_seconds": seconds, "end_time_s": float(cols[0][-1])}
         extra = ""
         if "lithium plating" in options:

@@ -54,10 +54,18 @@ impl Electrochem {
         self.params.cell.area()
     }
 
-    /// Open-circuit potential (V) at particle concentration `c_s` (mol/m^3).
-    pub fn ocp(&self, side: Side, c_s: f64) -> f64 {
+    /// Open-circuit potential (V) at particle concentration `c_s` (mol/m^3) and temperature
+    /// `t` (K): `U(x) + (t - T_ref) dU/dT(x)` at stoichiometry `x`, PyBaMM's form.
+    pub fn ocp(&self, side: Side, c_s: f64, t: f64) -> f64 {
         let e = self.electrode(side);
-        e.ocp.eval(c_s / e.max_concentration)
+        let sto = c_s / e.max_concentration;
+        e.ocp.eval(sto) + (t - self.t_ref()) * e.entropic_change(sto)
+    }
+
+    /// Entropic change dU/dT (V/K) at particle concentration `c_s` (mol/m^3).
+    pub fn entropic_change(&self, side: Side, c_s: f64) -> f64 {
+        let e = self.electrode(side);
+        e.entropic_change(c_s / e.max_concentration)
     }
 
     /// [`Self::ocp`] as PyBaMM 26 wraps it: the stoichiometry clipped to `[1e-10, 1 - 1e-10]`
@@ -66,10 +74,11 @@ impl Electrochem {
     /// from the end, 1 V at the end). The particle-size distribution uses it (its smallest
     /// particles reach the ends); elsewhere the asymptotes are below 1e-100 V in the tested
     /// ranges and `ocp` leaves them out.
-    pub fn bounded_ocp(&self, side: Side, c_s: f64) -> f64 {
+    pub fn bounded_ocp(&self, side: Side, c_s: f64, t: f64) -> f64 {
         let e = self.electrode(side);
         let sto = c_s / e.max_concentration;
-        e.ocp.eval(sto.clamp(1e-10, 1.0 - 1e-10)) + ocp_asymptotes(sto)
+        let clipped = sto.clamp(1e-10, 1.0 - 1e-10);
+        e.ocp.eval(clipped) + (t - self.t_ref()) * e.entropic_change(clipped) + ocp_asymptotes(sto)
     }
 
     /// Particle diffusivity (m^2/s) at temperature `t` (K).
@@ -152,14 +161,17 @@ impl Electrochem {
             + self.particle_lithium(Side::Positive, cp, p.positive.thickness)
     }
 
-    /// OCV (V) at the average stoichiometries of the two representative particles.
-    pub fn single_particle_ocv(&self, cn: &[f64], cp: &[f64]) -> f64 {
-        self.ocp(Side::Positive, self.disc.sphere_p.average(cp)) - self.ocp(Side::Negative, self.disc.sphere_n.average(cn))
+    /// OCV (V) at the average stoichiometries of the two representative particles, at
+    /// temperature `t` (K).
+    pub fn single_particle_ocv(&self, cn: &[f64], cp: &[f64], t: f64) -> f64 {
+        self.ocp(Side::Positive, self.disc.sphere_p.average(cp), t) - self.ocp(Side::Negative, self.disc.sphere_n.average(cn), t)
     }
 
-    /// Entropic coefficient of the cell's OCV, dU_p/dT - dU_n/dT (V/K).
-    pub fn docv_dt(&self) -> f64 {
-        self.params.positive.ocp_entropic_change - self.params.negative.ocp_entropic_change
+    /// Entropic coefficient of the cell's OCV, dU_p/dT - dU_n/dT (V/K), at the particle
+    /// surface concentrations `sn`, `sp` (mol/m^3) of an electrode-uniform (single particle)
+    /// model: the reversible heat is `-I T` times it.
+    pub fn docv_dt(&self, sn: f64, sp: f64) -> f64 {
+        self.entropic_change(Side::Positive, sp) - self.entropic_change(Side::Negative, sn)
     }
 }
 

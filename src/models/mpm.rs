@@ -107,18 +107,19 @@ impl Model for Mpm {
     fn rhs(&self, y: &[f64], current: f64, out: &mut [f64]) {
         let temp = self.temperature(y);
         let nn = self.sizes[0].states();
-        let mut ocv = 0.0;
+        let (mut ocv, mut docv_dt) = (0.0, 0.0);
         let mut voltage = -current * self.ec.contact_resistance();
         for (side, range, sign) in [(Side::Negative, 0..nn, -1.0), (Side::Positive, nn..nn + self.sizes[1].states(), 1.0)] {
             let r = self.reaction(side, y, current);
             self.sizes(side).diffusion(&y[range.clone()], self.ec.diffusivity(side, temp), &r.currents, &mut out[range]);
             ocv += sign * r.mean_ocp;
+            docv_dt += sign * r.mean_entropic_change;
             voltage += sign * r.delta;
         }
         if self.ec.submodels.thermal {
             // PyBaMM's reaction heat is `a j eta` with the area-weighted mean overpotential
             // `delta - sum w_a U_i`: `I (U - V)` with the area-weighted mean surface OCPs.
-            let heat = bernardi_heat(current, ocv, voltage, temp, self.ec.docv_dt());
+            let heat = bernardi_heat(current, ocv, voltage, temp, docv_dt);
             out[self.len() - 1] = self.ec.thermal.rate(heat, temp);
         }
     }
@@ -141,7 +142,8 @@ impl Model for Mpm {
 
     fn open_circuit_voltage(&self, y: &[f64]) -> f64 {
         let average = |side| self.sizes(side).average(self.block(side, y));
-        self.ec.ocp(Side::Positive, average(Side::Positive)) - self.ec.ocp(Side::Negative, average(Side::Negative))
+        let temp = self.temperature(y);
+        self.ec.ocp(Side::Positive, average(Side::Positive), temp) - self.ec.ocp(Side::Negative, average(Side::Negative), temp)
     }
 
     fn plating_margin(&self, y: &[f64], current: f64) -> Option<f64> {

@@ -78,7 +78,7 @@ impl Spm {
         let c_in = c_s.clamp(0.0, e.max_concentration);
         let j0 = ec.rate_constant(side, temp) * ec.params.electrolyte.initial_concentration.sqrt() * particle_factor(c_in, e.max_concentration);
         let film = if side == Side::Negative { self.sei.film(ec, y, j, self.lam.surface_area_density(ec, side, y, 0)) } else { 0.0 };
-        ec.ocp(side, c_s) + overpotential(j, j0, e.charge_transfer_coefficient, temp) + film
+        ec.ocp(side, c_s, temp) + overpotential(j, j0, e.charge_transfer_coefficient, temp) + film
     }
 
     /// Writes the SEI and plating states' rates into `out` and returns the side-reaction
@@ -106,8 +106,9 @@ impl Spm {
         let (ec, side) = (&self.ec, Side::Negative);
         let (j, a) = (self.lam.interfacial_current(ec, side, y, current), self.lam.surface_area_density(ec, side, y, 0));
         let delta_phi = self.surface_potential_difference(side, sn, y, current);
-        let site = SideReactionSite { a, total_current: j, side_current: j_side, delta_phi, ocp: ec.ocp(side, sn), film: self.sei.film(ec, y, j, a) };
-        site.uncounted_heat(self.temperature(y), ec.params.negative.ocp_entropic_change) * ec.area() * ec.params.negative.thickness
+        let temp = self.temperature(y);
+        let site = SideReactionSite { a, total_current: j, side_current: j_side, delta_phi, ocp: ec.ocp(side, sn, temp), film: self.sei.film(ec, y, j, a) };
+        site.uncounted_heat(temp, ec.entropic_change(side, sn)) * ec.area() * ec.params.negative.thickness
     }
 }
 
@@ -184,9 +185,9 @@ impl Model for Spm {
         }
         if ec.submodels.thermal {
             let (sn, sp) = self.surface_concentrations(y);
-            let ocv = ec.ocp(Side::Positive, sp) - ec.ocp(Side::Negative, sn);
+            let ocv = ec.ocp(Side::Positive, sp, temp) - ec.ocp(Side::Negative, sn, temp);
             let v = self.voltage(y, current);
-            let heat = bernardi_heat(current, ocv, v, temp, ec.docv_dt()) - self.uncounted_side_heat(y, sn, current, j_sei + j_plating);
+            let heat = bernardi_heat(current, ocv, v, temp, ec.docv_dt(sn, sp)) - self.uncounted_side_heat(y, sn, current, j_sei + j_plating);
             out[self.len() - 1] = ec.thermal.rate(heat, temp);
         }
     }
@@ -247,7 +248,7 @@ impl Model for Spm {
 
     fn open_circuit_voltage(&self, y: &[f64]) -> f64 {
         let (cn, cp) = self.particles(y);
-        self.ec.single_particle_ocv(&cn, &cp)
+        self.ec.single_particle_ocv(&cn, &cp, self.temperature(y))
     }
 }
 

@@ -270,7 +270,7 @@ impl Spme {
         let j0_particle = k * (c_in * (c_max - c_in)).sqrt();
         let j0 = ce[self.consts.electrode(side)].iter().map(|&c| j0_particle * electrolyte_factor(c, c_e_ref));
         let film = if side == Side::Negative { self.sei.film(ec, y, j, self.lam.surface_area_density(ec, side, y, 0)) } else { 0.0 };
-        ec.ocp(side, c_s) + mean_overpotential(j, j0, alpha, temp) + film
+        ec.ocp(side, c_s, temp) + mean_overpotential(j, j0, alpha, temp) + film
     }
 
     /// Writes the SEI and plating states' rates into `out` and returns the x-averaged
@@ -304,8 +304,8 @@ impl Spme {
         let (ec, side) = (&self.ec, Side::Negative);
         let (j, a) = (self.lam.interfacial_current(ec, side, y, current), self.lam.surface_area_density(ec, side, y, 0));
         let delta_phi = self.surface_potential_difference(side, sn, y, current, temp);
-        let site = SideReactionSite { a, total_current: j, side_current: j_side, delta_phi, ocp: ec.ocp(side, sn), film: self.sei.film(ec, y, j, a) };
-        site.uncounted_heat(temp, ec.params.negative.ocp_entropic_change) * ec.area() * ec.params.negative.thickness
+        let site = SideReactionSite { a, total_current: j, side_current: j_side, delta_phi, ocp: ec.ocp(side, sn, temp), film: self.sei.film(ec, y, j, a) };
+        site.uncounted_heat(temp, ec.entropic_change(side, sn)) * ec.area() * ec.params.negative.thickness
     }
 
     /// Solid-phase ohmic drop between the x-averaged and current-collector potentials (V).
@@ -404,8 +404,8 @@ impl Model for Spme {
         self.electrolyte.concentration_rhs(ec, ce, self.reaction(current), Some(ionic), temp, &mut out[nn + np..nn + np + nx]);
         if ec.submodels.thermal {
             let (sn, sp) = self.surfaces(y);
-            let ocv = ec.ocp(Side::Positive, sp) - ec.ocp(Side::Negative, sn);
-            let heat = bernardi_heat(current, ocv, self.voltage(y, current), temp, ec.docv_dt()) - self.uncounted_side_heat(y, sn, current, temp, j_sei + j_plating);
+            let ocv = ec.ocp(Side::Positive, sp, temp) - ec.ocp(Side::Negative, sn, temp);
+            let heat = bernardi_heat(current, ocv, self.voltage(y, current), temp, ec.docv_dt(sn, sp)) - self.uncounted_side_heat(y, sn, current, temp, j_sei + j_plating);
             out[self.len() - 1] = ec.thermal.rate(heat, temp);
         }
     }
@@ -471,7 +471,7 @@ impl Model for Spme {
 
     fn open_circuit_voltage(&self, y: &[f64]) -> f64 {
         let (cn, cp) = self.particles(y);
-        self.ec.single_particle_ocv(&cn, &cp)
+        self.ec.single_particle_ocv(&cn, &cp, self.temp(y))
     }
 }
 

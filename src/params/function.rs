@@ -1,7 +1,7 @@
 //! Scalar functions of one variable used by parameter sets: open-circuit potentials (V) of
 //! stoichiometry, and electrolyte transport properties of concentration (mol/m^3).
 
-use serde::{Deserialize, Serialize};
+use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
 use crate::error::Error;
 
@@ -17,6 +17,14 @@ pub enum Function1D {
     Chen2020GraphiteOcp,
     /// NMC 811 OCP of the LG M50 positive electrode (Chen et al. 2020), V vs stoichiometry.
     Chen2020Nmc811Ocp,
+    /// Entropic change dU/dT (V/K) of the LG M50 graphite vs stoichiometry, O'Regan et al.
+    /// 2022 (Electrochim. Acta 425, 140700), as PyBaMM's `ORegan2022` set has it.
+    #[serde(rename = "oregan2022_graphite_entropic_change")]
+    ORegan2022GraphiteEntropicChange,
+    /// Entropic change dU/dT (V/K) of the LG M50 NMC 811 vs stoichiometry, O'Regan et al.
+    /// 2022, as PyBaMM's `ORegan2022` set has it.
+    #[serde(rename = "oregan2022_nmc811_entropic_change")]
+    ORegan2022Nmc811EntropicChange,
     /// LiPF6 in EC:EMC electrolyte diffusivity (Nyman et al. 2008), m^2/s vs mol/m^3.
     Nyman2008Diffusivity,
     /// LiPF6 in EC:EMC electrolyte conductivity (Nyman et al. 2008), S/m vs mol/m^3.
@@ -41,6 +49,14 @@ impl Function1D {
                     - 17.7326 * tanh(15.7890 * (x - 0.3117))
                     + 17.5842 * tanh(15.9308 * (x - 0.3120))
             }
+            Function1D::ORegan2022GraphiteEntropicChange => {
+                // The fit is in mV/K; its tanh pair has a zero coefficient in the paper's
+                // final fit and is left out.
+                (-0.1112 * x + 0.02914 + 0.3561 * (-(x - 0.08309).powi(2) / 0.004616).exp()) * 1e-3
+            }
+            Function1D::ORegan2022Nmc811EntropicChange => {
+                (0.04006 * (-(x - 0.2828).powi(2) / 0.0009855).exp() - 0.06656 * (-(x - 0.8032).powi(2) / 0.02179).exp()) * 1e-3
+            }
             Function1D::Nyman2008Diffusivity => {
                 let c = x * 1e-3;
                 8.794e-11 * c * c - 3.972e-10 * c + 4.862e-10
@@ -50,6 +66,22 @@ impl Function1D {
                 0.1297 * c * c * c - 2.51 * (c * c.sqrt()) + 3.329 * c
             }
         }
+    }
+
+    /// The published entropic change dU/dT (V/K) of the material whose OCP this is, where one
+    /// is known: O'Regan et al. 2022 measured it on the same LG M50 cell whose graphite and
+    /// NMC 811 OCPs Chen et al. 2020 give.
+    pub fn published_entropic_change(&self) -> Option<Function1D> {
+        match self {
+            Function1D::Chen2020GraphiteOcp => Some(Function1D::ORegan2022GraphiteEntropicChange),
+            Function1D::Chen2020Nmc811Ocp => Some(Function1D::ORegan2022Nmc811EntropicChange),
+            _ => None,
+        }
+    }
+
+    /// Whether the function is zero everywhere (a constant 0).
+    pub fn is_zero(&self) -> bool {
+        matches!(self, Function1D::Constant { value } if *value == 0.0)
     }
 
     /// Checks a table's shape and values; `field` names it in the error.
@@ -79,6 +111,29 @@ impl Function1D {
             }
             _ => Ok(()),
         }
+    }
+}
+
+/// Reads a plain number as [`Function1D::Constant`] and anything else as a function, so a
+/// parameter that was a scalar (the OCPs' entropic change) stays readable as one.
+pub fn number_or_function<'de, D: Deserializer<'de>>(d: D) -> Result<Function1D, D::Error> {
+    #[derive(Deserialize)]
+    #[serde(untagged)]
+    enum Either {
+        Number(f64),
+        Function(Function1D),
+    }
+    Ok(match Either::deserialize(d)? {
+        Either::Number(value) => Function1D::Constant { value },
+        Either::Function(f) => f,
+    })
+}
+
+/// Writes a [`Function1D::Constant`] as a plain number, the inverse of [`number_or_function`].
+pub fn serialize_number_or_function<S: Serializer>(f: &Function1D, s: S) -> Result<S::Ok, S::Error> {
+    match f {
+        Function1D::Constant { value } => s.serialize_f64(*value),
+        f => f.serialize(s),
     }
 }
 

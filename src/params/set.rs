@@ -40,8 +40,15 @@ pub struct Electrode {
     pub diffusivity_activation_energy: f64,
     /// Open-circuit potential vs stoichiometry (V).
     pub ocp: Function1D,
-    /// Entropic change of the OCP (V/K).
-    pub ocp_entropic_change: f64,
+    /// Entropic change of the OCP, dU/dT (V/K) against stoichiometry: the OCP at temperature
+    /// `T` is `U(x) + (T - T_ref) dU/dT(x)` (PyBaMM's form), and `T dU/dT` the reversible heat.
+    /// A number in a file is a constant.
+    #[serde(deserialize_with = "super::function::number_or_function", serialize_with = "super::function::serialize_number_or_function")]
+    pub ocp_entropic_change: Function1D,
+    /// Factor (-) on `ocp_entropic_change`: its size, with its shape kept (what a fit of the
+    /// entropic term frees). 1 by default.
+    #[serde(default = "one")]
+    pub ocp_entropic_change_factor: f64,
     /// Reaction rate constant m_ref in j0 = m_ref c_e^a c_s^a (c_max - c_s)^(1-a)
     /// (A/m^2 (m^3/mol)^1.5).
     pub rate_constant: f64,
@@ -131,7 +138,17 @@ impl Electrode {
                 format!("must lie strictly between 0 and max_concentration = {}", self.max_concentration),
             ));
         }
-        self.ocp.validate(&f("ocp"))
+        self.ocp.validate(&f("ocp"))?;
+        self.ocp_entropic_change.validate(&f("ocp_entropic_change"))?;
+        check(&f("ocp_entropic_change_factor"), self.ocp_entropic_change_factor, self.ocp_entropic_change_factor.is_finite(), "must be finite")
+    }
+
+    /// The entropic change dU/dT (V/K) at stoichiometry `sto`, factor included.
+    pub fn entropic_change(&self, sto: f64) -> f64 {
+        if self.ocp_entropic_change.is_zero() {
+            return 0.0;
+        }
+        self.ocp_entropic_change_factor * self.ocp_entropic_change.eval(sto)
     }
 }
 
@@ -392,7 +409,12 @@ impl ParameterSet {
 
     /// Sets a scalar parameter by its dotted path (e.g. `positive.thickness`).
     pub fn set(&mut self, path: &str, value: f64) -> Result<(), Error> {
-        *self.field_mut(path)? = value;
+        // A scalar entropic change replaces a function of stoichiometry.
+        match path {
+            "negative.ocp_entropic_change" => self.negative.ocp_entropic_change = Function1D::Constant { value },
+            "positive.ocp_entropic_change" => self.positive.ocp_entropic_change = Function1D::Constant { value },
+            _ => *self.field_mut(path)? = value,
+        }
         Ok(())
     }
 
@@ -423,7 +445,11 @@ impl ParameterSet {
                     "initial_concentration" => &mut e.initial_concentration,
                     "diffusivity" => &mut e.diffusivity,
                     "diffusivity_activation_energy" => &mut e.diffusivity_activation_energy,
-                    "ocp_entropic_change" => &mut e.ocp_entropic_change,
+                    "ocp_entropic_change" => match &mut e.ocp_entropic_change {
+                        Function1D::Constant { value } => value,
+                        _ => return Err(Error::InvalidSetting { field: path.into(), reason: "a function of stoichiometry here, not a scalar: set its size with ocp_entropic_change_factor".into() }),
+                    },
+                    "ocp_entropic_change_factor" => &mut e.ocp_entropic_change_factor,
                     "rate_constant" => &mut e.rate_constant,
                     "rate_activation_energy" => &mut e.rate_activation_energy,
                     "charge_transfer_coefficient" => &mut e.charge_transfer_coefficient,

@@ -78,8 +78,9 @@ fn chen2020_round_trip() {
     println!("{n} scalar fields round-trip within 1e-12");
     // 80 (with the leak current, the voltage offset and gain and the two particle-radius
     // spreads, carried as `cellstudio.` keys), plus the 15 SEI, the 18 LAM (9 per electrode)
-    // and the 6 plating fields, which BPX does not carry: both sides hold their defaults.
-    assert_eq!(n, 80 + 15 + 18 + 6, "every scalar field compared");
+    // and the 6 plating fields, which BPX does not carry: both sides hold their defaults;
+    // and the 2 entropic-change factors (1: BPX carries the entropic change with its factor).
+    assert_eq!(n, 80 + 15 + 18 + 6 + 2, "every scalar field compared");
     assert_eq!(p.name, original.name);
 
     // OCPs: tables against the Chen 2020 functions at 50 stoichiometries.
@@ -373,14 +374,11 @@ fn expressions_are_evaluated() {
     assert!(worst < 1e-4);
     assert_eq!(p.negative.diffusivity, 3.3e-14);
     assert!(imported.approximated_fields.iter().any(|k| k == "Parameterisation/Negative electrode/OCP [V]"));
-    // Entropic change averaged over the positive window.
-    let w = &doc["Parameterisation"][POS];
-    let (lo, hi) =
-        (w["Minimum stoichiometry"].as_f64().unwrap(), w["Maximum stoichiometry"].as_f64().unwrap());
-    let mean = -2e-4 * (1.0 - 0.5 * (lo + hi));
-    assert!((p.positive.ocp_entropic_change / mean - 1.0).abs() < 1e-9);
+    // An entropic-change table is kept as the function of stoichiometry it is, not averaged.
+    assert_eq!(p.positive.ocp_entropic_change, Function1D::Table { x: vec![0.0, 1.0], y: vec![-2e-4, 0.0] });
+    assert!((p.positive.entropic_change(0.25) + 1.5e-4).abs() < 1e-18);
     assert!(
-        imported
+        !imported
             .approximated_fields
             .iter()
             .any(|k| k.ends_with("Positive electrode/Entropic change coefficient [V.K-1]"))
@@ -459,8 +457,26 @@ fn modified_set_round_trip() {
         "",
         1e-12,
     );
-    assert_eq!(n, 80 + 15 + 18 + 6);
+    assert_eq!(n, 80 + 15 + 18 + 6 + 2);
     assert_eq!(imported.params.positive.radius_relative_std, 0.2);
     assert_eq!(imported.params.electrolyte.diffusivity, p.electrolyte.diffusivity);
     assert_eq!(imported.params.electrolyte.conductivity, p.electrolyte.conductivity);
+}
+
+/// An entropic change that is a function of stoichiometry (O'Regan 2022's graphite, at 1.3
+/// times its size) goes out as a table with its factor folded in and comes back as that
+/// table, within the tabulation tolerance (1e-7 V/K) of the scaled function.
+#[test]
+fn entropic_change_function_round_trip() {
+    let mut p: ParameterSet = chen2020();
+    p.negative.ocp_entropic_change = Function1D::ORegan2022GraphiteEntropicChange;
+    p.negative.ocp_entropic_change_factor = 1.3;
+    let imported = from_bpx_json(&to_bpx_json(&p).unwrap()).unwrap();
+    let back = &imported.params.negative;
+    assert!(matches!(back.ocp_entropic_change, Function1D::Table { .. }), "{:?}", back.ocp_entropic_change);
+    assert_eq!(back.ocp_entropic_change_factor, 1.0);
+    let worst = (0..=200).map(|k| k as f64 / 200.0).map(|x| (back.entropic_change(x) - p.negative.entropic_change(x)).abs()).fold(0.0, f64::max);
+    println!("entropic change round trip: worst {worst:.2e} V/K");
+    assert!(worst < 1e-7, "worst {worst:.2e} V/K");
+    assert!(imported.params.positive.ocp_entropic_change.is_zero());
 }

@@ -34,7 +34,8 @@ fn adiabatic_temperature_rise_matches_integrated_heat() {
     let rate = |k: usize| {
         let y = &sol.states[k];
         let (sn, sp) = model.surface_concentrations(y);
-        let ocv_surface = model.ec.ocp(Side::Positive, sp) - model.ec.ocp(Side::Negative, sn);
+        let t = sol.temperature[k];
+        let ocv_surface = model.ec.ocp(Side::Positive, sp, t) - model.ec.ocp(Side::Negative, sn, t);
         let i = sol.current[k];
         (i * (ocv_surface - sol.voltage[k]), i * (model.open_circuit_voltage(y) - sol.voltage[k]))
     };

@@ -11,6 +11,10 @@
 //!   parameters, our defaults), which plates 1.3e-2 mol of lithium (7 % of the full
 //!   negative electrode's).
 //!
+//! - the OCPs' entropic change of the same cell (O'Regan 2022, which Chen 2020 leaves at
+//!   zero): the SPM, SPMe and DFN thermal at 35 degC as above, and the SPM and DFN
+//!   isothermal at 0 degC through one 1C cycle.
+//!
 //! Compared: the voltage outside the holds, the current in the holds and the temperature,
 //! each step from the last one's end state, and when each step ends. With side reactions
 //! PyBaMM heats with the intercalation current only and not through the SEI film
@@ -23,13 +27,15 @@ use crate::common;
 use cellstudio::geometry::MeshSizes;
 use cellstudio::models::submodels::{PlatingModel, SeiModel};
 use cellstudio::models::{ModelBuilder, ModelKind, Submodels};
-use cellstudio::params::{ParameterSet, chen2020};
+use cellstudio::params::{Function1D, ParameterSet, chen2020};
 use cellstudio::protocol::{Step, experiment};
 
 const CYCLE: [&str; 5] = ["Discharge at 2C until 2.7 V", "Rest for 15 minutes", "Charge at 1C until 4.2 V", "Hold at 4.2 V until C/10", "Rest for 15 minutes"];
 const PLATING_CYCLE: [&str; 5] = ["Discharge at 1C until 3.0 V", "Rest for 15 minutes", "Charge at 2C until 4.2 V", "Hold at 4.2 V until C/10", "Rest for 15 minutes"];
+const ENTROPIC_CYCLE: [&str; 5] = ["Discharge at 1C until 2.7 V", "Rest for 15 minutes", "Charge at 1C until 4.2 V", "Hold at 4.2 V until C/10", "Rest for 15 minutes"];
 const WARM: f64 = 308.15;
 const COLD: f64 = 278.15;
+const FREEZING: f64 = 273.15;
 
 /// One reference run: its CSV name, model and submodels, cycle, cycles and ambient (K).
 struct Case {
@@ -46,9 +52,14 @@ impl Case {
         Case { name, kind, submodels: Submodels { thermal, sei, ..Default::default() }, cycle: CYCLE, cycles, ambient: WARM }
     }
 
-    /// Chen 2020 at the case's ambient, the SEI's exchange current times 100 with SEI on.
+    /// Chen 2020 at the case's ambient, the SEI's exchange current times 100 with SEI on,
+    /// and O'Regan 2022's entropic change of the OCPs in the cases named `*entropic*`.
     fn params(&self) -> ParameterSet {
         let mut p = chen2020();
+        if self.name.contains("entropic") {
+            p.negative.ocp_entropic_change = Function1D::ORegan2022GraphiteEntropicChange;
+            p.positive.ocp_entropic_change = Function1D::ORegan2022Nmc811EntropicChange;
+        }
         p.thermal.ambient_temperature = self.ambient;
         p.thermal.initial_temperature = self.ambient;
         p.thermal.heat_transfer_coefficient = 12.0;
@@ -178,4 +189,50 @@ fn plating_under_self_heating_spm_matches_pybamm() {
     let submodels = Submodels { thermal: true, plating: PlatingModel::Irreversible, ..Default::default() };
     let case = Case { name: "spm_thermal_plating", kind: ModelKind::Spm, submodels, cycle: PLATING_CYCLE, cycles: 2, ambient: COLD };
     check(case, Limits { voltage: (3e-4, 1e-3), current: (2.3e-3, 2.5e-2), temperature: 3.5e-4, step_end: 4e-3 });
+}
+
+/// The OCPs' entropic change (O'Regan 2022's dU/dT of the LG M50) under self-heating at
+/// 35 degC: the OCP `U(x) + (T - T_ref) dU/dT(x)` and the reversible heat `a j T dU/dT(x)` at
+/// the particle surface. The term moves PyBaMM's first 2C discharge by 1.5 mV RMS (2.8 mV
+/// at most) and the temperature by 5.7 K. Achieved: voltage RMS / max 4.0e-5 / 3.9e-4 mV,
+/// hold current 4.0e-4 / 1.2e-3 mA, temperature 7.0e-5 K, step ends 5.9e-4 s.
+#[test]
+fn entropic_change_under_self_heating_spm_matches_pybamm() {
+    let case = Case::at_35_degc("spm_thermal_entropic", ModelKind::Spm, true, SeiModel::None, 2);
+    check(case, Limits { voltage: (2e-4, 2e-3), current: (2e-3, 6e-3), temperature: 3.5e-4, step_end: 3e-3 });
+}
+
+/// As [`entropic_change_under_self_heating_spm_matches_pybamm`], the SPMe (the term: 3.6 /
+/// 12 mV, 5.6 K). Achieved: voltage 1.4e-2 / 2.3e-2 mV, hold current 9.9e-2 / 0.16 mA,
+/// temperature 1.9e-2 K, step ends 7.7e-2 s, as the SPMe without it.
+#[test]
+fn entropic_change_under_self_heating_spme_matches_pybamm() {
+    let case = Case::at_35_degc("spme_thermal_entropic", ModelKind::Spme, true, SeiModel::None, 2);
+    check(case, Limits { voltage: (0.07, 0.12), current: (0.5, 0.8), temperature: 0.1, step_end: 0.4 });
+}
+
+/// As [`entropic_change_under_self_heating_spm_matches_pybamm`], the DFN, one cycle (the
+/// term: 3.5 / 12 mV, 5.1 K). Achieved: voltage 1.4e-2 / 4.8e-2 mV, hold current 0.14 /
+/// 0.34 mA, temperature 2.3e-2 K, step ends 9.1e-2 s, as the DFN without it.
+#[test]
+fn entropic_change_under_self_heating_dfn_matches_pybamm() {
+    let case = Case::at_35_degc("dfn_thermal_entropic", ModelKind::Dfn, true, SeiModel::None, 1);
+    check(case, Limits { voltage: (0.075, 0.25), current: (0.72, 1.7), temperature: 0.115, step_end: 0.45 });
+}
+
+/// The entropic change isothermal at 0 degC, 25 K below the OCPs' reference temperature: one
+/// 1C cycle. Achieved: voltage RMS / max 3.3e-5 / 4.2e-4 mV, hold current 2.2e-4 / 5.8e-4 mA,
+/// step ends 4.2e-4 s.
+#[test]
+fn entropic_change_at_0_degc_spm_matches_pybamm() {
+    let case = Case { name: "spm_entropic_cold", kind: ModelKind::Spm, submodels: Submodels::default(), cycle: ENTROPIC_CYCLE, cycles: 1, ambient: FREEZING };
+    check(case, Limits { voltage: (1.7e-4, 2e-3), current: (1.1e-3, 3e-3), temperature: 1e-9, step_end: 2.1e-3 });
+}
+
+/// As [`entropic_change_at_0_degc_spm_matches_pybamm`], the DFN. Achieved: voltage 1.3e-5 /
+/// 6.8e-5 mV, hold current 3.8e-4 / 1.6e-3 mA, step ends 1.5e-3 s.
+#[test]
+fn entropic_change_at_0_degc_dfn_matches_pybamm() {
+    let case = Case { name: "dfn_entropic_cold", kind: ModelKind::Dfn, submodels: Submodels::default(), cycle: ENTROPIC_CYCLE, cycles: 1, ambient: FREEZING };
+    check(case, Limits { voltage: (7e-5, 3.4e-4), current: (1.9e-3, 8e-3), temperature: 1e-9, step_end: 7.5e-3 });
 }

@@ -195,8 +195,9 @@ impl Model for Dfn {
         y[l.cs_p..l.ce].fill(self.lam.initial_shell(&self.ec, Side::Positive));
         y[l.ce..l.phie].iter_mut().for_each(|v| *v = p.electrolyte.initial_concentration);
         // Potentials at open circuit: phi_s_n = 0, phi_e = -U_n, phi_s_p = U_p - U_n.
-        let un = self.ec.ocp(Side::Negative, p.negative.initial_concentration);
-        let up = self.ec.ocp(Side::Positive, p.positive.initial_concentration);
+        let t0 = if l.temp.is_some() { p.thermal.initial_temperature } else { p.thermal.ambient_temperature };
+        let un = self.ec.ocp(Side::Negative, p.negative.initial_concentration, t0);
+        let up = self.ec.ocp(Side::Positive, p.positive.initial_concentration, t0);
         y[l.phie..l.phis_n].iter_mut().for_each(|v| *v = -un);
         y[l.phis_p..l.phis_p + l.nxp].iter_mut().for_each(|v| *v = up - un);
         if let Some(s) = l.sei {
@@ -233,6 +234,9 @@ impl Model for Dfn {
         // and PyBaMM does not.
         let mut ocv_power = 0.0;
         let mut uncounted_heat = 0.0;
+        // `sum a j_tot dU/dT dx` (W/(m^2 K)): the reversible heat per kelvin, PyBaMM's
+        // `Q_rev / T` with the entropic change at each particle surface.
+        let mut entropic_power = 0.0;
         self.clear_lam_losses(out_phis);
         for (side, first, n, cs) in [(Side::Negative, 0, l.nxn, l.cs_n), (Side::Positive, l.nxn + l.nxs, l.nxp, l.cs_p)] {
             let e = ec.electrode(side);
@@ -245,7 +249,7 @@ impl Model for Dfn {
                 let shells = &y[start..start + nr];
                 let c = self.lam.concentrations(side, y, shells, k);
                 let c_s = sphere.surface(&c);
-                let ocp = ec.ocp(side, c_s);
+                let ocp = ec.ocp(side, c_s, temp);
                 let j0 = exchange_current(rate, y[l.ce + i], c_e_ref, c_s, e.max_concentration);
                 let delta_phi = y[l.phis(side, k)] - y[l.phie + i];
                 let a = self.lam.fraction_index(side, k).map_or(vols[i].a, |_| self.lam.surface_area_density(ec, side, y, k));
@@ -253,7 +257,7 @@ impl Model for Dfn {
                     Side::Negative if self.side_reactions() => {
                         let (j, j_sei, site) = self.negative_interface(y, Surface { k, i, j0, delta_phi, ocp, a, temp }, out_phis);
                         out_phie[i] = a * site.total_current;
-                        uncounted_heat += vols[i].dx * site.uncounted_heat(temp, e.ocp_entropic_change);
+                        uncounted_heat += vols[i].dx * site.uncounted_heat(temp, ec.entropic_change(side, c_s));
                         (j, j_sei)
                     }
                     _ => {
@@ -263,6 +267,7 @@ impl Model for Dfn {
                     }
                 };
                 ocv_power -= vols[i].dx * out_phie[i] * ocp;
+                entropic_power += vols[i].dx * out_phie[i] * ec.entropic_change(side, c_s);
                 let flux = Electrochem::molar_flux(j);
                 let out_particle = &mut out_cs[start..start + nr];
                 match self.lam.fraction_index(side, k) {
@@ -304,7 +309,7 @@ impl Model for Dfn {
 
         if let Some(t) = l.temp {
             let v = self.voltage(y, current);
-            let heat = bernardi_heat_of_power(ocv_power * ec.area(), current, v, temp, ec.docv_dt()) - uncounted_heat * ec.area();
+            let heat = bernardi_heat_of_power(ocv_power * ec.area(), current, v, temp * entropic_power * ec.area()) - uncounted_heat * ec.area();
             out_phis[t - l.phis_n] = ec.thermal.rate(heat, temp);
         }
     }
@@ -397,7 +402,8 @@ impl Model for Dfn {
                 mean[slot] += c / n as f64;
             }
         }
-        self.ec.ocp(Side::Positive, mean[1]) - self.ec.ocp(Side::Negative, mean[0])
+        let temp = self.temp(y);
+        self.ec.ocp(Side::Positive, mean[1], temp) - self.ec.ocp(Side::Negative, mean[0], temp)
     }
 }
 

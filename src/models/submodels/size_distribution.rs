@@ -164,6 +164,8 @@ pub struct Reaction {
     pub currents: Vec<f64>,
     /// Area-weighted mean open-circuit potential (V) of the class surfaces.
     pub mean_ocp: f64,
+    /// Area-weighted mean entropic change dU/dT (V/K) of the class surfaces.
+    pub mean_entropic_change: f64,
 }
 
 impl Electrochem {
@@ -179,10 +181,11 @@ impl Electrochem {
         let k = self.rate_constant(side, temp) * self.params.electrolyte.initial_concentration.sqrt();
         let surfaces = sizes.surfaces(c);
         let j0: Vec<f64> = surfaces.iter().map(|&s| k * particle_factor(s.clamp(0.0, e.max_concentration), e.max_concentration)).collect();
-        let ocp: Vec<f64> = surfaces.iter().map(|&s| self.bounded_ocp(side, s)).collect();
+        let ocp: Vec<f64> = surfaces.iter().map(|&s| self.bounded_ocp(side, s, temp)).collect();
+        let entropic: Vec<f64> = surfaces.iter().map(|&s| self.entropic_change(side, s.clamp(0.0, e.max_concentration))).collect();
         let mut currents = vec![0.0; sizes.len()];
         let delta = shared_potential(&sizes.area_weights, &j0, &ocp, j, e.charge_transfer_coefficient, temp, &mut currents);
-        Reaction { delta, currents, mean_ocp: sizes.area_mean(&ocp) }
+        Reaction { delta, currents, mean_ocp: sizes.area_mean(&ocp), mean_entropic_change: sizes.area_mean(&entropic) }
     }
 }
 

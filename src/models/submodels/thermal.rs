@@ -52,9 +52,10 @@ pub fn bernardi_heat(current: f64, ocv: f64, voltage: f64, temp: f64, docv_dt: f
 /// [`bernardi_heat`] (W) with the open-circuit power `ocv_power` (W) in place of `I U`: for
 /// reactions whose current and OCP vary through the electrodes, `-A sum a j_tot U dx` over
 /// the electrode volumes (nonzero at rest while currents redistribute), which makes the heat
-/// PyBaMM's ohmic plus reaction heat `Q_ohm + sum a j_tot eta` by charge conservation.
-pub fn bernardi_heat_of_power(ocv_power: f64, current: f64, voltage: f64, temp: f64, docv_dt: f64) -> f64 {
-    ocv_power - current * voltage - current * temp * docv_dt
+/// PyBaMM's ohmic plus reaction heat `Q_ohm + sum a j_tot eta` by charge conservation; and
+/// the reversible heat `reversible` (W), `A T sum a j_tot dU/dT dx` (PyBaMM's `Q_rev`).
+pub fn bernardi_heat_of_power(ocv_power: f64, current: f64, voltage: f64, reversible: f64) -> f64 {
+    ocv_power - current * voltage + reversible
 }
 
 /// The reactions at one negative-electrode site (the whole electrode in the single-particle

@@ -6,7 +6,7 @@ use super::super::ParameterSet;
 use super::super::function::Function1D;
 use super::super::set::FARADAY;
 use super::keys::{self, BPX_VERSION, SOC_KEY, USER_DEFINED_FIELDS, USER_PREFIX, mean_heat_capacity};
-use super::tabulate::{ELECTROLYTE_RANGE, ELECTROLYTE_TOLERANCE, OCP_TOLERANCE, Tolerance, sample};
+use super::tabulate::{ELECTROLYTE_RANGE, ELECTROLYTE_TOLERANCE, ENTROPIC_TOLERANCE, OCP_TOLERANCE, Tolerance, sample};
 use super::window::stoichiometry_windows;
 use crate::error::Error;
 
@@ -73,7 +73,13 @@ pub fn to_bpx_json(p: &ParameterSet) -> Result<String, Error> {
             keys::DIFFUSIVITY: num(&f("diffusivity"), el.diffusivity)?,
             keys::DIFFUSIVITY_EA: num(&f("diffusivity_activation_energy"), el.diffusivity_activation_energy)?,
             keys::OCP: function_value(&el.ocp, (0.0, 1.0), Tolerance::Absolute(OCP_TOLERANCE)),
-            keys::ENTROPIC: num(&f("ocp_entropic_change"), el.ocp_entropic_change)?,
+            keys::ENTROPIC: match &el.ocp_entropic_change {
+                Function1D::Constant { value } => num(&f("ocp_entropic_change"), value * el.ocp_entropic_change_factor)?,
+                _ => {
+                    let (x, y) = sample(&|v| el.entropic_change(v), (0.0, 1.0), Tolerance::Absolute(ENTROPIC_TOLERANCE));
+                    json!({ "x": x, "y": y })
+                }
+            },
             keys::RATE: num(&f("rate_constant"), el.rate_constant * el.max_concentration * ce0.sqrt() / FARADAY)?,
             keys::RATE_EA: num(&f("rate_activation_energy"), el.rate_activation_energy)?,
         }))

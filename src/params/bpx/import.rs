@@ -7,10 +7,11 @@ use std::collections::BTreeMap;
 use serde_json::Value;
 
 use super::super::chen2020::chen2020;
+use super::super::function::Function1D;
 use super::super::set::{FARADAY, ParameterSet};
 use super::keys::{self, HEAT_LAYERS, SOC_KEY, USER_DEFINED_FIELDS, USER_PREFIX, mean_heat_capacity, scalar_paths};
 use super::section::{Section, Sections, first_of};
-use super::tabulate::{ELECTROLYTE_RANGE, ELECTROLYTE_TOLERANCE, OCP_TOLERANCE, Tolerance};
+use super::tabulate::{ELECTROLYTE_RANGE, ELECTROLYTE_TOLERANCE, ENTROPIC_TOLERANCE, OCP_TOLERANCE, Tolerance};
 use super::value::{Check, describe, missing, number, relabel, type_error};
 use crate::error::Error;
 
@@ -365,14 +366,16 @@ impl Importer {
         )?;
         if side == "negative" { self.p.negative.ocp = ocp } else { self.p.positive.ocp = ocp }
         self.origin.insert(f("ocp"), path);
-        match sec.opt_func(keys::ENTROPIC)? {
+        let entropic = match sec.opt_func(keys::ENTROPIC)? {
             Some(e) => {
                 let path = sec.key_path(keys::ENTROPIC);
-                let v = e.to_scalar(&path, (lo, hi), false, &mut self.approximated)?;
-                self.set(&f("ocp_entropic_change"), v, path)?;
+                let function = e.to_function(&path, (0.0, 1.0), Tolerance::Absolute(ENTROPIC_TOLERANCE), &mut self.approximated)?;
+                self.origin.insert(f("ocp_entropic_change"), path);
+                function
             }
-            None => self.p.set(&f("ocp_entropic_change"), 0.0)?,
-        }
+            None => Function1D::Constant { value: 0.0 },
+        };
+        if side == "negative" { self.p.negative.ocp_entropic_change = entropic } else { self.p.positive.ocp_entropic_change = entropic }
 
         let k = sec.num(keys::RATE, Check::Positive)?;
         self.set(&f("rate_constant"), FARADAY * k / (c_max * ce0.sqrt()), sec.key_path(keys::RATE))?;

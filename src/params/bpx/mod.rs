@@ -25,7 +25,7 @@
 //! | Electrode / Conductivity (effective) | `conductivity` (with `bruggeman_solid` = 0) |
 //! | Electrode / Diffusivity (+ activation energy) | `diffusivity` (+ `diffusivity_activation_energy`) |
 //! | Electrode / OCP (number, table or expression of stoichiometry) | `ocp` |
-//! | Electrode / Entropic change coefficient | `ocp_entropic_change` |
+//! | Electrode / Entropic change coefficient (number, table or expression of stoichiometry) | `ocp_entropic_change` |
 //! | Electrode / Reaction rate constant k (+ activation energy) | `rate_constant = F k / (c_max sqrt(c_e0))` |
 //! | Electrode / Minimum, Maximum stoichiometry + initial state of charge | `initial_concentration` |
 //! | Separator / Thickness, Porosity, Transport efficiency | `separator.*` |
@@ -58,9 +58,9 @@
 //! Expressions (BPX `Function`: Python syntax in `x` with `+ - * / **`, parentheses and
 //! `exp`, `tanh`, `cosh`, plus `sinh`, `log`, `sqrt`) are parsed and evaluated here. A
 //! constant expression becomes a number; otherwise a function of one variable is sampled into
-//! a table (adaptively, to 1e-5 V for OCPs and 1e-4 relative for the electrolyte), and a
-//! stoichiometry-dependent particle diffusivity or entropic change, scalars here, is averaged
-//! over the stoichiometry window (geometric / arithmetic mean). Such lossy conversions are
+//! a table (adaptively, to 1e-5 V for OCPs, 1e-7 V/K for entropic changes and 1e-4 relative
+//! for the electrolyte), and a stoichiometry-dependent particle diffusivity, a scalar here, is
+//! averaged over the stoichiometry window (geometric mean). Such lossy conversions are
 //! listed in [`BpxImport::approximated_fields`].
 //!
 //! # Files

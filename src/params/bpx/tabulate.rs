@@ -6,6 +6,9 @@
 pub(super) const ELECTROLYTE_RANGE: (f64, f64) = (0.0, 4000.0);
 /// Absolute tolerance (V) of a tabulated OCP.
 pub(super) const OCP_TOLERANCE: f64 = 1e-5;
+/// Absolute tolerance (V/K) of a tabulated entropic change: the OCP it shifts 100 K from its
+/// reference temperature stays within [`OCP_TOLERANCE`].
+pub(super) const ENTROPIC_TOLERANCE: f64 = OCP_TOLERANCE / 100.0;
 /// Tolerance of a tabulated electrolyte property, relative to its largest value.
 pub(super) const ELECTROLYTE_TOLERANCE: f64 = 1e-4;
 
