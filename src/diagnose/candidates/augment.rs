@@ -120,6 +120,27 @@ impl Candidate {
                 };
                 (extra, change.into())
             }
+            Candidate::EntropicChange => {
+                // Offered where the OCPs' temperature term is seen: the model away from their
+                // reference temperature, or heating itself. Each electrode keeps the set's
+                // dU/dT, or takes its chemistry's published one, and its size is fitted.
+                let away = (p.thermal.ambient_temperature - p.thermal.reference_temperature).abs() >= ENTROPIC_MIN_OFFSET_K;
+                if !(away || spec.submodels.thermal) {
+                    return None;
+                }
+                let mut extra = Vec::new();
+                for (side, e) in [("negative", &mut p.negative), ("positive", &mut p.positive)] {
+                    if e.ocp_entropic_change.is_zero() {
+                        match e.ocp.published_entropic_change() {
+                            Some(f) => (e.ocp_entropic_change, e.ocp_entropic_change_factor) = (f, 1.0),
+                            None => continue,
+                        }
+                    }
+                    let path = format!("{side}.ocp_entropic_change_factor");
+                    extra.push(FitParameter::linear(&path, 1.0, ENTROPIC_SEARCH.0, ENTROPIC_SEARCH.1));
+                }
+                (extra, "the OCPs' entropic change dU/dT switched on (the chemistry's published curves where the set has none), its size fitted per electrode".into())
+            }
             Candidate::VoltageOffset => {
                 if spec.submodels.voltage_offset {
                     return None;

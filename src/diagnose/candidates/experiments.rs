@@ -43,6 +43,7 @@ impl Candidate {
             (VoltageGain, _) | (_, VoltageGain) => "a slow (C/20) charge and discharge over the full window with the voltage channel checked against a reference at its top and bottom: a shifted stoichiometry moves the OCV's features along the capacity axis, a gain scales the whole curve".into(),
             (VoltageOffset, _) | (_, VoltageOffset) => "a slow (C/20) charge and discharge over the full window with the voltage channel checked against a reference: a shifted stoichiometry moves the OCV's features along the capacity axis, an offset moves the whole curve up or down".into(),
             (Leak, _) | (_, Leak) => "a rest of several hours at a middle state of charge, then a slow charge and discharge (a leak keeps discharging the cell at rest and the charge balance does not close; lost lithium or material does neither)".into(),
+            (EntropicChange, _) | (_, EntropicChange) => "the open-circuit voltage at rest at three temperatures (e.g. 15, 25 and 35 degC, an hour at each) at several states of charge: the entropic change is the slope of the OCV against temperature, and vanishes at the OCPs' 25 degC reference".into(),
             (Thermal, _) | (_, Thermal) => "the same protocol at a second ambient temperature, with the cell temperature recorded".into(),
             _ if has_rates => format!(
                 "the same cell at a rate well above this recording's highest (its {} load levels did not separate them), with a rest after charge and after discharge",

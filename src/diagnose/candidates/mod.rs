@@ -37,6 +37,7 @@ pub enum Candidate {
     Thermal,
     RcDynamics,
     Hysteresis,
+    EntropicChange,
     SeiGrowth,
     SeiGrowthSeries,
     LithiumPlating,
@@ -111,6 +112,17 @@ const INVENTORY_EDGE: f64 = 0.01;
 const SIZE_SPREAD_START: f64 = 0.3;
 const SIZE_SPREAD_PLAUSIBLE: f64 = 0.8;
 
+/// The entropic-change candidate is offered when the model's temperature lies at least this
+/// far (K) from the OCPs' reference temperature (closer, the term is below the noise: 0.1 mV/K
+/// of a graphite's dU/dT over 5 K is 0.5 mV), or when the model heats itself.
+const ENTROPIC_MIN_OFFSET_K: f64 = 5.0;
+
+/// The entropic-change candidate's factors on the chemistry's published dU/dT (-): searched
+/// over this range, plausible within [`ENTROPIC_PLAUSIBLE`] (the same chemistry from another
+/// maker or batch; the sign of an entropy does not turn).
+const ENTROPIC_SEARCH: (f64, f64) = (-2.0, 4.0);
+const ENTROPIC_PLAUSIBLE: (f64, f64) = (0.0, 3.0);
+
 /// The voltage-offset candidate's search range and plausible size (V).
 const VOLTAGE_OFFSET_SEARCH: f64 = 0.05;
 const VOLTAGE_OFFSET_PLAUSIBLE: f64 = 0.02;
@@ -133,7 +145,7 @@ const HYSTERESIS_START_RATE: f64 = 10.0;
 const HYSTERESIS_BRANCH: f64 = 0.5;
 
 impl Candidate {
-    pub const ALL: [Candidate; 23] = [
+    pub const ALL: [Candidate; 24] = [
         Candidate::SeriesResistance,
         Candidate::Electrolyte,
         Candidate::ElectrolyteComposite,
@@ -146,6 +158,7 @@ impl Candidate {
         Candidate::Thermal,
         Candidate::RcDynamics,
         Candidate::Hysteresis,
+        Candidate::EntropicChange,
         Candidate::SeiGrowth,
         Candidate::SeiGrowthSeries,
         Candidate::LithiumPlating,
@@ -179,6 +192,7 @@ impl Candidate {
             Candidate::Thermal => "thermal (self-heating, temperature dependence)",
             Candidate::RcDynamics => "RC / double-layer dynamics",
             Candidate::Hysteresis => "OCV hysteresis",
+            Candidate::EntropicChange => "temperature dependence of the open-circuit potentials (their entropic change dU/dT)",
             Candidate::SeiGrowth => "SEI growth (lithium lost as the film grows, in cycling and in storage)",
             Candidate::SeiGrowthSeries => "SEI growth, reaction and transport in series (lithium lost as the film grows, more slowly as it thickens)",
             Candidate::LithiumPlating => "lithium plating (lithium lost to irreversible plating during the charges)",
@@ -201,6 +215,7 @@ impl Candidate {
             | Candidate::Thermal
             | Candidate::RcDynamics
             | Candidate::Hysteresis
+            | Candidate::EntropicChange
             | Candidate::SeiGrowth
             | Candidate::SeiGrowthSeries
             | Candidate::LithiumPlating
@@ -233,6 +248,7 @@ impl Candidate {
             Candidate::Thermal => "losses that fall as the cell warms under load (correlated with the recorded temperature rise or with the accumulated I²)",
             Candidate::RcDynamics => "transients of seconds after current steps that settle to an offset under load and decay in rests",
             Candidate::Hysteresis => "an offset at rest whose sign follows the direction of the last current (charge vs discharge), not its size",
+            Candidate::EntropicChange => "an open-circuit voltage off by a few mV with a shape along the state of charge (the electrodes' dU/dT), the same at rest and under load, in proportion to the cell's distance from the OCPs' reference temperature (25 degC)",
             Candidate::SeiGrowthSeries => "as reaction-limited SEI growth, but the lithium lost per cycle (or per hour of storage) falls as the film thickens and transport through it takes over (towards growth with the square root of time, whatever the potential)",
             Candidate::SeiGrowth => "capacity and the end-of-discharge knee drift from cycle to cycle, or across a storage rest, as lithium is consumed (a fixed stoichiometry offset does not drift), with a slowly growing film resistance",
             Candidate::LithiumPlating => "capacity and the knee drift from cycle to cycle as lithium plates while the negative electrode's potential is low (late in fast charges), with no film resistance; grows steeply with the charge rate and at low temperature",
@@ -259,6 +275,7 @@ impl Candidate {
             Candidate::Thermal => "heat-transfer coefficient 1 to 500 W/(m^2 K)",
             Candidate::RcDynamics => "time constant R C of 1 ms to 30 s (longer is transport, not an interface)",
             Candidate::Hysteresis => "half-width up to 50 mV",
+            Candidate::EntropicChange => "0 to 3 times the published dU/dT of the electrode's chemistry (the set's own where it has one), not on a search bound",
             Candidate::SeiGrowth => "SEI exchange current 0.001 to 1000 times the set's",
             Candidate::SeiGrowthSeries => "SEI rate constant 0.001 to 1000 times the set's; EC diffusivity up to the one whose transport limit takes 50 % of the negative electrode's lithium over the recording",
             Candidate::LithiumPlating => "plating rate constant 0.001 to 1000 times the set's",

@@ -62,6 +62,11 @@ impl Candidate {
             Candidate::SeiGrowth | Candidate::SeiGrowthSeries | Candidate::LithiumPlating | Candidate::LithiumPlatingPartial | Candidate::ActiveMaterialGrowth | Candidate::ActiveMaterialThroughput => {
                 ageing::implausible(self, get, base, load)
             }
+            Candidate::EntropicChange => ["negative", "positive"].iter().find_map(|side| {
+                let f = get(&format!("{side}.ocp_entropic_change_factor"))?;
+                (!(ENTROPIC_PLAUSIBLE.0..=ENTROPIC_PLAUSIBLE.1).contains(&f) || crate::problem::least_squares::near_bound(f, ENTROPIC_SEARCH.0, ENTROPIC_SEARCH.1))
+                    .then(|| format!("the {side} electrode's dU/dT at {f:.2} times its chemistry's is outside {} to {}", ENTROPIC_PLAUSIBLE.0, ENTROPIC_PLAUSIBLE.1))
+            }),
             Candidate::VoltageOffset => {
                 let v = get("cell.voltage_offset")?;
                 (v.abs() > VOLTAGE_OFFSET_PLAUSIBLE).then(|| format!("an offset of {:.1} mV exceeds 20 mV", v * 1e3))
@@ -122,6 +127,12 @@ impl Candidate {
                 let (n, p) = ageing::lam_losses(get, base, load);
                 let (which, l) = if p > n { ("positive", p) } else { ("negative", n) };
                 format!("progressive loss of active material, {which} electrode (about {:.1} % of its capacity over the recording)", 100.0 * l)
+            }
+            Candidate::EntropicChange => {
+                let factor = |side: &str| get(&format!("{side}.ocp_entropic_change_factor")).map(|f| format!("{side} electrode {f:.2}"));
+                let sizes: Vec<String> = ["negative", "positive"].iter().filter_map(|s| factor(s)).collect();
+                let offset = base.thermal.ambient_temperature - base.thermal.reference_temperature;
+                format!("{}, the cell {:.0} K {} their {:.2} K reference ({} times its chemistry's published dU/dT)", self.name(), offset.abs(), if offset < 0.0 { "below" } else { "above" }, base.thermal.reference_temperature, sizes.join(", "))
             }
             Candidate::VoltageOffset => match get("cell.voltage_offset") {
                 Some(v) => format!("{} of {:+.1} mV", self.name(), v * 1e3),
@@ -255,6 +266,41 @@ mod tests {
         let names: Vec<String> = ["negative.radius_relative_std", "positive.radius_relative_std"].map(String::from).to_vec();
         assert_eq!(Candidate::SizeDistribution.implausible(&names, &[0.4, 0.8], &base, &Load::default()), None);
         assert!(Candidate::SizeDistribution.implausible(&names, &[0.4, 0.85], &base, &Load::default()).is_some_and(|why| why.contains("positive radius spread of 0.85")));
+    }
+
+    /// The OCPs' entropic change is offered away from their reference temperature (or on a
+    /// model that heats itself), with the chemistry's published dU/dT where the set has none
+    /// and the set's own where it has one; a negative factor, one beyond 3 or one on its search
+    /// bound is implausible.
+    #[test]
+    fn the_entropic_change_is_offered_away_from_the_reference_temperature() {
+        let spec = |thermal| ModelSpec::new(ModelKind::Spm, crate::models::Submodels { thermal, ..Default::default() });
+        let at = |kelvin: f64| {
+            let mut p = crate::params::chen2020();
+            p.thermal.ambient_temperature = kelvin;
+            p
+        };
+        let offer = |p: &ParameterSet, thermal| Candidate::EntropicChange.augment(&spec(thermal), p, &[], &Load::default());
+        assert!(offer(&at(298.15), false).is_none() && offer(&at(301.0), false).is_none());
+        assert!(offer(&at(298.15), true).is_some());
+        let cold = at(273.15);
+        let aug = offer(&cold, false).expect("offered 25 K below the reference");
+        assert_eq!(aug.extra.iter().map(|e| e.path.as_str()).collect::<Vec<_>>(), ["negative.ocp_entropic_change_factor", "positive.ocp_entropic_change_factor"]);
+        assert_eq!(aug.base.negative.ocp_entropic_change, crate::params::Function1D::ORegan2022GraphiteEntropicChange);
+        // An OCP without a published dU/dT keeps none, and that electrode is not fitted.
+        let mut other = cold.clone();
+        other.positive.ocp = crate::params::Function1D::Table { x: vec![0.0, 1.0], y: vec![4.3, 3.5] };
+        let aug = offer(&other, false).expect("the negative's still");
+        assert_eq!(aug.extra.len(), 1);
+        assert!(aug.base.positive.ocp_entropic_change.is_zero());
+        let names: Vec<String> = aug.extra.iter().map(|e| e.path.clone()).collect();
+        let two: Vec<String> = ["negative.ocp_entropic_change_factor", "positive.ocp_entropic_change_factor"].map(String::from).to_vec();
+        let load = Load::default();
+        assert_eq!(Candidate::EntropicChange.implausible(&two, &[1.02, 0.7], &cold, &load), None);
+        assert!(Candidate::EntropicChange.implausible(&two, &[1.0, -0.3], &cold, &load).is_some_and(|why| why.contains("positive electrode's dU/dT at -0.30")));
+        assert!(Candidate::EntropicChange.implausible(&names, &[3.5], &cold, &load).is_some());
+        let named = Candidate::EntropicChange.named_by_values(&two, &[1.02, 0.7], &cold, &load);
+        assert!(named.contains("entropic change") && named.contains("25 K below") && named.contains("negative electrode 1.02"), "{named}");
     }
 
     /// Lithium inventory fitted to the end of an electrode's stoichiometry range has run out
