@@ -5,7 +5,7 @@ use super::Submodels;
 use super::kinetics::{arrhenius, exchange_current};
 use super::submodels::LumpedThermal;
 use crate::geometry::{Discretisation, SphereMesh};
-use crate::params::{Electrode, FARADAY, ParameterSet};
+use crate::params::{BlendOcp, Electrode, FARADAY, ParameterSet};
 
 /// Which electrode.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -21,17 +21,22 @@ pub struct Electrochem {
     pub disc: Discretisation,
     pub submodels: Submodels,
     pub thermal: LumpedThermal,
+    /// Each electrode's OCP with a second active material, tabulated (negative, positive);
+    /// `None` for an electrode without one.
+    blends: [Option<BlendOcp>; 2],
 }
 
 impl Electrochem {
     pub fn new(params: ParameterSet, disc: Discretisation, submodels: Submodels) -> Self {
         let thermal = LumpedThermal::new(&params);
-        Self { params, disc, submodels, thermal }
+        let blends = [BlendOcp::of(&params.negative), BlendOcp::of(&params.positive)];
+        Self { params, disc, submodels, thermal, blends }
     }
 
     /// Replaces the parameters (geometry must be unchanged) and refreshes derived constants.
     pub fn set_params(&mut self, params: ParameterSet) {
         self.thermal = LumpedThermal::new(&params);
+        self.blends = [BlendOcp::of(&params.negative), BlendOcp::of(&params.positive)];
         self.params = params;
     }
 
@@ -59,7 +64,16 @@ impl Electrochem {
     pub fn ocp(&self, side: Side, c_s: f64, t: f64) -> f64 {
         let e = self.electrode(side);
         let sto = c_s / e.max_concentration;
-        e.ocp.eval(sto) + (t - self.t_ref()) * e.entropic_change(sto)
+        self.reference_ocp(side, sto) + (t - self.t_ref()) * e.entropic_change(sto)
+    }
+
+    /// The OCP (V) at stoichiometry `sto` at the reference temperature: the set's function, or
+    /// the blend's table with a second active material.
+    fn reference_ocp(&self, side: Side, sto: f64) -> f64 {
+        match &self.blends[side as usize] {
+            Some(blend) => blend.eval(sto),
+            None => self.electrode(side).ocp.eval(sto),
+        }
     }
 
     /// Entropic change dU/dT (V/K) at particle concentration `c_s` (mol/m^3).
@@ -78,7 +92,7 @@ impl Electrochem {
         let e = self.electrode(side);
         let sto = c_s / e.max_concentration;
         let clipped = sto.clamp(1e-10, 1.0 - 1e-10);
-        e.ocp.eval(clipped) + (t - self.t_ref()) * e.entropic_change(clipped) + ocp_asymptotes(sto)
+        self.reference_ocp(side, clipped) + (t - self.t_ref()) * e.entropic_change(clipped) + ocp_asymptotes(sto)
     }
 
     /// Particle diffusivity (m^2/s) at temperature `t` (K).

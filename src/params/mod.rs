@@ -14,6 +14,7 @@ pub mod lam;
 mod load;
 mod overrides;
 pub mod ocv_correction;
+pub mod second_phase;
 pub mod plating;
 pub mod sei;
 mod set;
@@ -29,5 +30,6 @@ pub use soc::{StoichiometryWindow, set_initial_soc, set_initial_soc_from, stoich
 pub use lam::{Lam, LamElectrode};
 pub use plating::Plating;
 pub use ocv_correction::OcvCorrection;
+pub use second_phase::BlendOcp;
 pub use sei::Sei;
 pub use set::{Cell, DEFAULT_RADIUS_RELATIVE_STD, Electrode, Electrolyte, FARADAY, GAS_CONSTANT, MAX_RADIUS_RELATIVE_STD, ParameterSet, Separator, Thermal};

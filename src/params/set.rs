@@ -70,6 +70,26 @@ pub struct Electrode {
     /// this electrode's single particle size.
     #[serde(default = "default_radius_relative_std")]
     pub radius_relative_std: f64,
+    /// Share (-) of the electrode's sites held by a second active material (e.g. silicon beside
+    /// graphite) that shares the particles' potential; 0 (the default) for none. See
+    /// [`super::second_phase`].
+    #[serde(default)]
+    pub second_phase_share: f64,
+    /// Standard potential (V vs Li) around which the second material fills.
+    #[serde(default = "default_second_phase_potential")]
+    pub second_phase_potential: f64,
+    /// Width (V) of the second material's filling (the logistic's `w`; RT/F = 25.7 mV is
+    /// one ideal site).
+    #[serde(default = "default_second_phase_width")]
+    pub second_phase_width: f64,
+}
+
+fn default_second_phase_potential() -> f64 {
+    0.3
+}
+
+fn default_second_phase_width() -> f64 {
+    0.05
 }
 
 /// PyBaMM's default relative standard deviation of the particle radii (-).
@@ -138,6 +158,9 @@ impl Electrode {
                 format!("must lie strictly between 0 and max_concentration = {}", self.max_concentration),
             ));
         }
+        check(&f("second_phase_share"), self.second_phase_share, (0.0..1.0).contains(&self.second_phase_share), "must lie in [0, 1)")?;
+        positive(&f("second_phase_width"), self.second_phase_width)?;
+        check(&f("second_phase_potential"), self.second_phase_potential, true, "must be finite")?;
         self.ocp.validate(&f("ocp"))?;
         self.ocp_entropic_change.validate(&f("ocp_entropic_change"))?;
         check(&f("ocp_entropic_change_factor"), self.ocp_entropic_change_factor, self.ocp_entropic_change_factor.is_finite(), "must be finite")
@@ -458,6 +481,9 @@ impl ParameterSet {
                     "volumetric_heat_capacity" => &mut e.volumetric_heat_capacity,
                     "double_layer_capacitance" => &mut e.double_layer_capacitance,
                     "radius_relative_std" => &mut e.radius_relative_std,
+                    "second_phase_share" => &mut e.second_phase_share,
+                    "second_phase_potential" => &mut e.second_phase_potential,
+                    "second_phase_width" => &mut e.second_phase_width,
                     _ => return Err(unknown()),
                 }
             }

@@ -94,7 +94,7 @@ impl LithiumLine {
 
     /// Open-circuit voltage (V) at negative stoichiometry `x_n` on the line.
     pub fn ocv(&self, p: &ParameterSet, x_n: f64) -> f64 {
-        p.positive.ocp.eval(self.positive(x_n)) - p.negative.ocp.eval(x_n)
+        p.positive.open_circuit_potential(self.positive(x_n)) - p.negative.open_circuit_potential(x_n)
     }
 
     /// The negative stoichiometry at which the open-circuit voltage is `v` (V), clamped to the

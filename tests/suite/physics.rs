@@ -112,3 +112,31 @@ fn pulse_relaxes_to_ocv() {
         assert!(gap < 1e-3, "{kind}: {gap} V from OCV after 10 min rest");
     }
 }
+
+/// A second active material in the negative electrode (15 % of its sites filling around
+/// 0.3 V vs Li, silicon-like): at C/1000 the SPM's voltage is the blend's OCV at the particles'
+/// average stoichiometries, computed independently of the model's table (by bisection on the
+/// host stoichiometry, `Electrode::open_circuit_potential`), and lithium stays conserved.
+#[test]
+fn a_second_material_sets_the_open_circuit_limit() {
+    let mut p = chen2020();
+    (p.negative.second_phase_share, p.negative.second_phase_potential, p.negative.second_phase_width) = (0.15, 0.3, 0.08);
+    cellstudio::params::set_initial_soc(&mut p, 0.3).unwrap();
+    let protocol = Protocol { steps: vec![Step::CRate { rate: 0.001, duration: 600.0, until_voltage: None }] };
+    let mut b = ModelBuilder::new(ModelKind::Spm, Submodels::default(), MeshSizes::default());
+    let built = b.build(&p).unwrap();
+    let opts = SimOptions { keep_states: true, ..SimOptions::for_cell(&p) };
+    let sol = simulate(built.model.as_ref(), &mut built.workspace, &protocol, &opts, None).unwrap();
+    let y = sol.states.last().unwrap();
+    let (nn, np) = (built.model.electrochem().disc.sphere_n.len(), built.model.electrochem().disc.sphere_p.len());
+    let ec = built.model.electrochem();
+    let (xn, yp) = (ec.disc.sphere_n.average(&y[..nn]) / p.negative.max_concentration, ec.disc.sphere_p.average(&y[nn..nn + np]) / p.positive.max_concentration);
+    let ocv = p.positive.open_circuit_potential(yp) - p.negative.open_circuit_potential(xn);
+    let gap = (sol.final_voltage() - ocv).abs();
+    let plain = p.positive.ocp.eval(yp) - p.negative.ocp.eval(xn);
+    println!("second material: |V - blend OCV| = {:.4} mV at C/1000 (the host's OCV alone is {:.1} mV away)", gap * 1e3, (sol.final_voltage() - plain).abs() * 1e3);
+    assert!(gap < 0.5e-3, "{gap} V from the blend's OCV");
+    assert!((sol.final_voltage() - plain).abs() > 10e-3, "the second material should move the OCV here");
+    let li = |y: &[f64]| built.model.solid_lithium(y);
+    assert!((li(y) / li(&sol.states[0]) - 1.0).abs() < 1e-10);
+}

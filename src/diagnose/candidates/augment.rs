@@ -141,6 +141,30 @@ impl Candidate {
                 }
                 (extra, "the OCPs' entropic change dU/dT switched on (the chemistry's published curves where the set has none), its size fitted per electrode".into())
             }
+            Candidate::SecondMaterialNegative | Candidate::SecondMaterialPositive => {
+                let (side, e, potential) = match self {
+                    Candidate::SecondMaterialNegative => ("negative", &p.negative, SECOND_POTENTIAL_NEGATIVE),
+                    _ => ("positive", &p.positive, SECOND_POTENTIAL_POSITIVE),
+                };
+                if e.has_second_phase() {
+                    return None;
+                }
+                let path = |name: &str| format!("{side}.second_phase_{name}");
+                // The set's balance of the electrodes was made without the material: the
+                // initial concentrations are refitted with it, as for lithium inventory.
+                let c = |path: &str, c0: f64, cmax: f64| FitParameter::linear(path, c0, INVENTORY_EDGE * cmax, (1.0 - INVENTORY_EDGE) * cmax);
+                replaces.push(INITIAL_SOC.to_string());
+                (
+                    vec![
+                        FitParameter::linear(&path("share"), SECOND_SHARE.0, SECOND_SHARE.1, SECOND_SHARE.2),
+                        FitParameter::linear(&path("potential"), potential.0, potential.1, potential.2),
+                        FitParameter::log(&path("width"), SECOND_WIDTH.0, SECOND_WIDTH.1, SECOND_WIDTH.2),
+                        c("negative.initial_concentration", p.negative.initial_concentration, p.negative.max_concentration),
+                        c("positive.initial_concentration", p.positive.initial_concentration, p.positive.max_concentration),
+                    ],
+                    format!("a second material in the {side} electrode: its share of the sites, where and how broadly it fills, and the electrodes' initial concentrations fitted"),
+                )
+            }
             Candidate::VoltageOffset => {
                 if spec.submodels.voltage_offset {
                     return None;

@@ -38,6 +38,8 @@ pub enum Candidate {
     RcDynamics,
     Hysteresis,
     EntropicChange,
+    SecondMaterialNegative,
+    SecondMaterialPositive,
     SeiGrowth,
     SeiGrowthSeries,
     LithiumPlating,
@@ -123,6 +125,14 @@ const ENTROPIC_MIN_OFFSET_K: f64 = 5.0;
 const ENTROPIC_SEARCH: (f64, f64) = (-2.0, 4.0);
 const ENTROPIC_PLAUSIBLE: (f64, f64) = (0.0, 3.0);
 
+/// The second-material candidates' searches: the share of the electrode's sites (-), where
+/// the material fills (V vs Li, per electrode) and how broadly (V); plausible shares.
+const SECOND_SHARE: (f64, f64, f64) = (0.15, 0.0, 0.5);
+const SECOND_SHARE_PLAUSIBLE: (f64, f64) = (0.005, 0.4);
+const SECOND_POTENTIAL_NEGATIVE: (f64, f64, f64) = (0.3, 0.02, 1.2);
+const SECOND_POTENTIAL_POSITIVE: (f64, f64, f64) = (3.8, 3.0, 4.5);
+const SECOND_WIDTH: (f64, f64, f64) = (0.1, 0.005, 0.5);
+
 /// The voltage-offset candidate's search range and plausible size (V).
 const VOLTAGE_OFFSET_SEARCH: f64 = 0.05;
 const VOLTAGE_OFFSET_PLAUSIBLE: f64 = 0.02;
@@ -145,7 +155,7 @@ const HYSTERESIS_START_RATE: f64 = 10.0;
 const HYSTERESIS_BRANCH: f64 = 0.5;
 
 impl Candidate {
-    pub const ALL: [Candidate; 24] = [
+    pub const ALL: [Candidate; 26] = [
         Candidate::SeriesResistance,
         Candidate::Electrolyte,
         Candidate::ElectrolyteComposite,
@@ -159,6 +169,8 @@ impl Candidate {
         Candidate::RcDynamics,
         Candidate::Hysteresis,
         Candidate::EntropicChange,
+        Candidate::SecondMaterialNegative,
+        Candidate::SecondMaterialPositive,
         Candidate::SeiGrowth,
         Candidate::SeiGrowthSeries,
         Candidate::LithiumPlating,
@@ -193,6 +205,8 @@ impl Candidate {
             Candidate::RcDynamics => "RC / double-layer dynamics",
             Candidate::Hysteresis => "OCV hysteresis",
             Candidate::EntropicChange => "temperature dependence of the open-circuit potentials (their entropic change dU/dT)",
+            Candidate::SecondMaterialNegative => "a second active material in the negative electrode (a composite or blend, e.g. silicon beside graphite: part of its capacity at another open-circuit potential)",
+            Candidate::SecondMaterialPositive => "a second active material in the positive electrode (a blended cathode: part of its capacity at another open-circuit potential)",
             Candidate::SeiGrowth => "SEI growth (lithium lost as the film grows, in cycling and in storage)",
             Candidate::SeiGrowthSeries => "SEI growth, reaction and transport in series (lithium lost as the film grows, more slowly as it thickens)",
             Candidate::LithiumPlating => "lithium plating (lithium lost to irreversible plating during the charges)",
@@ -216,6 +230,8 @@ impl Candidate {
             | Candidate::RcDynamics
             | Candidate::Hysteresis
             | Candidate::EntropicChange
+            | Candidate::SecondMaterialNegative
+            | Candidate::SecondMaterialPositive
             | Candidate::SeiGrowth
             | Candidate::SeiGrowthSeries
             | Candidate::LithiumPlating
@@ -248,6 +264,7 @@ impl Candidate {
             Candidate::Thermal => "losses that fall as the cell warms under load (correlated with the recorded temperature rise or with the accumulated I²)",
             Candidate::RcDynamics => "transients of seconds after current steps that settle to an offset under load and decay in rests",
             Candidate::Hysteresis => "an offset at rest whose sign follows the direction of the last current (charge vs discharge), not its size",
+            Candidate::SecondMaterialNegative | Candidate::SecondMaterialPositive => "capacity on a slope or step of the open-circuit voltage where the set's electrode has none (a tail at one end, or a step inside the window), the same at rest and under load, which no shift or stretch of the stoichiometry axis reproduces",
             Candidate::EntropicChange => "an open-circuit voltage off by a few mV with a shape along the state of charge (the electrodes' dU/dT), the same at rest and under load, in proportion to the cell's distance from the OCPs' reference temperature (25 degC)",
             Candidate::SeiGrowthSeries => "as reaction-limited SEI growth, but the lithium lost per cycle (or per hour of storage) falls as the film thickens and transport through it takes over (towards growth with the square root of time, whatever the potential)",
             Candidate::SeiGrowth => "capacity and the end-of-discharge knee drift from cycle to cycle, or across a storage rest, as lithium is consumed (a fixed stoichiometry offset does not drift), with a slowly growing film resistance",
@@ -275,6 +292,7 @@ impl Candidate {
             Candidate::Thermal => "heat-transfer coefficient 1 to 500 W/(m^2 K)",
             Candidate::RcDynamics => "time constant R C of 1 ms to 30 s (longer is transport, not an interface)",
             Candidate::Hysteresis => "half-width up to 50 mV",
+            Candidate::SecondMaterialNegative | Candidate::SecondMaterialPositive => "0.5 to 40 % of the electrode's sites, filling over 5 to 500 mV, no value on a search bound",
             Candidate::EntropicChange => "0 to 3 times the published dU/dT of the electrode's chemistry (the set's own where it has one), not on a search bound",
             Candidate::SeiGrowth => "SEI exchange current 0.001 to 1000 times the set's",
             Candidate::SeiGrowthSeries => "SEI rate constant 0.001 to 1000 times the set's; EC diffusivity up to the one whose transport limit takes 50 % of the negative electrode's lithium over the recording",

@@ -62,6 +62,19 @@ impl Candidate {
             Candidate::SeiGrowth | Candidate::SeiGrowthSeries | Candidate::LithiumPlating | Candidate::LithiumPlatingPartial | Candidate::ActiveMaterialGrowth | Candidate::ActiveMaterialThroughput => {
                 ageing::implausible(self, get, base, load)
             }
+            Candidate::SecondMaterialNegative | Candidate::SecondMaterialPositive => {
+                let side = if self == Candidate::SecondMaterialNegative { "negative" } else { "positive" };
+                let potential = if side == "negative" { SECOND_POTENTIAL_NEGATIVE } else { SECOND_POTENTIAL_POSITIVE };
+                let (share, u0, width) = (get(&format!("{side}.second_phase_share"))?, get(&format!("{side}.second_phase_potential"))?, get(&format!("{side}.second_phase_width"))?);
+                let near = crate::problem::least_squares::near_bound;
+                if !(SECOND_SHARE_PLAUSIBLE.0..=SECOND_SHARE_PLAUSIBLE.1).contains(&share) {
+                    return Some(format!("a second material holding {:.1} % of the {side} electrode's sites is outside {:.1} to {:.0} %", 100.0 * share, 100.0 * SECOND_SHARE_PLAUSIBLE.0, 100.0 * SECOND_SHARE_PLAUSIBLE.1));
+                }
+                if near(u0, potential.1, potential.2) || near(width, SECOND_WIDTH.1, SECOND_WIDTH.2) {
+                    return Some(format!("the second material's potential {u0:.3} V or width {:.0} mV is on its search bound", 1e3 * width));
+                }
+                None
+            }
             Candidate::EntropicChange => ["negative", "positive"].iter().find_map(|side| {
                 let f = get(&format!("{side}.ocp_entropic_change_factor"))?;
                 (!(ENTROPIC_PLAUSIBLE.0..=ENTROPIC_PLAUSIBLE.1).contains(&f) || crate::problem::least_squares::near_bound(f, ENTROPIC_SEARCH.0, ENTROPIC_SEARCH.1))
@@ -127,6 +140,13 @@ impl Candidate {
                 let (n, p) = ageing::lam_losses(get, base, load);
                 let (which, l) = if p > n { ("positive", p) } else { ("negative", n) };
                 format!("progressive loss of active material, {which} electrode (about {:.1} % of its capacity over the recording)", 100.0 * l)
+            }
+            Candidate::SecondMaterialNegative | Candidate::SecondMaterialPositive => {
+                let side = if self == Candidate::SecondMaterialNegative { "negative" } else { "positive" };
+                match (get(&format!("{side}.second_phase_share")), get(&format!("{side}.second_phase_potential")), get(&format!("{side}.second_phase_width"))) {
+                    (Some(share), Some(u0), Some(width)) => format!("{}: {:.1} % of its sites filling around {u0:.3} V vs Li over about {:.0} mV", self.name(), 100.0 * share, 1e3 * width),
+                    _ => self.name().to_string(),
+                }
             }
             Candidate::EntropicChange => {
                 let factor = |side: &str| get(&format!("{side}.ocp_entropic_change_factor")).map(|f| format!("{side} electrode {f:.2}"));
@@ -301,6 +321,30 @@ mod tests {
         assert!(Candidate::EntropicChange.implausible(&names, &[3.5], &cold, &load).is_some());
         let named = Candidate::EntropicChange.named_by_values(&two, &[1.02, 0.7], &cold, &load);
         assert!(named.contains("entropic change") && named.contains("25 K below") && named.contains("negative electrode 1.02"), "{named}");
+    }
+
+    /// A second material is offered once per electrode, with the electrodes' initial
+    /// concentrations refitted in place of the state of charge; a share below 0.5 % or above
+    /// 40 %, or a potential or width on its search bound, is implausible.
+    #[test]
+    fn a_second_material_refits_the_balance_and_refuses_extreme_shares() {
+        let base = crate::params::chen2020();
+        let spec = ModelSpec::new(ModelKind::Spme, crate::models::Submodels::default());
+        let aug = Candidate::SecondMaterialNegative.augment(&spec, &base, &[], &Load::default()).expect("offered");
+        let paths: Vec<&str> = aug.extra.iter().map(|e| e.path.as_str()).collect();
+        assert_eq!(paths, ["negative.second_phase_share", "negative.second_phase_potential", "negative.second_phase_width", "negative.initial_concentration", "positive.initial_concentration"]);
+        assert_eq!(aug.replaces, [INITIAL_SOC]);
+        let mut blended = base.clone();
+        blended.positive.second_phase_share = 0.1;
+        assert!(Candidate::SecondMaterialPositive.augment(&spec, &blended, &[], &Load::default()).is_none(), "already has one");
+        let names: Vec<String> = paths[..3].iter().map(|s| s.to_string()).collect();
+        let load = Load::default();
+        assert_eq!(Candidate::SecondMaterialNegative.implausible(&names, &[0.12, 0.31, 0.12], &base, &load), None);
+        assert!(Candidate::SecondMaterialNegative.implausible(&names, &[0.45, 0.31, 0.12], &base, &load).is_some_and(|why| why.contains("45.0 %")));
+        assert!(Candidate::SecondMaterialNegative.implausible(&names, &[0.002, 0.31, 0.12], &base, &load).is_some());
+        assert!(Candidate::SecondMaterialNegative.implausible(&names, &[0.12, SECOND_POTENTIAL_NEGATIVE.2, 0.12], &base, &load).is_some_and(|why| why.contains("search bound")));
+        let named = Candidate::SecondMaterialNegative.named_by_values(&names, &[0.121, 0.311, 0.119], &base, &load);
+        assert!(named.contains("negative electrode") && named.contains("12.1 % of its sites") && named.contains("0.311 V"), "{named}");
     }
 
     /// Lithium inventory fitted to the end of an electrode's stoichiometry range has run out

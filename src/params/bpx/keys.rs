@@ -75,6 +75,9 @@ pub(super) const USER_DEFINED_FIELDS: &[&str] = &[
     "negative.volumetric_heat_capacity",
     "negative.double_layer_capacitance",
     "negative.radius_relative_std",
+    "negative.second_phase_share",
+    "negative.second_phase_potential",
+    "negative.second_phase_width",
     "positive.bruggeman_solid",
     "positive.charge_transfer_coefficient",
     "positive.active_density",
@@ -82,6 +85,9 @@ pub(super) const USER_DEFINED_FIELDS: &[&str] = &[
     "positive.volumetric_heat_capacity",
     "positive.double_layer_capacitance",
     "positive.radius_relative_std",
+    "positive.second_phase_share",
+    "positive.second_phase_potential",
+    "positive.second_phase_width",
     "separator.solid_density",
     "separator.volumetric_heat_capacity",
     "electrolyte.thermodynamic_factor",
@@ -129,6 +135,9 @@ const ELECTRODE_FIELDS: &[&str] = &[
     "volumetric_heat_capacity",
     "double_layer_capacitance",
     "radius_relative_std",
+    "second_phase_share",
+    "second_phase_potential",
+    "second_phase_width",
 ];
 
 /// Scalar fields outside the electrodes, as dotted paths.
