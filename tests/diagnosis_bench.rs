@@ -1016,3 +1016,55 @@ fn ac3_another_graphites_ocp_is_not_called_a_lithium_loss_at_the_stoichiometry_e
     let conclusion = report::conclusion(&rounds);
     assert!(conclusion.contains("part of the recording") || conclusion.starts_with("Conclusion: nothing named"), "{conclusion}");
 }
+
+#[test]
+fn ad8_the_ocps_entropic_change_is_named_at_0_degc_spm() {
+    // Blind batch ad: O'Regan 2022's dU/dT of the LG M50's graphite and NMC 811, which Chen
+    // 2020 leaves at zero, concealed at 0 degC (constant power at low SOC, 0.5 mV noise).
+    // Missed on its first run (lithium inventory +0.28 %, then unexplained: the OCP did not
+    // depend on temperature here); the entropic change is a candidate now. Achieved: factors
+    // 0.998 +- 0.011 and 1.016 +- 0.050 of O'Regan's, 1.69 -> 0.48 mV (noise 0.47).
+    let rounds = run_case("diagnosis-extra/ad8_entropic_ocp_term_constant_power_low_soc_0C_spm");
+    assert_eq!(rounds[0].best().map(|c| c.candidate), Some(Candidate::EntropicChange));
+    let (n, p) = (first_fitted(&rounds, "negative.ocp_entropic_change_factor"), first_fitted(&rounds, "positive.ocp_entropic_change_factor"));
+    assert!((n - 1.0).abs() < 0.01 && (p - 1.0).abs() < 0.05, "factors {n:.4}, {p:.4} of the concealed 1, 1");
+}
+
+/// The share (-) of the negative's sites that a PyBaMM two-phase electrode's silicon holds:
+/// volume fraction times maximum concentration, over both phases'.
+fn silicon_share(graphite_fraction: f64, silicon_fraction: f64) -> f64 {
+    let (graphite, silicon) = (graphite_fraction * chen2020().negative.max_concentration, silicon_fraction * 278000.0);
+    silicon / (graphite + silicon)
+}
+
+/// The second material's share and potential (V vs Li) fitted in the first round.
+fn second_material(rounds: &[Diagnosis]) -> (f64, f64) {
+    assert_eq!(rounds[0].best().map(|c| c.candidate), Some(Candidate::SecondMaterialNegative), "{}", rounds[0].summary);
+    (first_fitted(rounds, "negative.second_phase_share"), first_fitted(rounds, "negative.second_phase_potential"))
+}
+
+#[test]
+fn j7_a_graphite_silicon_negative_is_a_second_material_spme() {
+    // Blind batch j: PyBaMM's two-phase negative (graphite at 0.65 with 1.2 % silicon, Chen
+    // 2020 composite's Mark 2016 silicon OCP) handed to the graphite-only SPMe, C/5 down and
+    // C/2 CC-CV up at 25 degC. Unexplained (106.90 mV) until a second material was a
+    // candidate. Silicon's OCP read as one logistic of the potential sits at 0.312 V (92 mV
+    // wide). Achieved: share 0.148 (the truth's 0.148), 0.317 V, 106.90 -> 10.04 mV.
+    let rounds = run_case("diagnosis-extra/j7_graphite_silicon_composite_negative_c5_spme");
+    let (share, u0) = second_material(&rounds);
+    let truth = silicon_share(0.65, 0.012);
+    assert!((share / truth - 1.0).abs() < 0.25 && (0.25..0.4).contains(&u0), "share {share:.3} (truth {truth:.3}) at {u0:.3} V");
+}
+
+#[test]
+#[ignore = "slow (1-2 min): CI skips it; run with --include-ignored, see the module doc"]
+fn ae8_a_graphite_silicon_negative_is_a_second_material_at_5_degc_spm() {
+    // Blind batch ae: the two-phase negative (graphite at 0.66 with 1.1 % silicon) at 5 degC,
+    // 1C then C/5 to 2.6 V, C/3 charge, long rests, handed to the SPM. Missed on its first
+    // run (unexplained, 195.88 mV); the candidate was written after it. Achieved: share 0.121
+    // (truth 0.135), 0.311 V, 195.88 -> 13.14 mV.
+    let rounds = run_case("diagnosis-extra/ae8_graphite_silicon_composite_negative_low_soc_5C_30s_spm");
+    let (share, u0) = second_material(&rounds);
+    let truth = silicon_share(0.66, 0.011);
+    assert!((share / truth - 1.0).abs() < 0.25 && (0.25..0.4).contains(&u0), "share {share:.3} (truth {truth:.3}) at {u0:.3} V");
+}
