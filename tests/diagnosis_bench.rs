@@ -1068,3 +1068,19 @@ fn ae8_a_graphite_silicon_negative_is_a_second_material_at_5_degc_spm() {
     let truth = silicon_share(0.66, 0.011);
     assert!((share / truth - 1.0).abs() < 0.25 && (0.25..0.4).contains(&u0), "share {share:.3} (truth {truth:.3}) at {u0:.3} V");
 }
+
+#[test]
+fn a_diagnosis_stopped_at_its_round_limit_says_the_rest_was_not_diagnosed() {
+    // ac3 (another graphite's OCP) limited to one round: round 1 names a stand-in that leaves
+    // tens of mV; the conclusion must not say it explains the recording.
+    let name = "diagnosis-extra/ac3_negative_ocp_other_graphite_c5_cycle_30C_spm";
+    let t = truth(name);
+    let rec = Recording::from_csv(&case_dir(name).join("recording.csv")).unwrap();
+    let mut p = chen2020();
+    p.thermal.ambient_temperature = t.ambient;
+    p.thermal.initial_temperature = t.ambient;
+    let rounds = diagnose_rounds(&rec, &p, &DiagnoseOptions::new(ModelSpec::new(t.model, Submodels::default())), 1).unwrap();
+    assert!(rounds[0].found && rounds[0].cut_short.is_some(), "{}", rounds[0].summary);
+    let conclusion = report::conclusion(&rounds);
+    assert!(conclusion.contains("part of the recording") && conclusion.contains("was not diagnosed") && conclusion.contains("round limit (--max-rounds 1)"), "{conclusion}");
+}

@@ -235,6 +235,9 @@ pub struct Diagnosis {
     pub whole: Option<Recording>,
     /// On the last round: effects named in earlier rounds that the final model does not need.
     pub superseded: Vec<backward::Superseded>,
+    /// Why no further round ran although this one named an effect (the round limit or the
+    /// time budget); `None` when the diagnosis ended on its own.
+    pub cut_short: Option<String>,
     /// The verdict in plain words.
     pub summary: String,
     /// Wall time (s).
@@ -409,6 +412,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
         broke_down,
         whole,
         superseded: Vec::new(),
+        cut_short: None,
         summary: String::new(),
         seconds: 0.0,
         data,
@@ -458,7 +462,11 @@ pub fn diagnose_rounds_with(data: &Recording, base: &ParameterSet, options: &Dia
                 "Truncated: the diagnosis stopped after round {} because its time budget of {budget:.0} s was spent ({spent:.0} s); a further effect may remain (rerun with a larger --time-budget to go on).",
                 rounds.len() + 1
             ));
+            d.cut_short = Some(format!("its time budget of {budget:.0} s was spent"));
             next = None;
+        }
+        if next.is_some() && rounds.len() + 1 >= max_rounds.max(1) {
+            d.cut_short = Some(format!("it reached its round limit (--max-rounds {})", max_rounds.max(1)));
         }
         let rescued = d.whole.is_some();
         data = d.whole.clone().unwrap_or_else(|| d.data.clone());

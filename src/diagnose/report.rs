@@ -423,8 +423,13 @@ pub fn conclusion(rounds: &[Diagnosis]) -> String {
     let final_rmse = last.best().filter(|_| last.found).and_then(|c| c.fit.as_ref()).map_or(last.baseline.rmse_all, |f| f.rmse_all);
     let rmse = last.superseded.iter().map(|s| s.rmse_without).fold(final_rmse, f64::min);
     // A last round that leaves structure no candidate removes: the named effects are only
-    // part of the story.
-    let rest = (!last.found && matches!(last.verdict, Verdict::Unexplained | Verdict::BrokeDown)).then(|| format!(" The rest is unexplained (round {}).", rounds.len()));
+    // part of the story. So are they when the rounds stopped at their limit (or the time
+    // budget) with more than twice the noise left: the rest was never diagnosed.
+    let undiagnosed = last.cut_short.as_ref().filter(|_| last.found && rmse > 2.0 * rounds[0].noise);
+    let rest = match undiagnosed {
+        Some(why) => Some(format!(" The rest ({}, {:.0} times the noise) was not diagnosed: the run stopped after round {} because {why}.", mv(rmse), rmse / rounds[0].noise, rounds.len())),
+        None => (!last.found && matches!(last.verdict, Verdict::Unexplained | Verdict::BrokeDown)).then(|| format!(" The rest is unexplained (round {}).", rounds.len())),
+    };
     let mut out = format!(
         "Conclusion: {} explain{} {}, RMSE {} -> {} (noise {}).{}",
         kept.join(" + "),
