@@ -62,18 +62,17 @@ impl Electrochem {
     /// Open-circuit potential (V) at particle concentration `c_s` (mol/m^3) and temperature
     /// `t` (K): `U(x) + (t - T_ref) dU/dT(x)` at stoichiometry `x`, PyBaMM's form.
     pub fn ocp(&self, side: Side, c_s: f64, t: f64) -> f64 {
-        let e = self.electrode(side);
-        let sto = c_s / e.max_concentration;
-        self.reference_ocp(side, sto) + (t - self.t_ref()) * e.entropic_change(sto)
+        self.ocp_at_stoichiometry(side, c_s / self.electrode(side).max_concentration, t)
     }
 
-    /// The OCP (V) at stoichiometry `sto` at the reference temperature: the set's function, or
-    /// the blend's table with a second active material.
-    fn reference_ocp(&self, side: Side, sto: f64) -> f64 {
-        match &self.blends[side as usize] {
+    /// The OCP (V) at stoichiometry `sto` and temperature `t` (K): the set's function, or the
+    /// blend's table with a second active material, plus the entropic term.
+    fn ocp_at_stoichiometry(&self, side: Side, sto: f64, t: f64) -> f64 {
+        let reference = match &self.blends[side as usize] {
             Some(blend) => blend.eval(sto),
             None => self.electrode(side).ocp.eval(sto),
-        }
+        };
+        reference + (t - self.t_ref()) * self.electrode(side).entropic_change(sto)
     }
 
     /// Entropic change dU/dT (V/K) at particle concentration `c_s` (mol/m^3).
@@ -89,10 +88,8 @@ impl Electrochem {
     /// particles reach the ends); elsewhere the asymptotes are below 1e-100 V in the tested
     /// ranges and `ocp` leaves them out.
     pub fn bounded_ocp(&self, side: Side, c_s: f64, t: f64) -> f64 {
-        let e = self.electrode(side);
-        let sto = c_s / e.max_concentration;
-        let clipped = sto.clamp(1e-10, 1.0 - 1e-10);
-        self.reference_ocp(side, clipped) + (t - self.t_ref()) * e.entropic_change(clipped) + ocp_asymptotes(sto)
+        let sto = c_s / self.electrode(side).max_concentration;
+        self.ocp_at_stoichiometry(side, sto.clamp(1e-10, 1.0 - 1e-10), t) + ocp_asymptotes(sto)
     }
 
     /// Particle diffusivity (m^2/s) at temperature `t` (K).

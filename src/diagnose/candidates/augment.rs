@@ -142,10 +142,8 @@ impl Candidate {
                 (extra, "the OCPs' entropic change dU/dT switched on (the chemistry's published curves where the set has none), its size fitted per electrode".into())
             }
             Candidate::SecondMaterialNegative | Candidate::SecondMaterialPositive => {
-                let (side, e, potential) = match self {
-                    Candidate::SecondMaterialNegative => ("negative", &p.negative, SECOND_POTENTIAL_NEGATIVE),
-                    _ => ("positive", &p.positive, SECOND_POTENTIAL_POSITIVE),
-                };
+                let (side, potential) = self.second_material()?;
+                let e = if side == "negative" { &p.negative } else { &p.positive };
                 if e.has_second_phase() {
                     return None;
                 }

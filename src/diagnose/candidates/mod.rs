@@ -184,6 +184,24 @@ impl Candidate {
         Candidate::VoltageDelay,
     ];
 
+    /// A second-material candidate's electrode and the search of its potential (start,
+    /// lower, upper; V vs Li); `None` for the other candidates.
+    fn second_material(self) -> Option<(&'static str, (f64, f64, f64))> {
+        match self {
+            Candidate::SecondMaterialNegative => Some(("negative", SECOND_POTENTIAL_NEGATIVE)),
+            Candidate::SecondMaterialPositive => Some(("positive", SECOND_POTENTIAL_POSITIVE)),
+            _ => None,
+        }
+    }
+
+    /// The fitted share, potential (V) and width (V) of a second-material candidate, read by
+    /// `get` from its electrode's paths.
+    fn second_material_values(self, get: impl Fn(&str) -> Option<f64>) -> Option<(f64, f64, f64)> {
+        let (side, _) = self.second_material()?;
+        let value = |name: &str| get(&format!("{side}.second_phase_{name}"));
+        Some((value("share")?, value("potential")?, value("width")?))
+    }
+
     /// An ageing candidate: it changes the cell from cycle to cycle ([`ageing`]).
     pub fn is_ageing(self) -> bool {
         matches!(self, Candidate::SeiGrowth | Candidate::SeiGrowthSeries | Candidate::LithiumPlating | Candidate::LithiumPlatingPartial | Candidate::ActiveMaterialGrowth | Candidate::ActiveMaterialThroughput)

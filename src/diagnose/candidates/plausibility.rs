@@ -63,9 +63,8 @@ impl Candidate {
                 ageing::implausible(self, get, base, load)
             }
             Candidate::SecondMaterialNegative | Candidate::SecondMaterialPositive => {
-                let side = if self == Candidate::SecondMaterialNegative { "negative" } else { "positive" };
-                let potential = if side == "negative" { SECOND_POTENTIAL_NEGATIVE } else { SECOND_POTENTIAL_POSITIVE };
-                let (share, u0, width) = (get(&format!("{side}.second_phase_share"))?, get(&format!("{side}.second_phase_potential"))?, get(&format!("{side}.second_phase_width"))?);
+                let (side, potential) = self.second_material()?;
+                let (share, u0, width) = self.second_material_values(get)?;
                 let near = crate::problem::least_squares::near_bound;
                 if !(SECOND_SHARE_PLAUSIBLE.0..=SECOND_SHARE_PLAUSIBLE.1).contains(&share) {
                     return Some(format!("a second material holding {:.1} % of the {side} electrode's sites is outside {:.1} to {:.0} %", 100.0 * share, 100.0 * SECOND_SHARE_PLAUSIBLE.0, 100.0 * SECOND_SHARE_PLAUSIBLE.1));
@@ -142,10 +141,9 @@ impl Candidate {
                 format!("progressive loss of active material, {which} electrode (about {:.1} % of its capacity over the recording)", 100.0 * l)
             }
             Candidate::SecondMaterialNegative | Candidate::SecondMaterialPositive => {
-                let side = if self == Candidate::SecondMaterialNegative { "negative" } else { "positive" };
-                match (get(&format!("{side}.second_phase_share")), get(&format!("{side}.second_phase_potential")), get(&format!("{side}.second_phase_width"))) {
-                    (Some(share), Some(u0), Some(width)) => format!("{}: {:.1} % of its sites filling around {u0:.3} V vs Li over about {:.0} mV", self.name(), 100.0 * share, 1e3 * width),
-                    _ => self.name().to_string(),
+                match self.second_material_values(get) {
+                    Some((share, u0, width)) => format!("{}: {:.1} % of its sites filling around {u0:.3} V vs Li over about {:.0} mV", self.name(), 100.0 * share, 1e3 * width),
+                    None => self.name().to_string(),
                 }
             }
             Candidate::EntropicChange => {

@@ -194,8 +194,11 @@ impl Model for Dfn {
         y[l.cs_n..l.cs_p].fill(self.lam.initial_shell(&self.ec, Side::Negative));
         y[l.cs_p..l.ce].fill(self.lam.initial_shell(&self.ec, Side::Positive));
         y[l.ce..l.phie].iter_mut().for_each(|v| *v = p.electrolyte.initial_concentration);
+        if let Some(t) = l.temp {
+            y[t] = p.thermal.initial_temperature;
+        }
         // Potentials at open circuit: phi_s_n = 0, phi_e = -U_n, phi_s_p = U_p - U_n.
-        let t0 = if l.temp.is_some() { p.thermal.initial_temperature } else { p.thermal.ambient_temperature };
+        let t0 = self.temp(&y);
         let un = self.ec.ocp(Side::Negative, p.negative.initial_concentration, t0);
         let up = self.ec.ocp(Side::Positive, p.positive.initial_concentration, t0);
         y[l.phie..l.phis_n].iter_mut().for_each(|v| *v = -un);
@@ -209,9 +212,6 @@ impl Model for Dfn {
         let mut lam = Vec::new();
         self.lam.push_initial(&self.ec, &mut lam);
         y[self.lam.indices()].copy_from_slice(&lam);
-        if let Some(t) = l.temp {
-            y[t] = p.thermal.initial_temperature;
-        }
         y
     }
 
@@ -267,7 +267,9 @@ impl Model for Dfn {
                     }
                 };
                 ocv_power -= vols[i].dx * out_phie[i] * ocp;
-                entropic_power += vols[i].dx * out_phie[i] * ec.entropic_change(side, c_s);
+                if l.temp.is_some() {
+                    entropic_power += vols[i].dx * out_phie[i] * ec.entropic_change(side, c_s);
+                }
                 let flux = Electrochem::molar_flux(j);
                 let out_particle = &mut out_cs[start..start + nr];
                 match self.lam.fraction_index(side, k) {
