@@ -154,7 +154,7 @@ pub fn equilibrium_ocv_table(p: &ParameterSet, n: usize) -> (f64, Function1D) {
     let q_p = pos.areal_capacity() * area;
     let x0 = neg.initial_concentration / neg.max_concentration;
     let y0 = pos.initial_concentration / pos.max_concentration;
-    let ocv = |q: f64| pos.ocp.eval(y0 + q / q_p) - neg.ocp.eval(x0 - q / q_n);
+    let ocv = |q: f64| pos.open_circuit_potential(y0 + q / q_p) - neg.open_circuit_potential(x0 - q / q_n);
     // Bisection for the charge at the lower cut-off within the stoichiometry window.
     let (mut lo, mut hi) = (0.0, (x0 * q_n).min((1.0 - y0) * q_p));
     if ocv(hi) < p.cell.lower_cutoff {

@@ -139,4 +139,11 @@ fn a_second_material_sets_the_open_circuit_limit() {
     assert!((sol.final_voltage() - plain).abs() > 10e-3, "the second material should move the OCV here");
     let li = |y: &[f64]| built.model.solid_lithium(y);
     assert!((li(y) / li(&sol.states[0]) - 1.0).abs() < 1e-10);
+    // The ECM's equilibrium OCV from the same set reads the blend too (SOC 1 is the set's
+    // initial state, so the discharged charge gives the SOC).
+    let (capacity, ocv_table) = cellstudio::models::ecm::equilibrium_ocv_table(&p, 4001);
+    let soc = 1.0 - sol.capacity.last().unwrap() / capacity;
+    let ecm_gap = (ocv_table.eval(soc) - sol.final_voltage()).abs();
+    println!("second material: the ECM's equilibrium OCV is {:.4} mV from the SPM at C/1000", ecm_gap * 1e3);
+    assert!(ecm_gap < 0.5e-3, "the ECM's OCV table is {ecm_gap} V from the SPM at C/1000");
 }
