@@ -76,6 +76,7 @@ impl Candidate {
                     return None;
                 }
                 spec.submodels = sized;
+                (spec.mesh.size_n, spec.mesh.size_p) = (SIZE_CLASSES, SIZE_CLASSES);
                 let spread = |path: &str| FitParameter::linear(path, SIZE_SPREAD_START, 0.0, 1.0);
                 (vec![spread("negative.radius_relative_std"), spread("positive.radius_relative_std")], "particle-size distribution submodel on (lognormal radii about the set's mean)".into())
             }
