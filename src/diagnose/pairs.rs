@@ -3,8 +3,9 @@
 //! voltage opposite ways). Every pair of candidates whose own fit lowered the training error
 //! at all (or was fitted to a recorded temperature) is refitted together, the second added
 //! to the first's model, and counted and judged as a single candidate is (both effects'
-//! parameters and structural changes count). Every pair is screened with a few iterations
-//! from no effect (as a single starts); the three best by training error continue to
+//! parameters and structural changes count). Every pair is screened with a few iterations,
+//! the first effect from no effect (as a single starts), the second from its own single fit;
+//! the three best by training error continue to
 //! convergence from there, and the three best whose fit is doubtful are refitted from every
 //! start.
 
@@ -143,7 +144,17 @@ fn fit_pair(a: &CandidateOutcome, b: &CandidateOutcome, round: &Round, start: Pa
     let n_train = round.split.train_points();
     let next_a = a.next.as_ref()?;
     let paths: Vec<String> = next_a.fitted.iter().map(|p| p.path.clone()).collect();
-    let aug = b.candidate.augment(&next_a.spec, &next_a.base, &paths, &round.load)?;
+    let mut aug = b.candidate.augment(&next_a.spec, &next_a.base, &paths, &round.load)?;
+    // The second effect's own parameters start where its single fit ended (a decade-screened
+    // ageing rate included: a pair is not screened again), so that a pair's start does not
+    // depend on which of the two ranked first.
+    if let Some(fb) = b.fit.as_ref() {
+        for p in aug.extra.iter_mut() {
+            if let Some(k) = fb.names.iter().position(|n| *n == p.path) {
+                p.initial = fb.values[k].clamp(p.lower, p.upper);
+            }
+        }
+    }
     let partner: Vec<String> = aug.extra.iter().map(|p| p.path.clone()).collect();
     // The first effect's fixed structural parameters count too.
     let structural_a = a.candidate.augment(&round.options.spec, round.base, round.fitted_paths, &round.load).map_or(0, |x| x.structural_parameters);
