@@ -3,9 +3,9 @@
 //! voltage opposite ways). Every pair of candidates whose own fit lowered the training error
 //! at all (or was fitted to a recorded temperature) is refitted together, the second added
 //! to the first's model, and counted and judged as a single candidate is (both effects'
-//! parameters and structural changes count). Every pair is screened with a few iterations,
-//! the first effect from no effect (as a single starts), the second from its own single fit;
-//! the three best by training error continue to
+//! parameters and structural changes count). Every pair is screened with a few iterations
+//! from no effect (as a single starts; a second effect's ageing rates from its single fit's
+//! decade screen); the three best by training error continue to
 //! convergence from there, and the three best whose fit is doubtful are refitted from every
 //! start.
 
@@ -145,11 +145,13 @@ fn fit_pair(a: &CandidateOutcome, b: &CandidateOutcome, round: &Round, start: Pa
     let next_a = a.next.as_ref()?;
     let paths: Vec<String> = next_a.fitted.iter().map(|p| p.path.clone()).collect();
     let mut aug = b.candidate.augment(&next_a.spec, &next_a.base, &paths, &round.load)?;
-    // The second effect's own parameters start where its single fit ended (a decade-screened
-    // ageing rate included: a pair is not screened again), so that a pair's start does not
-    // depend on which of the two ranked first.
-    if let Some(fb) = b.fit.as_ref() {
-        for p in aug.extra.iter_mut() {
+    // A second effect's ageing rates (known only to within decades) start where its single
+    // fit ended, after that fit's decade screen: a pair is not screened again, and from the
+    // set's value a few iterations do not reach a rate decades away, so that the pair's screen
+    // would depend on which of the two ranked first (a first effect's rates start from its
+    // own fit's model). Its other parameters start at their defaults.
+    if let Some(fb) = b.fit.as_ref().filter(|_| aug.screened) {
+        for p in aug.extra.iter_mut().filter(|p| p.log) {
             if let Some(k) = fb.names.iter().position(|n| *n == p.path) {
                 p.initial = fb.values[k].clamp(p.lower, p.upper);
             }
