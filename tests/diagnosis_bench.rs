@@ -1075,6 +1075,48 @@ fn ae8_a_graphite_silicon_negative_is_a_second_material_at_5_degc_spm() {
 }
 
 #[test]
+#[ignore = "slow (under a minute): CI skips it; run with --include-ignored, see the module doc"]
+fn af1_a_contact_in_a_ups_float_with_two_outages_spm() {
+    // Blind batch af (eighteenth session, named on its first run): a 3 mOhm contact at 40 degC,
+    // a charge held at 4.1 V and two outages (2C then 1C, 1.5C), 5 s, 2 mV noise. A tie with
+    // kinetics (11 load levels whose overpotentials stay linear in the current). Achieved:
+    // 3.00 +- 0.02 mOhm, 7.83 -> 2.01 mV.
+    let rounds = run_case("diagnosis-extra/af1_contact_3mOhm_ups_float_two_outages_40C_5s_2mV_spm");
+    let r = first_fitted(&rounds, "cell.contact_resistance");
+    assert!((r / 3e-3 - 1.0).abs() < 0.02, "contact resistance {:.3} mOhm vs 3", r * 1e3);
+}
+
+#[test]
+#[ignore = "slow (2-3 min): CI skips it; run with --include-ignored, see the module doc"]
+fn af3_negative_lam_of_delithiated_material_is_not_a_candidate_yet_dfn() {
+    // Blind batch af: 7 % of the negative's material lost with the cyclable lithium kept (moved
+    // into the positive), a step-down charge from empty at 12 degC, DFN. Missed on its first run:
+    // the LAM candidate refits the active fractions at the set's initial concentrations, so the
+    // lost material takes its lithium (PyBaMM's plain volume-fraction change); that model ran to
+    // its bound with no gain, no LAM + lithium pair was tried, and the verdict is "unexplained"
+    // (7.12 mV, noise 1.00). When a LAM with a fitted lithium share names it, make this a
+    // judged case.
+    let (t, rounds) = diagnose_case("diagnosis-extra/af3_lam_negative_7pct_step_down_charge_from_empty_12C_5s_dfn");
+    assert!(!rounds[0].found, "{}", rounds[0].summary);
+    assert!(!judged(&t, &rounds), "the LAM is named now: turn this into a judged case");
+}
+
+#[test]
+#[ignore = "slow (1-2 min): CI skips it; run with --include-ignored, see the module doc"]
+fn af7_positive_lam_and_positive_kinetics_are_named_together_spm() {
+    // Blind batch af (named on its first run): 7 % of the positive's material lost with its
+    // lithium and the positive exchange current halved, a pulsed discharge at 20 degC, SPM.
+    // Achieved: positive fraction 0.6184 (truth 0.6185), positive rate 1.694e-6 (truth
+    // 1.71e-6), 18.11 -> 1.20 mV (noise 1.20).
+    let rounds = run_case("diagnosis-extra/af7_lam_positive_7pct_and_kinetics_positive_x0p5_pulsed_discharge_20C_3s_spm");
+    let eps = first_fitted(&rounds, "positive.active_fraction");
+    let k = first_fitted(&rounds, "positive.rate_constant");
+    let (eps_truth, k_truth) = (0.93 * chen2020().positive.active_fraction, 0.5 * chen2020().positive.rate_constant);
+    assert!((eps / eps_truth - 1.0).abs() < 0.003, "positive active fraction {eps:.4} vs {eps_truth:.4}");
+    assert!((k / k_truth - 1.0).abs() < 0.05, "positive rate constant {k:.4e} vs {k_truth:.4e}");
+}
+
+#[test]
 fn a_diagnosis_stopped_at_its_round_limit_says_the_rest_was_not_diagnosed() {
     // ac3 (another graphite's OCP) limited to one round: round 1 names a stand-in that leaves
     // tens of mV; the conclusion must not say it explains the recording.

@@ -159,6 +159,11 @@ const HYSTERESIS_START_RATE: f64 = 10.0;
 /// recording to show hysteresis without rests after both directions.
 const HYSTERESIS_BRANCH: f64 = 0.5;
 
+/// The least window of charge (a share of the nominal capacity) over which a second active
+/// material is told from a shifted or stretched stoichiometry: its extra capacity shows as a
+/// step or tail of the open-circuit voltage across a window, not within a few per cent of one.
+const SECOND_MATERIAL_WINDOW: f64 = 0.2;
+
 impl Candidate {
     pub const ALL: [Candidate; 26] = [
         Candidate::SeriesResistance,
@@ -372,6 +377,13 @@ impl Candidate {
             Candidate::Leak if f.rests_after_charge + f.rests_after_discharge == 0 && !(rec.current.iter().any(|i| *i > 0.0) && rec.current.iter().any(|i| *i < 0.0)) => {
                 Some("needs a rest, or both charge and discharge (in one constant-direction run a leak is a change of capacity)".into())
             }
+            Candidate::SecondMaterialNegative | Candidate::SecondMaterialPositive => {
+                let (low, high) = f.capacity.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, u), q| (l.min(*q), u.max(*q)));
+                let window = (high - low) / q_nominal;
+                (window < SECOND_MATERIAL_WINDOW).then(|| {
+                    format!("needs a recording that moves at least {:.0} % of the nominal capacity (this one spans {:.1} %)", 100.0 * SECOND_MATERIAL_WINDOW, 100.0 * window)
+                })
+            }
             _ => None,
         }
     }
@@ -392,6 +404,32 @@ impl Candidate {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A second material needs a window of a fifth of the capacity: pulses about one state of
+    /// charge do not offer it, a discharge does.
+    #[test]
+    fn a_second_material_needs_a_window_of_charge() {
+        let q = crate::params::chen2020().cell.nominal_capacity;
+        let record = |steps: &[(f64, f64)]| {
+            let (mut time, mut current, mut t) = (vec![0.0], vec![0.0], 0.0);
+            for &(duration, i) in steps {
+                for _ in 0..(duration / 10.0) as usize {
+                    t += 10.0;
+                    time.push(t);
+                    current.push(i);
+                }
+            }
+            let voltage = vec![3.7; time.len()];
+            Recording { time, current, voltage, temperature: None }
+        };
+        let pulses = record(&[(30.0, 2.0 * q), (600.0, 0.0), (30.0, -2.0 * q), (600.0, 0.0)]);
+        let discharge = record(&[(1800.0, 0.5 * q)]);
+        for c in [Candidate::SecondMaterialNegative, Candidate::SecondMaterialPositive] {
+            let why = c.not_identifiable(&pulses, &Features::of(&pulses), q).expect("pulses do not identify a second material");
+            assert!(why.contains("at least 20 %") && why.contains("spans 1.7 %"), "{why}");
+            assert_eq!(c.not_identifiable(&discharge, &Features::of(&discharge), q), None);
+        }
+    }
 
     /// SEI growth needs 3 cycles, or a storage rest of a day with a load after it (the
     /// capacity check after a calendar-ageing storage).
