@@ -146,10 +146,10 @@ fn fit_pair(a: &CandidateOutcome, b: &CandidateOutcome, round: &Round, start: Pa
     let paths: Vec<String> = next_a.fitted.iter().map(|p| p.path.clone()).collect();
     let mut aug = b.candidate.augment(&next_a.spec, &next_a.base, &paths, &round.load)?;
     // A second effect's ageing rates (known only to within decades) start where its single
-    // fit ended, after that fit's decade screen: a pair is not screened again, and from the
-    // set's value a few iterations do not reach a rate decades away, so that the pair's screen
-    // would depend on which of the two ranked first (a first effect's rates start from its
-    // own fit's model). Its other parameters start at their defaults.
+    // fit ended, after that fit's decade screen: a pair is not screened again, and a few
+    // iterations from the candidate's default do not reach a rate decades away (c1: SEI
+    // growth beside a contact screened at 15.1 mV from the default, 0.98 mV from its single
+    // fit). Its other parameters start at their defaults.
     if let Some(fb) = b.fit.as_ref().filter(|_| aug.screened) {
         for p in aug.extra.iter_mut().filter(|p| p.log) {
             if let Some(k) = fb.names.iter().position(|n| *n == p.path) {
