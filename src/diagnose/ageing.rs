@@ -67,8 +67,8 @@ impl Load {
 /// whichever is more.
 fn equivalent_cycles(capacity: &[f64]) -> f64 {
     let throughput: f64 = capacity.windows(2).map(|w| (w[1] - w[0]).abs()).sum();
-    let (lo, hi) = capacity.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), q| (a.min(*q), b.max(*q)));
-    if hi > lo { (throughput / (2.0 * (hi - lo))).max(0.5 * half_cycles(capacity, 0.5 * (hi - lo)) as f64) } else { 0.0 }
+    let window = super::features::charge_window(capacity);
+    if window > 0.0 { (throughput / (2.0 * window)).max(0.5 * half_cycles(capacity, 0.5 * window) as f64) } else { 0.0 }
 }
 
 /// Swings of `capacity` between reversals of at least `h` (a reversal counts once the charge

@@ -83,6 +83,12 @@ fn rests_and_rates(rec: &Recording, min_rest: f64) -> (usize, usize, usize, f64)
 }
 
 impl Features {
+    /// The window of charge (A h) the recording moves: the widest span of its discharged
+    /// charge.
+    pub fn charge_window(&self) -> f64 {
+        charge_window(&self.capacity)
+    }
+
     pub fn of(rec: &Recording) -> Self {
         let n = rec.time.len();
         let (t, i) = (&rec.time, &rec.current);
@@ -184,4 +190,10 @@ mod tests {
         assert_eq!(f.since_step[12], 10.0);
         assert!((f.capacity[r.time.len() - 1] - 50.0 / 3600.0).abs() < 1e-12);
     }
+}
+
+/// The widest span (A h) of a cumulative discharged charge `capacity` (0 when empty).
+pub fn charge_window(capacity: &[f64]) -> f64 {
+    let (lo, hi) = capacity.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), q| (a.min(*q), b.max(*q)));
+    (hi - lo).max(0.0)
 }

@@ -378,8 +378,7 @@ impl Candidate {
                 Some("needs a rest, or both charge and discharge (in one constant-direction run a leak is a change of capacity)".into())
             }
             Candidate::SecondMaterialNegative | Candidate::SecondMaterialPositive => {
-                let (low, high) = f.capacity.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, u), q| (l.min(*q), u.max(*q)));
-                let window = (high - low) / q_nominal;
+                let window = f.charge_window() / q_nominal;
                 (window < SECOND_MATERIAL_WINDOW).then(|| {
                     format!("needs a recording that moves at least {:.0} % of the nominal capacity (this one spans {:.1} %)", 100.0 * SECOND_MATERIAL_WINDOW, 100.0 * window)
                 })
