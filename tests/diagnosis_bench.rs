@@ -1087,18 +1087,21 @@ fn af1_a_contact_in_a_ups_float_with_two_outages_spm() {
 }
 
 #[test]
-#[ignore = "slow (2-3 min): CI skips it; run with --include-ignored, see the module doc"]
-fn af3_negative_lam_of_delithiated_material_is_not_a_candidate_yet_dfn() {
+#[ignore = "slow (1 min): CI skips it; run with --include-ignored, see the module doc"]
+fn af3_negative_lam_of_delithiated_material_keeps_its_lithium_dfn() {
     // Blind batch af: 7 % of the negative's material lost with the cyclable lithium kept (moved
-    // into the positive), a step-down charge from empty at 12 degC, DFN. Missed on its first run:
-    // the LAM candidate refits the active fractions at the set's initial concentrations, so the
-    // lost material takes its lithium (PyBaMM's plain volume-fraction change); that model ran to
-    // its bound with no gain, no LAM + lithium pair was tried, and the verdict is "unexplained"
-    // (7.12 mV, noise 1.00). When a LAM with a fitted lithium share names it, make this a
-    // judged case.
-    let (t, rounds) = diagnose_case("diagnosis-extra/af3_lam_negative_7pct_step_down_charge_from_empty_12C_5s_dfn");
-    assert!(!rounds[0].found, "{}", rounds[0].summary);
-    assert!(!judged(&t, &rounds), "the LAM is named now: turn this into a judged case");
+    // into the positive), a step-down charge from empty at 12 degC, DFN. Missed on its first run
+    // ("unexplained", 7.12 mV, noise 1.00): the LAM candidate took the lost material's lithium
+    // along (PyBaMM's plain volume-fraction change, at the set's initial state). Named since
+    // the LAM candidate fits the state of charge at which the material was lost: negative
+    // fraction 0.6986 (truth 0.6975), lost at -0.029 ± 0.002, the negative empty (the lower
+    // end of the range, where the lost material holds no lithium), 7.12 -> 1.04 mV.
+    let rounds = run_case("diagnosis-extra/af3_lam_negative_7pct_step_down_charge_from_empty_12C_5s_dfn");
+    let eps = first_fitted(&rounds, "negative.active_fraction");
+    assert!((eps / 0.6975 - 1.0).abs() < 0.005, "negative active fraction {eps:.4} vs 0.6975");
+    let (_, empty, _) = cellstudio::problem::lost_lithium::loss_soc_range(&chen2020());
+    let s = first_fitted(&rounds, cellstudio::problem::lost_lithium::LOSS_SOC);
+    assert!((s - empty).abs() < 0.01, "lost at state of charge {s:.4}, the negative empty at {empty:.4}");
 }
 
 #[test]

@@ -14,6 +14,7 @@ use rayon::prelude::*;
 use super::refit_candidate::at_soc;
 use super::{Candidate, CandidateOutcome, FitOutcome, Round, refit_candidate, select};
 use crate::problem::fitting::INITIAL_SOC;
+use crate::problem::lost_lithium::is_loss_soc;
 use crate::problem::least_squares::LmSettings;
 
 /// Every named pair of `singles` (refitted candidates), each as one candidate outcome named
@@ -198,10 +199,11 @@ fn fit_pair(a: &CandidateOutcome, b: &CandidateOutcome, round: &Round, start: Pa
         fit.names.iter().zip(&fit.values).filter(|(n, _)| !round.baseline.names.contains(n)).map(|(n, v)| (n.clone(), *v)).unzip();
     // Twice the parameters: each must also be determined by the recording, its standard
     // error within its value; for a signed parameter (its search range spans zero, as an
-    // initial hysteresis state does) within half its range: near zero is a value there.
+    // initial hysteresis state does) or a state (where in its range active material was
+    // lost) within half its range: near zero is a value there.
     let scale = |n: &str, v: f64| {
-        let signed = next.as_ref().and_then(|m| m.fitted.iter().find(|p| p.path == n)).filter(|p| p.lower < 0.0 && p.upper > 0.0);
-        signed.map_or(v.abs(), |p| 0.5 * (p.upper - p.lower))
+        let positional = next.as_ref().and_then(|m| m.fitted.iter().find(|p| p.path == n)).filter(|p| (p.lower < 0.0 && p.upper > 0.0) || is_loss_soc(&p.path));
+        positional.map_or(v.abs(), |p| 0.5 * (p.upper - p.lower))
     };
     let undetermined = names.iter().zip(&values).filter_map(|(n, v)| {
         let se = fit.std_errors[fit.names.iter().position(|m| m == n)?];

@@ -82,6 +82,17 @@ impl LithiumLine {
         Self { a_n, a_p, lithium, x_n0 }
     }
 
+    /// Lithium capacities of the negative and positive electrodes per unit area,
+    /// `eps L c_max` (mol/m^2).
+    pub fn capacities(&self) -> (f64, f64) {
+        (self.a_n, self.a_p)
+    }
+
+    /// Cyclable lithium per unit area (mol/m^2).
+    pub fn lithium(&self) -> f64 {
+        self.lithium
+    }
+
     /// Positive stoichiometry at negative stoichiometry `x_n` (clamped to [0, 1]).
     pub fn positive(&self, x_n: f64) -> f64 {
         ((self.lithium - self.a_n * x_n) / self.a_p).clamp(0.0, 1.0)

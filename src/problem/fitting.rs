@@ -7,6 +7,7 @@ use serde::{Deserialize, Serialize};
 
 use super::delay::{DelayedTimes, delay_at, is_delay};
 use super::history::{history_step, is_history, state_after};
+use super::lost_lithium::{is_loss_soc, take_lost_lithium};
 use super::sensitivity::{PARAMETER_STEP, Sensitivities};
 use crate::cost::Prior;
 use crate::data::Recording;
@@ -48,15 +49,22 @@ pub const INITIAL_SOC: &str = "initial_soc";
 
 /// Sets `values` of `parameters` in `p`, the initial state of charge last (a load before the
 /// recording, [`super::history`], and a delay of its voltage channel, [`super::delay`], are
-/// not parameters of the set).
+/// not parameters of the set); the state at which active material was lost,
+/// [`super::lost_lithium`], sets the cyclable lithium from `p` as it was before.
 fn apply(p: &mut ParameterSet, parameters: &[FitParameter], values: &[f64]) -> Result<(), Error> {
-    let mut soc = None;
+    let (mut soc, mut loss_soc) = (None, None);
+    let unaged = parameters.iter().any(|fp| is_loss_soc(&fp.path)).then(|| p.clone());
     for (fp, &v) in parameters.iter().zip(values) {
         if fp.path == INITIAL_SOC {
             soc = Some(v)
+        } else if is_loss_soc(&fp.path) {
+            loss_soc = Some(v)
         } else if !is_history(&fp.path) && !is_delay(&fp.path) {
             p.set(&fp.path, v)?
         }
+    }
+    if let (Some(unaged), Some(v)) = (unaged, loss_soc) {
+        take_lost_lithium(&unaged, p, v)?;
     }
     if let Some(v) = soc {
         crate::params::set_initial_soc(p, v)?;
@@ -93,7 +101,7 @@ impl FitParameter {
     }
 
     pub(crate) fn validate(&self, base: &ParameterSet) -> Result<(), Error> {
-        if self.path != INITIAL_SOC && !is_history(&self.path) && !is_delay(&self.path) {
+        if self.path != INITIAL_SOC && !is_history(&self.path) && !is_delay(&self.path) && !is_loss_soc(&self.path) {
             base.get(&self.path)?;
         }
         let field = |name: &str| format!("parameters.{}.{name}", self.path);

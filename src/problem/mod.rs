@@ -15,6 +15,7 @@ pub mod identification;
 pub mod joint;
 pub mod least_squares;
 pub mod life;
+pub mod lost_lithium;
 pub mod posterior;
 pub mod profile;
 pub mod pulse;

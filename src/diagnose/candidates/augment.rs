@@ -96,13 +96,18 @@ impl Candidate {
                     let hi = eps.min(1.0 - porosity - 1e-9);
                     FitParameter::log(path, 0.97 * hi, 0.4 * eps, hi)
                 };
-                (
-                    vec![
-                        a("negative.active_fraction", p.negative.active_fraction, p.negative.porosity),
-                        a("positive.active_fraction", p.positive.active_fraction, p.positive.porosity),
-                    ],
-                    "active-material volume fractions of both electrodes refitted".into(),
-                )
+                let mut fractions = vec![
+                    a("negative.active_fraction", p.negative.active_fraction, p.negative.porosity),
+                    a("positive.active_fraction", p.positive.active_fraction, p.positive.porosity),
+                ];
+                // The state at which the material was lost sets the lithium it took along,
+                // from the set's initial state (how PyBaMM ages a set) over the whole range;
+                // not where the initial concentrations are fitted (they set the lithium).
+                if !fitted.iter().any(|f| f.ends_with("initial_concentration")) {
+                    let (start, lower, upper) = loss_soc_range(&p);
+                    fractions.push(FitParameter::linear(LOSS_SOC, start, lower, upper));
+                }
+                (fractions, "active-material volume fractions of both electrodes and the state of charge at which they were lost (the lithium it took) refitted".into())
             }
             Candidate::Thermal => {
                 if spec.submodels.thermal {
@@ -234,6 +239,10 @@ impl Candidate {
         }
         if let Some(b) = aged {
             p = b;
+        }
+        // Fitted initial concentrations fix the lithium that a lost material's state would set.
+        if replaces.iter().any(|r| r == INITIAL_SOC) {
+            replaces.push(LOSS_SOC.to_string());
         }
         let screened = self.is_ageing();
         Some(Augmentation { spec, base: p, extra, replaces, structural_parameters, change, screened })

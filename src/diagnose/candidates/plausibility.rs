@@ -331,7 +331,7 @@ mod tests {
         let aug = Candidate::SecondMaterialNegative.augment(&spec, &base, &[], &Load::default()).expect("offered");
         let paths: Vec<&str> = aug.extra.iter().map(|e| e.path.as_str()).collect();
         assert_eq!(paths, ["negative.second_phase_share", "negative.second_phase_potential", "negative.second_phase_width", "negative.initial_concentration", "positive.initial_concentration"]);
-        assert_eq!(aug.replaces, [INITIAL_SOC]);
+        assert_eq!(aug.replaces, [INITIAL_SOC, LOSS_SOC]);
         let mut blended = base.clone();
         blended.positive.second_phase_share = 0.1;
         assert!(Candidate::SecondMaterialPositive.augment(&spec, &blended, &[], &Load::default()).is_none(), "already has one");
