@@ -160,10 +160,18 @@ const HYSTERESIS_START_RATE: f64 = 10.0;
 /// recording to show hysteresis without rests after both directions.
 const HYSTERESIS_BRANCH: f64 = 0.5;
 
-/// The least window of charge (a share of the nominal capacity) over which a second active
-/// material is told from a shifted or stretched stoichiometry: its extra capacity shows as a
-/// step or tail of the open-circuit voltage across a window, not within a few per cent of one.
-const SECOND_MATERIAL_WINDOW: f64 = 0.2;
+/// The least window of charge (a share of the nominal capacity) over which an electrode's
+/// capacity is read from the open-circuit voltage's shape: a second active material is told
+/// from a shifted or stretched stoichiometry by a step or tail across a window, and a
+/// progressive loss of active material compresses the features along the capacity axis;
+/// within a few per cent of one state of charge either is a local slope.
+const SHAPE_WINDOW: f64 = 0.2;
+
+/// Why the recording's window of charge is too narrow to read the OCV's shape, or `None`.
+fn too_narrow(f: &Features, q_nominal: f64) -> Option<String> {
+    let window = f.charge_window() / q_nominal;
+    (window < SHAPE_WINDOW).then(|| format!("needs a recording that moves at least {:.0} % of the nominal capacity (this one spans {:.1} %)", 100.0 * SHAPE_WINDOW, 100.0 * window))
+}
 
 impl Candidate {
     pub const ALL: [Candidate; 26] = [
@@ -372,18 +380,14 @@ impl Candidate {
                 Some("needs current steps or loads at two or more rates".into())
             }
             Candidate::SeiGrowth | Candidate::SeiGrowthSeries => ageing::too_short_for_sei(f),
-            Candidate::LithiumPlating | Candidate::LithiumPlatingPartial | Candidate::ActiveMaterialGrowth | Candidate::ActiveMaterialThroughput => ageing::too_few_cycles(f),
+            Candidate::LithiumPlating | Candidate::LithiumPlatingPartial => ageing::too_few_cycles(f),
+            Candidate::ActiveMaterialGrowth | Candidate::ActiveMaterialThroughput => ageing::too_few_cycles(f).or_else(|| too_narrow(f, q_nominal)),
             // In one uninterrupted run a leak only rescales the charge passed (a capacity or
             // stoichiometry change); a rest, or charge and discharge both, sets it apart.
             Candidate::Leak if f.rests_after_charge + f.rests_after_discharge == 0 && !(rec.current.iter().any(|i| *i > 0.0) && rec.current.iter().any(|i| *i < 0.0)) => {
                 Some("needs a rest, or both charge and discharge (in one constant-direction run a leak is a change of capacity)".into())
             }
-            Candidate::SecondMaterialNegative | Candidate::SecondMaterialPositive => {
-                let window = f.charge_window() / q_nominal;
-                (window < SECOND_MATERIAL_WINDOW).then(|| {
-                    format!("needs a recording that moves at least {:.0} % of the nominal capacity (this one spans {:.1} %)", 100.0 * SECOND_MATERIAL_WINDOW, 100.0 * window)
-                })
-            }
+            Candidate::SecondMaterialNegative | Candidate::SecondMaterialPositive => too_narrow(f, q_nominal),
             _ => None,
         }
     }
@@ -405,10 +409,11 @@ impl Candidate {
 mod tests {
     use super::*;
 
-    /// A second material needs a window of a fifth of the capacity: pulses about one state of
-    /// charge do not offer it, a discharge does.
+    /// A second material and a progressive loss of active material need a window of a fifth
+    /// of the capacity: pulses about one state of charge do not offer them (however many
+    /// swings they make), a discharge offers the second material and full cycles the loss.
     #[test]
-    fn a_second_material_needs_a_window_of_charge() {
+    fn the_ocv_shape_needs_a_window_of_charge() {
         let q = crate::params::chen2020().cell.nominal_capacity;
         let record = |steps: &[(f64, f64)]| {
             let (mut time, mut current, mut t) = (vec![0.0], vec![0.0], 0.0);
@@ -428,6 +433,13 @@ mod tests {
             let why = c.not_identifiable(&pulses, &Features::of(&pulses), q).expect("pulses do not identify a second material");
             assert!(why.contains("at least 20 %") && why.contains("spans 1.7 %"), "{why}");
             assert_eq!(c.not_identifiable(&discharge, &Features::of(&discharge), q), None);
+        }
+        let swings = record(&[(30.0, 2.0 * q), (30.0, -2.0 * q)].repeat(20));
+        let cycles = record(&[(3600.0, q), (3600.0, -q)].repeat(4));
+        for c in [Candidate::ActiveMaterialGrowth, Candidate::ActiveMaterialThroughput] {
+            let why = c.not_identifiable(&swings, &Features::of(&swings), q).expect("swings about one state of charge do not identify a progressive loss");
+            assert!(why.contains("at least 20 %"), "{why}");
+            assert_eq!(c.not_identifiable(&cycles, &Features::of(&cycles), q), None);
         }
     }
 
