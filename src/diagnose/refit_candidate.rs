@@ -5,6 +5,7 @@ use super::{Candidate, CandidateOutcome, Comparison, DiagnoseOptions, NextModel,
 use crate::data::Recording;
 use crate::params::{ParameterSet, set_initial_soc};
 use crate::problem::fitting::{FitParameter, INITIAL_SOC};
+use crate::problem::lost_lithium::is_loss_soc;
 use refit::{FitOutcome, Split};
 
 /// Fits one candidate on top of the baseline; `warm` holds the baseline's fitted parameters
@@ -65,10 +66,14 @@ pub(super) fn refit_candidate(
         true => (p.initial.ln() + (p.lower.ln() - p.initial.ln()) / 3.0).exp(),
         false => p.initial + (p.lower - p.initial) / 3.0,
     };
+    // The state at which material was lost refines the plain loss (its start): it is held
+    // there in a first fit from every start, and is not moved alone.
+    let staged = params.iter().position(|p| is_loss_soc(&p.path));
     let own: Vec<usize> = (0..params.len()).filter(|&k| !warm.iter().any(|w| w.path == params[k].path)).collect();
     let mut starts: Vec<Vec<f64>> = vec![params.iter().map(|p| p.initial).collect()];
-    if own.len() >= 2 {
-        starts.extend(own.iter().map(|&k| {
+    let moved: Vec<usize> = own.iter().copied().filter(|&k| Some(k) != staged).collect();
+    if moved.len() >= 2 {
+        starts.extend(moved.iter().map(|&k| {
             let mut s = runs_at.clone();
             s[k] = toward_lower(&params[k]);
             s
@@ -80,7 +85,7 @@ pub(super) fn refit_candidate(
                 .iter()
                 .map(|p| match warm.iter().position(|w| w.path == p.path) {
                     Some(i) => user.map_or(p.initial, |r| r[i].clamp(p.lower, p.upper)),
-                    None if lower => toward_lower(p),
+                    None if lower && !is_loss_soc(&p.path) => toward_lower(p),
                     None => p.initial,
                 })
                 .collect();
@@ -99,7 +104,7 @@ pub(super) fn refit_candidate(
             Vec::new()
         }
     };
-    let starts = refit::Starts { points: starts, runs_at: Some(runs_at), screen };
+    let starts = refit::Starts { points: starts, runs_at: Some(runs_at), screen, staged };
     match refit::fit_and_score(describe(&aug.spec), aug.spec, aug.base.clone(), params.clone(), aug.structural_parameters, &starts, data, split, &options.fit) {
         Ok(f) => {
             let fitted = params
