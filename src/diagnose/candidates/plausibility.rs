@@ -133,7 +133,13 @@ impl Candidate {
                     return capacity_scale_name(0.5 * (n + p));
                 }
                 let (which, l) = if p >= n { ("positive", p) } else { ("negative", n) };
-                format!("loss of active material, {which} electrode ({:.0} % of its capacity)", 100.0 * l)
+                // Where the loss state was fitted, the lithium the lost material held: its
+                // stoichiometry (0: delithiated, its lithium stayed cyclable).
+                let held = get(LOSS_SOC).map_or(String::new(), |s| {
+                    let (x, y) = crate::params::StoichiometryWindow::within_reach(base).at(s);
+                    format!(", lost at stoichiometry {:.2}", if p >= n { y } else { x }.clamp(0.0, 1.0))
+                });
+                format!("loss of active material, {which} electrode ({:.0} % of its capacity{held})", 100.0 * l)
             }
             Candidate::ActiveMaterialGrowth | Candidate::ActiveMaterialThroughput => {
                 let (n, p) = ageing::lam_losses(get, base, load);
@@ -249,6 +255,14 @@ mod tests {
         assert!(name(-0.05, -0.052).contains("reading 5.1 % high"));
         assert!(name(0.12, 0.02).contains("negative electrode (12 %"));
         assert!(name(0.001, 0.001).contains("positive electrode (0 %"));
+        // With the loss state fitted, the lost material's stoichiometry: none at the
+        // negative's empty end (delithiated), the set's at its initial state.
+        let with_state: Vec<String> = names.iter().cloned().chain([LOSS_SOC.to_string()]).collect();
+        let (start, empty, _) = loss_soc_range(&base);
+        let at = |s: f64| Candidate::ActiveMaterial.named_by_values(&with_state, &[0.93 * base.negative.active_fraction, base.positive.active_fraction, s], &base, &Load::default());
+        assert!(at(empty).contains("negative electrode (7 % of its capacity, lost at stoichiometry 0.00)"), "{}", at(empty));
+        let x0 = base.negative.initial_concentration / base.negative.max_concentration;
+        assert!(at(start).contains(&format!("lost at stoichiometry {x0:.2}")), "{}", at(start));
     }
 
     /// A delay shorter than the sampling after current steps is unresolved; one longer is not.
