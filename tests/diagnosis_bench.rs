@@ -955,18 +955,15 @@ fn a1_ec_reaction_limited_sei_is_fitted_at_its_rates_spme() {
 #[test]
 fn c6_an_unrelaxed_start_left_below_the_floor_is_still_pointed_at_spme() {
     // Blind batch c: a 10 mA current offset and 8 % positive LAM named in round 1, in a
-    // recording exported from the end of an unrecorded CC-CV charge. What remains (2.0 mV,
-    // noise 1.0) sits at the start (half its square): round 2 names nothing, and says where the
-    // remainder sits and what it likely is. (Until the LAM fitted the state at which material
-    // was lost, round 1 left 1.09 mV on held-out points, below the size floor, and round 2
-    // opened "No missing physics"; the loss state, 1.08 ± 0.02 where PyBaMM's plain loss sits
-    // at 0.99, takes up part of the start on training points and leaves 1.37 mV held out, so
-    // round 2 opens "Unexplained structure" with the same pointer.)
+    // recording exported from the end of an unrecorded CC-CV charge. What remains (2.00 mV,
+    // noise 1.0) sits at the start (55 % of its square), on training points: the held-out
+    // residual leaves less than a named effect must remove, so round 2 names nothing, and says
+    // where the remainder sits and what it likely is.
     let rounds = run_case("diagnosis-extra/c6_current_offset_10mA_and_lam_positive_rpt_unrelaxed_start_19C_cycler_spme");
     let last = rounds.last().unwrap();
     assert!(!last.found, "{}", last.summary);
     let words = report::verdict_in_words(last);
-    assert!(words.contains("not at rest when the recording began"), "{words}");
+    assert!(words.starts_with("No missing physics") && words.contains("not at rest when the recording began"), "{words}");
 }
 
 #[test]

@@ -158,6 +158,12 @@ fn fit_pair(a: &CandidateOutcome, b: &CandidateOutcome, round: &Round, start: Pa
             }
         }
     }
+    // A pair refits the plain loss of active material: the state at which it was lost is a
+    // single candidate's (a lithiated loss is a delithiated one with lithium lost, which the
+    // pair with lithium inventory holds), and beside any other effect it stood in for that
+    // effect's partner (f5: LAM with lithium lost screened below LAM + LLI, which was not
+    // continued).
+    aug.extra.retain(|p| !is_loss_soc(&p.path));
     let partner: Vec<String> = aug.extra.iter().map(|p| p.path.clone()).collect();
     // The first effect's fixed structural parameters count too.
     let structural_a = a.candidate.augment(&round.options.spec, round.base, round.fitted_paths, &round.load).map_or(0, |x| x.structural_parameters);
@@ -171,7 +177,7 @@ fn fit_pair(a: &CandidateOutcome, b: &CandidateOutcome, round: &Round, start: Pa
     // model: a recording that starts empty).
     let soc = round.baseline.names.iter().position(|n| n == INITIAL_SOC).map(|k| round.baseline.values[k]);
     let no_effect = at_soc(&next_a.base, soc);
-    let mut warm = next_a.fitted.clone();
+    let mut warm: Vec<_> = next_a.fitted.iter().filter(|p| !is_loss_soc(&p.path)).cloned().collect();
     for p in warm.iter_mut() {
         let start = match round.baseline.names.iter().position(|n| *n == p.path) {
             Some(k) => round.baseline.values[k],
