@@ -81,9 +81,8 @@ impl Default for FitSettings {
 /// the first.
 ///
 /// `staged` is a parameter that refines a model held at its start value (the state at which
-/// active material was lost, held where the plain loss puts it): every start is also fitted
-/// with it held there first, then freed from that optimum, so the refined fit ends no worse
-/// than the plain one (another parameter's path toward a bound cannot lead it astray).
+/// active material was lost, held where the plain loss puts it): every start is fitted with
+/// it held there first, then freed from that optimum (see [`staged_fit`]).
 #[derive(Clone, Debug, Default)]
 pub struct Starts {
     pub points: Vec<Vec<f64>>,
@@ -99,38 +98,39 @@ impl Starts {
     }
 }
 
-/// Levenberg-Marquardt from `x0`; with a parameter `staged`, also a fit with it first held at
-/// its value in `x0` and then freed from that optimum (the simulations count every fit), and
-/// the lower of the two. The held path ends no worse than the model without the refinement;
-/// the direct one reaches where the refinement is all the gain (the loss of a delithiated
-/// negative: held at the plain loss's state the loss fits to no effect, where its state no
-/// longer moves the voltage).
-fn staged_fit(problem: &FittingProblem, x0: &[f64], staged: Option<usize>, lm: LmSettings) -> Result<LeastSquaresFit, Error> {
+/// Relative drop of the squared error (-) below which a held fit explains nothing beyond the
+/// previous model.
+const HELD_NO_GAIN: f64 = 1e-3;
+
+/// Levenberg-Marquardt from `x0`; with a parameter `staged`, first with it held at its value
+/// in `x0`, then freed from that optimum (so the refined fit ends no worse than the held
+/// model). Only when the held fit explains nothing beyond the previous model (`runs_at`) is
+/// the refinement also fitted directly from `x0`, and the lower kept: a delithiated negative's
+/// loss fits to no effect held at the plain loss's state, where the state no longer moves the
+/// voltage. Freed directly beside a plain loss that already explains the recording, the state
+/// took up other mismatch (k2, a current gain, became an unequal loss with its lithium kept).
+/// The simulations count every fit.
+fn staged_fit(problem: &FittingProblem, x0: &[f64], staged: Option<usize>, runs_at: Option<&[f64]>, lm: LmSettings) -> Result<LeastSquaresFit, Error> {
     let Some(k) = staged else { return levenberg_marquardt(problem, x0, lm) };
-    let held_then_freed = || -> Result<LeastSquaresFit, Error> {
-        let held = problem.pinned(k, x0[k])?;
-        let mut rest = x0.to_vec();
-        rest.remove(k);
-        let first = levenberg_marquardt(&held, &rest, lm)?;
-        let mut x = first.x.clone();
-        x.insert(k, x0[k]);
-        let mut fit = levenberg_marquardt(problem, &x, lm)?;
-        fit.simulations += first.simulations;
-        Ok(fit)
-    };
-    let (direct, staged) = rayon::join(|| levenberg_marquardt(problem, x0, lm), held_then_freed);
-    match (direct, staged) {
-        (Ok(mut a), Ok(b)) => {
-            let simulations = a.simulations + b.simulations;
-            if b.sse < a.sse {
-                a = b;
+    let held = problem.pinned(k, x0[k])?;
+    let mut rest = x0.to_vec();
+    rest.remove(k);
+    let first = levenberg_marquardt(&held, &rest, lm)?;
+    let mut x = first.x.clone();
+    x.insert(k, x0[k]);
+    let mut fit = levenberg_marquardt(problem, &x, lm)?;
+    fit.simulations += first.simulations;
+    let previous = runs_at.and_then(|r| problem.run(r).ok()).map(|run| sse(&problem.weighted_residuals(&run)));
+    if previous.is_some_and(|p| first.sse >= (1.0 - HELD_NO_GAIN) * p) {
+        if let Ok(direct) = levenberg_marquardt(problem, x0, lm) {
+            let simulations = fit.simulations + direct.simulations + 1;
+            if direct.sse < fit.sse {
+                fit = direct;
             }
-            a.simulations = simulations;
-            Ok(a)
+            fit.simulations = simulations;
         }
-        (Ok(a), Err(_)) | (Err(_), Ok(a)) => Ok(a),
-        (Err(e), Err(_)) => Err(e),
     }
+    Ok(fit)
 }
 
 /// The point `x0` with each of the `screen` parameters moved to the value of a decade grid
@@ -314,8 +314,8 @@ pub fn fit_and_score(
     let lead = if let Some(x) = screened { points.insert(1, x); 2 } else { 1 };
     // A start that fails is pulled toward where the model runs and tried again.
     let fit_from = |x0: &Vec<f64>| {
-        staged_fit(&problem, x0, starts.staged, settings.lm).or_else(|e| match starts.runs_at.as_ref().and_then(|r| pulled_into_model(&problem, x0, r)) {
-            Some(x) => staged_fit(&problem, &x, starts.staged, settings.lm),
+        staged_fit(&problem, x0, starts.staged, starts.runs_at.as_deref(), settings.lm).or_else(|e| match starts.runs_at.as_ref().and_then(|r| pulled_into_model(&problem, x0, r)) {
+            Some(x) => staged_fit(&problem, &x, starts.staged, starts.runs_at.as_deref(), settings.lm),
             None => Err(e),
         })
     };
