@@ -160,9 +160,9 @@ fn fit_pair(a: &CandidateOutcome, b: &CandidateOutcome, round: &Round, start: Pa
     }
     // A pair refits the plain loss of active material: the state at which it was lost is a
     // single candidate's (a lithiated loss is a delithiated one with lithium lost, which the
-    // pair with lithium inventory holds), and beside any other effect it stood in for that
-    // effect's partner (f5: LAM with lithium lost screened below LAM + LLI, which was not
-    // continued).
+    // pair with lithium inventory holds), and beside other effects it stood in for their
+    // partner (f5, negative LAM with lithium lost: LAM with its state beside an entropic
+    // change, a leak or an unrelaxed start screened below LAM + LLI, which was not continued).
     aug.extra.retain(|p| !is_loss_soc(&p.path));
     let partner: Vec<String> = aug.extra.iter().map(|p| p.path.clone()).collect();
     // The first effect's fixed structural parameters count too.
@@ -205,11 +205,10 @@ fn fit_pair(a: &CandidateOutcome, b: &CandidateOutcome, round: &Round, start: Pa
         fit.names.iter().zip(&fit.values).filter(|(n, _)| !round.baseline.names.contains(n)).map(|(n, v)| (n.clone(), *v)).unzip();
     // Twice the parameters: each must also be determined by the recording, its standard
     // error within its value; for a signed parameter (its search range spans zero, as an
-    // initial hysteresis state does) or a state (where in its range active material was
-    // lost) within half its range: near zero is a value there.
+    // initial hysteresis state does) within half its range: near zero is a value there.
     let scale = |n: &str, v: f64| {
-        let positional = next.as_ref().and_then(|m| m.fitted.iter().find(|p| p.path == n)).filter(|p| (p.lower < 0.0 && p.upper > 0.0) || is_loss_soc(&p.path));
-        positional.map_or(v.abs(), |p| 0.5 * (p.upper - p.lower))
+        let signed = next.as_ref().and_then(|m| m.fitted.iter().find(|p| p.path == n)).filter(|p| p.lower < 0.0 && p.upper > 0.0);
+        signed.map_or(v.abs(), |p| 0.5 * (p.upper - p.lower))
     };
     let undetermined = names.iter().zip(&values).filter_map(|(n, v)| {
         let se = fit.std_errors[fit.names.iter().position(|m| m == n)?];

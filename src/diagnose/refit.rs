@@ -104,13 +104,14 @@ const HELD_NO_GAIN: f64 = 1e-3;
 
 /// Levenberg-Marquardt from `x0`; with a parameter `staged`, first with it held at its value
 /// in `x0`, then freed from that optimum (so the refined fit ends no worse than the held
-/// model). Only when the held fit explains nothing beyond the previous model (`runs_at`) is
+/// model). Only when the held fit explains nothing beyond the previous model (its squared
+/// error `previous`) is
 /// the refinement also fitted directly from `x0`, and the lower kept: a delithiated negative's
 /// loss fits to no effect held at the plain loss's state, where the state no longer moves the
 /// voltage. Freed directly beside a plain loss that already explains the recording, the state
 /// took up other mismatch (k2, a current gain, became an unequal loss with its lithium kept).
 /// The simulations count every fit.
-fn staged_fit(problem: &FittingProblem, x0: &[f64], staged: Option<usize>, runs_at: Option<&[f64]>, lm: LmSettings) -> Result<LeastSquaresFit, Error> {
+fn staged_fit(problem: &FittingProblem, x0: &[f64], staged: Option<usize>, previous: Option<f64>, lm: LmSettings) -> Result<LeastSquaresFit, Error> {
     let Some(k) = staged else { return levenberg_marquardt(problem, x0, lm) };
     let held = problem.pinned(k, x0[k])?;
     let mut rest = x0.to_vec();
@@ -120,10 +121,9 @@ fn staged_fit(problem: &FittingProblem, x0: &[f64], staged: Option<usize>, runs_
     x.insert(k, x0[k]);
     let mut fit = levenberg_marquardt(problem, &x, lm)?;
     fit.simulations += first.simulations;
-    let previous = runs_at.and_then(|r| problem.run(r).ok()).map(|run| sse(&problem.weighted_residuals(&run)));
     if previous.is_some_and(|p| first.sse >= (1.0 - HELD_NO_GAIN) * p) {
         if let Ok(direct) = levenberg_marquardt(problem, x0, lm) {
-            let simulations = fit.simulations + direct.simulations + 1;
+            let simulations = fit.simulations + direct.simulations;
             if direct.sse < fit.sse {
                 fit = direct;
             }
@@ -312,10 +312,12 @@ pub fn fit_and_score(
     let (screened, screen_runs) = if starts.screen.is_empty() { (None, 0) } else { decade_screen(&problem, &points[0], &starts.screen) };
     // The screened point is fitted beside the first start, always.
     let lead = if let Some(x) = screened { points.insert(1, x); 2 } else { 1 };
+    // A staged refinement is judged against the previous model (where the model is known to run).
+    let previous = starts.staged.and(starts.runs_at.as_ref()).and_then(|r| problem.run(r).ok()).map(|run| sse(&problem.weighted_residuals(&run)));
     // A start that fails is pulled toward where the model runs and tried again.
     let fit_from = |x0: &Vec<f64>| {
-        staged_fit(&problem, x0, starts.staged, starts.runs_at.as_deref(), settings.lm).or_else(|e| match starts.runs_at.as_ref().and_then(|r| pulled_into_model(&problem, x0, r)) {
-            Some(x) => staged_fit(&problem, &x, starts.staged, starts.runs_at.as_deref(), settings.lm),
+        staged_fit(&problem, x0, starts.staged, previous, settings.lm).or_else(|e| match starts.runs_at.as_ref().and_then(|r| pulled_into_model(&problem, x0, r)) {
+            Some(x) => staged_fit(&problem, &x, starts.staged, previous, settings.lm),
             None => Err(e),
         })
     };
@@ -343,7 +345,7 @@ pub fn fit_and_score(
         }
     }
     // Work of every start, not only the best one's.
-    let simulations: usize = screen_runs + fits.iter().filter_map(|f| f.as_ref().ok()).map(|f| f.simulations).sum::<usize>();
+    let simulations: usize = screen_runs + usize::from(previous.is_some()) + fits.iter().filter_map(|f| f.as_ref().ok()).map(|f| f.simulations).sum::<usize>();
     let mut best: Option<LeastSquaresFit> = None;
     let mut error = None;
     for f in fits {

@@ -83,9 +83,10 @@ pub(super) fn refit_candidate(
         for lower in [false, true] {
             let s: Vec<f64> = params
                 .iter()
-                .map(|p| match warm.iter().position(|w| w.path == p.path) {
+                .enumerate()
+                .map(|(k, p)| match warm.iter().position(|w| w.path == p.path) {
                     Some(i) => user.map_or(p.initial, |r| r[i].clamp(p.lower, p.upper)),
-                    None if lower && !is_loss_soc(&p.path) => toward_lower(p),
+                    None if lower && Some(k) != staged => toward_lower(p),
                     None => p.initial,
                 })
                 .collect();

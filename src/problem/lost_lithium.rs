@@ -32,13 +32,19 @@ pub fn loss_soc_range(base: &ParameterSet) -> (f64, f64, f64) {
     (soc(line.x_n0).clamp(lower, upper), lower, upper)
 }
 
+/// The negative and positive stoichiometries (-) of material lost at state of charge `soc` of
+/// `base`'s window.
+pub fn lost_stoichiometries(base: &ParameterSet, soc: f64) -> (f64, f64) {
+    let (x, y) = StoichiometryWindow::within_reach(base).at(soc);
+    (x.clamp(0.0, 1.0), y.clamp(0.0, 1.0))
+}
+
 /// Sets the cyclable lithium of `p`, an aged copy of `base` (smaller active fractions), to
 /// `base`'s minus what the lost volume held at state of charge `soc` of `base`'s window, and
 /// moves `p`'s initial concentrations onto that lithium (its negative stoichiometry as close
 /// to its own as the new lithium allows). A gained volume brings lithium at that state.
 pub fn take_lost_lithium(base: &ParameterSet, p: &mut ParameterSet, soc: f64) -> Result<(), Error> {
-    let (x, y) = StoichiometryWindow::within_reach(base).at(soc);
-    let (x, y) = (x.clamp(0.0, 1.0), y.clamp(0.0, 1.0));
+    let (x, y) = lost_stoichiometries(base, soc);
     let unaged = LithiumLine::of(base);
     let ((bn, bp), (qn, qp)) = (unaged.capacities(), LithiumLine::of(p).capacities());
     let lithium = unaged.lithium() - (bn - qn) * x - (bp - qp) * y;

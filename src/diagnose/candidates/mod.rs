@@ -20,7 +20,7 @@ use crate::params::ParameterSet;
 use crate::problem::fitting::{FitParameter, INITIAL_SOC, ModelSpec};
 use crate::problem::delay::VOLTAGE_DELAY;
 use crate::problem::history::{HISTORY_CURRENT, HISTORY_DURATION};
-use crate::problem::lost_lithium::{LOSS_SOC, loss_soc_range};
+use crate::problem::lost_lithium::{LOSS_SOC, loss_soc_range, lost_stoichiometries};
 
 /// A candidate explanation.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]

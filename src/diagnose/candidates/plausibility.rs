@@ -136,8 +136,8 @@ impl Candidate {
                 // Where the loss state was fitted, the lithium the lost material held: its
                 // stoichiometry (0: delithiated, its lithium stayed cyclable).
                 let held = get(LOSS_SOC).map_or(String::new(), |s| {
-                    let (x, y) = crate::params::StoichiometryWindow::within_reach(base).at(s);
-                    format!(", lost at stoichiometry {:.2}", if p >= n { y } else { x }.clamp(0.0, 1.0))
+                    let (x, y) = lost_stoichiometries(base, s);
+                    format!(", lost at stoichiometry {:.2}", if p >= n { y } else { x })
                 });
                 format!("loss of active material, {which} electrode ({:.0} % of its capacity{held})", 100.0 * l)
             }
