@@ -3,8 +3,9 @@
 //! The instructions of one solve are the difference of two runs with different REPEATS
 //! divided by the difference of REPEATS (the build and start-up cancel).
 //!
-//! `cargo run --release --example solver_work -- MODEL CASE RTOL REPEATS`
-//! (MODEL spm|spme|dfn, CASE 0.5C|1C|2C|pulse; rtol = atol = RTOL).
+//! `cargo run --release --example solver_work -- MODEL CASE RTOL REPEATS [DT]`
+//! (MODEL spm|spme|dfn, CASE 0.5C|1C|2C|pulse; rtol = atol = RTOL). With DT (s), outputs
+//! every DT seconds without charge at the outputs, as a fit to a recording asks for them.
 
 #[path = "common/solver_case.rs"]
 mod solver_case;
@@ -14,10 +15,17 @@ use solver_case::SolverCase;
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
-    let [model, case, rtol, repeats] = args.as_slice() else {
-        panic!("usage: solver_work MODEL CASE RTOL REPEATS");
+    let (model, case, rtol, repeats, dt) = match args.as_slice() {
+        [m, c, r, n] => (m, c, r, n, None),
+        [m, c, r, n, dt] => (m, c, r, n, Some(dt.parse::<f64>().expect("DT"))),
+        _ => panic!("usage: solver_work MODEL CASE RTOL REPEATS [DT]"),
     };
-    let SolverCase { protocol, options: opts, params: p, mut builder, repeats } = SolverCase::new(model, case, rtol, repeats);
+    let SolverCase { protocol, options: mut opts, params: p, mut builder, repeats } = SolverCase::new(model, case, rtol, repeats);
+    if let Some(dt) = dt {
+        let end = protocol.steps.iter().map(|s| s.duration()).sum::<f64>().min(4000.0);
+        opts.t_eval = Some((0..=(end / dt) as usize).map(|k| k as f64 * dt).collect());
+        opts.charge_at_outputs = false;
+    }
     let rtol = opts.solver.rtol;
     let built = builder.build(&p).expect("build");
     if std::env::var("SHOW_LU").is_ok() {

@@ -13,7 +13,7 @@ use std::borrow::Cow;
 
 use super::electrochem::{Electrochem, Side};
 use super::electrolyte::ElectrolyteOp;
-use super::kinetics::{electrolyte_factor, log_mean, mean_overpotential};
+use super::kinetics::{log_mean, mean_overpotential};
 use super::submodels::plating::Site;
 use super::submodels::{LamDrivers, LamLayer, PlatingLayer, SeiLayer};
 use super::submodels::thermal::{SideReactionSite, bernardi_heat};
@@ -268,9 +268,8 @@ impl Spme {
         let c_e_ref = ec.params.electrolyte.initial_concentration;
         let c_in = c_s.clamp(0.0, c_max);
         let j0_particle = k * (c_in * (c_max - c_in)).sqrt();
-        let j0 = ce[self.consts.electrode(side)].iter().map(|&c| j0_particle * electrolyte_factor(c, c_e_ref));
         let film = if side == Side::Negative { self.sei.film(ec, y, j, self.lam.surface_area_density(ec, side, y, 0)) } else { 0.0 };
-        ec.ocp(side, c_s, temp) + mean_overpotential(j, j0, alpha, temp) + film
+        ec.ocp(side, c_s, temp) + mean_overpotential(j, j0_particle, &ce[self.consts.electrode(side)], c_e_ref, alpha, temp) + film
     }
 
     /// Writes the SEI and plating states' rates into `out` and returns the x-averaged
