@@ -72,7 +72,7 @@ impl Electrochem {
             Some(blend) => blend.eval(sto),
             None => self.electrode(side).ocp.eval(sto),
         };
-        reference + (t - self.t_ref()) * self.electrode(side).entropic_change(sto)
+        if t == self.t_ref() { reference } else { reference + (t - self.t_ref()) * self.electrode(side).entropic_change(sto) }
     }
 
     /// Entropic change dU/dT (V/K) at particle concentration `c_s` (mol/m^3).

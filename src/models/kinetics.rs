@@ -2,9 +2,10 @@
 
 use crate::params::{FARADAY, GAS_CONSTANT};
 
-/// Arrhenius factor `exp(E / R (1/T_ref - 1/T))` for activation energy `e` (J/mol).
+/// Arrhenius factor `exp(E / R (1/T_ref - 1/T))` for activation energy `e` (J/mol); exactly 1
+/// without an exponential at the reference temperature (an isothermal cell at 25 degC).
 pub fn arrhenius(e: f64, t_ref: f64, t: f64) -> f64 {
-    if e == 0.0 { 1.0 } else { (e / GAS_CONSTANT * (1.0 / t_ref - 1.0 / t)).exp() }
+    if e == 0.0 || t == t_ref { 1.0 } else { (e / GAS_CONSTANT * (1.0 / t_ref - 1.0 / t)).exp() }
 }
 
 /// Regularisation width of the square roots in [`exchange_current`] (-), PyBaMM 26's
