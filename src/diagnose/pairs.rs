@@ -34,26 +34,26 @@ pub(super) fn named_pairs(singles: &[CandidateOutcome], round: &Round) -> Vec<Ca
         .flat_map(|(i, a)| useful[i + 1..].iter().map(move |b| (*a, *b)))
         .filter(|(a, b)| !one_physics(a.candidate, b.candidate))
         .collect();
-    // Every pair screened from its first start with a few iterations; the few best (plausible
-    // first, then by training error) that had not converged by then continue from where they
-    // stopped; the few best whose fit is doubtful (it stopped on its cap or ended on a bound)
-    // are refitted from every start, as the singles are.
+    // Every pair screened from its first start with a few iterations; the few best by
+    // training error that had not converged by then continue from where they stopped; the few
+    // best whose fit is doubtful (it stopped on its cap or ended on a bound) are refitted from
+    // every start, as the singles are.
     let full = round.options.fit.lm;
     let screen = LmSettings { max_iterations: SCREEN_ITERATIONS.min(full.max_iterations), ..full };
     let mut first: Vec<(usize, CandidateOutcome)> =
         pairs.par_iter().enumerate().filter_map(|(k, (a, b))| Some((k, fit_pair(a, b, round, PairStart::Screen(screen))?))).collect();
-    // Plausible screens first: the few continuations go to pairs that could be named, not to
-    // one dominant effect's pairs whose values its screen already put on a bound (n4: a
-    // second positive material at the edge of its range, paired with anything, took every
-    // slot from positive LAM + lithium, which its screen had already found at 1 mV).
     let mut best_first: Vec<usize> = (0..first.len()).collect();
-    best_first.sort_by(|i, j| {
-        let key = |k: &usize| (first[*k].1.implausible.is_some(), rmse_train(&first[*k].1));
-        let (a, b) = (key(i), key(j));
-        a.0.cmp(&b.0).then(a.1.total_cmp(&b.1))
-    });
-    let unconverged: Vec<usize> =
-        best_first.into_iter().take(CONTINUED_PAIRS).filter(|i| first[*i].1.fit.as_ref().is_some_and(|f| !f.converged)).collect();
+    best_first.sort_by(|i, j| rmse_train(&first[*i].1).total_cmp(&rmse_train(&first[*j].1)));
+    let unconverged_screen = |i: &usize| first[*i].1.fit.as_ref().is_some_and(|f| !f.converged);
+    let top = &best_first[..CONTINUED_PAIRS.min(best_first.len())];
+    let mut unconverged: Vec<usize> = top.iter().copied().filter(unconverged_screen).collect();
+    // When none of the best few could be named as screened, the best screen that could also
+    // continues: one dominant effect's pairs need not take every slot (n4: a second positive
+    // material on the edge of its range, paired with anything, took all three from positive
+    // LAM + lithium, whose screen already stood at 1 mV).
+    if top.iter().all(|i| first[*i].1.implausible.is_some()) {
+        unconverged.extend(best_first[top.len()..].iter().copied().find(|i| first[*i].1.implausible.is_none() && unconverged_screen(i)));
+    }
     let continued: Vec<(usize, Option<CandidateOutcome>)> = unconverged
         .par_iter()
         .map(|&i| {
