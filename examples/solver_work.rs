@@ -5,7 +5,8 @@
 //!
 //! `cargo run --release --example solver_work -- MODEL CASE RTOL REPEATS [DT]`
 //! (MODEL spm|spme|dfn, CASE 0.5C|1C|2C|pulse; rtol = atol = RTOL). With DT (s), outputs
-//! every DT seconds without charge at the outputs, as a fit to a recording asks for them.
+//! every DT seconds up to 4000 s (the 1C discharge's length) without charge at the outputs,
+//! as a fit to a recording asks for them.
 
 #[path = "common/solver_case.rs"]
 mod solver_case;

@@ -106,46 +106,54 @@ pub fn shared_potential(weights: &[f64], j0: &[f64], ocp: &[f64], j: f64, alpha:
 /// concentrations in mol/m^3). All terms share the sign of `j`, and with `A = |j| / (2
 /// j0_particle)` and the factor's square `f_k^2 = c_k^2 / sqrt(c_k^2 + d^2)` each
 /// `asinh(|j| / 2 j0_k)` is `ln(A + sqrt(A^2 + f_k^2)) - ln(f_k^2) / 2`: two square roots and
-/// a division per volume, in lanes the compiler vectorises, and two logarithms per call.
+/// a division per volume, in four SIMD lanes, and two logarithms per call.
 pub fn mean_overpotential(j: f64, j0_particle: f64, c_e: &[f64], c_e_ref: f64, alpha: f64, t: f64) -> f64 {
     use wide::f64x4;
     let a = j.abs() / (2.0 * j0_particle);
     let d = SQRT_REGULARISATION * c_e_ref;
     let (av, a2, d2) = (f64x4::splat(a), f64x4::splat(a * a), f64x4::splat(d * d));
-    // Products of `A + sqrt(A^2 + f^2)` and of `f^2`, lane by lane; folded into logarithms
-    // when a lane leaves 1e-100..1e100.
-    let (mut num, mut f2s, mut logs) = (f64x4::splat(1.0), f64x4::splat(1.0), 0.0);
+    // The factors `A + sqrt(A^2 + f^2)` and `f^2` of four volumes.
+    let factors = |c: f64x4| {
+        let c = c.max(f64x4::ZERO);
+        let c2 = c * c;
+        let f2 = c2 / (c2 + d2).sqrt();
+        (av + (a2 + f2).sqrt(), f2)
+    };
+    // Their products, lane by lane; folded into logarithms when a lane leaves 1e-100..1e100.
+    let (mut num, mut f2s, mut logs) = (f64x4::ONE, f64x4::ONE, 0.0);
     let mut fold = |num: &mut f64x4, f2s: &mut f64x4| {
         for (n, f) in num.to_array().into_iter().zip(f2s.to_array()) {
             logs += n.ln() - 0.5 * f.ln();
         }
-        (*num, *f2s) = (f64x4::splat(1.0), f64x4::splat(1.0));
+        (*num, *f2s) = (f64x4::ONE, f64x4::ONE);
     };
     let (lo, hi) = (f64x4::splat(1e-100), f64x4::splat(1e100));
     let chunks = c_e.chunks_exact(4);
     let tail = chunks.remainder();
     for chunk in chunks {
-        let c = f64x4::new(chunk.try_into().expect("four lanes")).max(f64x4::ZERO);
-        let c2 = c * c;
-        let f2 = c2 / (c2 + d2).sqrt();
-        num *= av + (a2 + f2).sqrt();
+        let (n, f2) = factors(f64x4::new(chunk.try_into().expect("four lanes")));
+        num *= n;
         f2s *= f2;
         if !(num.simd_ge(lo) & num.simd_le(hi) & f2s.simd_ge(lo) & f2s.simd_le(hi)).all() {
             fold(&mut num, &mut f2s);
         }
     }
-    let (mut num, mut f2s) = (num.to_array(), f2s.to_array());
-    for (l, &c) in tail.iter().enumerate() {
-        let c2 = c.max(0.0) * c.max(0.0);
-        let f2 = c2 / (c2 + d * d).sqrt();
-        num[l] *= a + (a * a + f2).sqrt();
-        f2s[l] *= f2;
+    if !tail.is_empty() {
+        // The last volumes in the first lanes, factors of 1 in the others.
+        let mut c = [0.0; 4];
+        c[..tail.len()].copy_from_slice(tail);
+        let (n, f2) = factors(f64x4::new(c));
+        let (mut n, mut f2) = (n.to_array(), f2.to_array());
+        n[tail.len()..].fill(1.0);
+        f2[tail.len()..].fill(1.0);
+        num *= f64x4::new(n);
+        f2s *= f64x4::new(f2);
     }
-    let (n, f2) = (num.iter().product::<f64>(), f2s.iter().product::<f64>());
+    let (n, f2) = (num.to_array().iter().product::<f64>(), f2s.to_array().iter().product::<f64>());
     let mean = if n.is_normal() && f2.is_normal() && n < 1e300 && f2 < 1e300 {
         logs + n.ln() - 0.5 * f2.ln()
     } else {
-        fold(&mut f64x4::new(num), &mut f64x4::new(f2s));
+        fold(&mut num, &mut f2s);
         logs
     } / c_e.len() as f64;
     (GAS_CONSTANT * t / (alpha * FARADAY) * mean).copysign(j)
