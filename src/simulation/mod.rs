@@ -211,6 +211,7 @@ pub fn simulate_observed(
         e: 0.0,
         i: 0.0,
         p: 0.0,
+        history: Vec::with_capacity(3),
     };
     let mut next_eval = 0usize;
     let mut t0 = 0.0;
@@ -268,8 +269,7 @@ pub fn simulate_observed(
             let what = format!("the voltage is {v0:.4} V, already at or {beyond} `{field}` = {limit} V");
             return Err(start.blame(ws, i0, &what, failure));
         }
-        rec.i = i0;
-        rec.p = i0 * v0;
+        rec.restart(t0, i0, i0 * v0);
         let (q0, e0) = (rec.q, rec.e);
         match t_eval {
             // Every step start is recorded, so a current jump shows as a vertical edge.
@@ -296,13 +296,14 @@ pub fn simulate_observed(
         };
         let ends_early = step.has_cutoffs() || matches!(step, Step::Hold { until_current: Some(_), .. });
         let event: Option<&dyn Fn(f64, &[f64]) -> f64> = if ends_early { Some(&event_fn) } else { None };
+        let kinks: Vec<f64> = step.kinks().iter().map(|k| t0 + k).collect();
         let mut observer = |t_old: f64, dense: &DenseOutput| {
             let t_new = dense.t_end();
             if let Some(te) = t_eval {
                 while next_eval < te.len() && te[next_eval] <= t_new {
                     let t = te[next_eval];
                     if opts.charge_at_outputs {
-                        let end = rec.integrate_to(dense, &drive, (t_old, t), None, &mut buf);
+                        let end = rec.integrate_to(dense, &drive, (t_old, t), None, &kinks, &mut buf);
                         let (q, e) = (rec.q + end.dq, rec.e + end.de);
                         rec.record(t, &buf, end.current, end.voltage, q, e);
                     } else {
@@ -313,11 +314,8 @@ pub fn simulate_observed(
             }
             let (t_event, i, v) = last_event.get();
             let at_end = (t_event == t_new).then_some((i, v));
-            let end = rec.integrate_to(dense, &drive, (t_old, t_new), at_end, &mut buf);
-            rec.q += end.dq;
-            rec.e += end.de;
-            rec.i = end.current;
-            rec.p = end.current * end.voltage;
+            let end = rec.integrate_to(dense, &drive, (t_old, t_new), at_end, &kinks, &mut buf);
+            rec.advance(t_new, &end);
             if t_eval.is_none() {
                 let (q, e) = (rec.q, rec.e);
                 rec.record(t_new, &buf, end.current, end.voltage, q, e);
@@ -325,8 +323,7 @@ pub fn simulate_observed(
         };
         let t_end = t0 + step.duration();
         let mut stats = SolverStats::default();
-        let kinks = step.kinks().iter().map(|k| t0 + k).collect();
-        let dae = UnderCurrent { model, current: |t: f64, y: &[f64]| drive.current(t, y), kinks };
+        let dae = UnderCurrent { model, current: |t: f64, y: &[f64]| drive.current(t, y), kinks: kinks.clone() };
         let reason = match &held {
             Some(hold) => {
                 let mut hold_ws = Workspace::new(n + 1, hold::VoltageHold::pattern(model))?;

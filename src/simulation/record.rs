@@ -1,5 +1,7 @@
 //! Recording a simulation's outputs: the state, current and voltage at each output time,
-//! and the charge and energy by adaptive Simpson quadrature on the integrator's interpolant.
+//! and the charge and energy over each solver step: by the polynomial through the last step
+//! ends when it predicts the step's midpoint, else by adaptive Simpson quadrature on the
+//! integrator's interpolant.
 
 use super::Solution;
 use super::drive::Driven;
@@ -25,7 +27,15 @@ pub(super) struct Recorder<'a> {
     /// step start).
     pub i: f64,
     pub p: f64,
+    /// (time s, current A, power W) at the last solver step ends since the drive was last
+    /// restarted or kinked, oldest first, at most [`HISTORY`]; the last is at `self.i`, `self.p`.
+    pub history: Vec<(f64, f64, f64)>,
 }
+
+/// Step ends kept for [`history_rule`]: with the interval's midpoint and end, six nodes of a
+/// quintic (its Gauss-Legendre rule is exact to degree 7).
+const HISTORY: usize = 4;
+const _: () = assert!(HISTORY + 2 <= 8);
 
 /// Values at the end of a quadrature interval.
 pub(super) struct IntervalEnd {
@@ -37,6 +47,27 @@ pub(super) struct IntervalEnd {
 }
 
 impl Recorder<'_> {
+    /// Starts a stretch of smooth drive at `t` (s) with current `i` (A) and power `p` (W)
+    /// (right limits): forgets the step ends before it.
+    pub fn restart(&mut self, t: f64, i: f64, p: f64) {
+        self.i = i;
+        self.p = p;
+        self.history.clear();
+        self.history.push((t, i, p));
+    }
+
+    /// Adds a solver step that ended at `t` (s) to the totals.
+    pub fn advance(&mut self, t: f64, end: &IntervalEnd) {
+        self.q += end.dq;
+        self.e += end.de;
+        self.i = end.current;
+        self.p = end.current * end.voltage;
+        if self.history.len() == HISTORY {
+            self.history.remove(0);
+        }
+        self.history.push((t, self.i, self.p));
+    }
+
     pub fn record(&mut self, t: f64, y: &[f64], i: f64, v: f64, q: f64, e: f64) {
         let y = &y[..self.model.len()];
         let s = &mut self.sol;
@@ -52,13 +83,6 @@ impl Recorder<'_> {
         (self.on_output)(y, i);
     }
 
-    /// Charge and energy over `[a, b]` by adaptive Simpson quadrature on the interpolant, from
-    /// the current and power (`self.i`, `self.p`) at `a`; leaves `y(b)` in `buf` (only the
-    /// output states unless every state is kept). A step is
-    /// halved until the two halves agree with the whole to `rtol` (the solver's: the integral
-    /// need not be more accurate than the trajectory it integrates) of the charge and energy
-    /// scales, so long solver steps on a curved voltage do not bias the energy.
-    /// `at_b`, when known, is the current and voltage at `b` (the cut-off event evaluated them).
     /// Records the state, current and voltage at `t` inside the step of `dense`, with the
     /// charge and energy accumulated to the step's start.
     pub fn sample(&mut self, dense: &DenseOutput, drive: &Driven, t: f64, buf: &mut [f64]) {
@@ -73,12 +97,22 @@ impl Recorder<'_> {
         self.record(t, buf, i, v, q, e);
     }
 
+    /// Charge and energy over `[a, b]`, `a` the last step end (current and power `self.i`,
+    /// `self.p`); leaves `y(b)` in `buf` (only the output states unless every state is kept).
+    /// `at_b`, when known, is the current and voltage at `b` (the cut-off event evaluated them).
+    /// Both integrals are held to `rtol` (the solver's: the integral need not be more accurate
+    /// than the trajectory it integrates) of their scale over the interval, so long solver
+    /// steps on a curved voltage do not bias the energy: first by the polynomial through the
+    /// last step ends, the midpoint and `b` ([`history_rule`]: one voltage evaluation inside
+    /// the step), else by adaptive Simpson quadrature on the integrator's interpolant (three
+    /// or more). `kinks` (s, increasing) are the drive's kinks: the polynomial never spans one.
     pub fn integrate_to(
         &self,
         dense: &DenseOutput,
         drive: &Driven,
         (a, b): (f64, f64),
         at_b: Option<(f64, f64)>,
+        kinks: &[f64],
         buf: &mut [f64],
     ) -> IntervalEnd {
         let mut sample = |t: f64, buf: &mut [f64]| {
@@ -92,15 +126,72 @@ impl Recorder<'_> {
             None => sample(b, buf),
         };
         let voltage = if end.0 != 0.0 { end.1 / end.0 } else { self.model.voltage(&buf[..self.model.len()], 0.0) };
-        let (dq, de) = adaptive_simpson(&mut sample, buf, (a, b), [(self.i, self.p), mid, end], self.rtol, 12);
-        // `buf` was overwritten by interior samples: restore y(b).
-        if self.keep_states {
-            dense.eval(b, buf);
-        } else {
-            dense.eval_ranges(b, &self.outputs, buf);
+        let smooth = |from: f64| kinks.get(kinks.partition_point(|&k| k <= from)).is_none_or(|&k| k >= b);
+        let from_history = match self.history[..] {
+            [oldest, _, .., last] if last.0 == a && smooth(oldest.0) => history_rule(&self.history, (0.5 * (a + b), mid.0, mid.1), (b, end.0, end.1), self.rtol),
+            _ => None,
+        };
+        let (dq, de) = match from_history {
+            Some(integrals) => integrals,
+            None => adaptive_simpson(&mut sample, buf, (a, b), [(self.i, self.p), mid, end], self.rtol, 12),
+        };
+        // Unless only `b` was sampled, restore y(b) in `buf`.
+        if from_history.is_none() || at_b.is_some() || self.keep_states {
+            if self.keep_states {
+                dense.eval(b, buf);
+            } else {
+                dense.eval_ranges(b, &self.outputs, buf);
+            }
         }
         IntervalEnd { dq: dq / 3600.0, de: de / 3600.0, current: end.0, voltage }
     }
+}
+
+/// Integrals of current and power (A s, J) over `[a, b]` from the last step ends (time s,
+/// current A, power W; oldest first, the last at `a`, at most [`HISTORY`]) and the values at
+/// the midpoint and `b`: the polynomial through all of them, when the one through all but the
+/// midpoint predicts the midpoint to `tol` of the integrand's scale over the interval (as the
+/// step ends carry no sign of a feature between them, the midpoint is looked at); `None`
+/// otherwise. Exact for a constant current.
+fn history_rule(nodes: &[(f64, f64, f64)], (m, im, pm): (f64, f64, f64), (b, ib, pb): (f64, f64, f64), tol: f64) -> Option<(f64, f64)> {
+    const MAX: usize = HISTORY + 2;
+    let n = nodes.len() + 2;
+    // Nodes: b, then back in time from a, then the midpoint (last, so that its Newton term is
+    // the midpoint's surprise).
+    let mut x = [b; MAX];
+    let (mut fi, mut fp) = ([ib; MAX], [pb; MAX]);
+    for (k, &(t, i, p)) in nodes.iter().rev().enumerate() {
+        (x[k + 1], fi[k + 1], fp[k + 1]) = (t, i, p);
+    }
+    (x[n - 1], fi[n - 1], fp[n - 1]) = (m, im, pm);
+    let a = x[1];
+    let h = b - a;
+    // Integrals over [a, b] of the Newton basis (x - x0)...(x - x_{k-1}), by 4-point
+    // Gauss-Legendre (exact to degree 7), and the last basis function at the midpoint.
+    let (r1, r2) = ((3.0 / 7.0 - 2.0 / 7.0 * 1.2f64.sqrt()).sqrt(), (3.0 / 7.0 + 2.0 / 7.0 * 1.2f64.sqrt()).sqrt());
+    let (w1, w2) = ((18.0 + 30f64.sqrt()) / 72.0, (18.0 - 30f64.sqrt()) / 72.0);
+    let gauss = [(-r2, w2), (-r1, w1), (r1, w1), (r2, w2)];
+    let mut basis = [0.0; MAX];
+    for (s, w) in gauss {
+        let t = a + 0.5 * (1.0 + s) * h;
+        let mut product = h * w;
+        for k in 0..n {
+            basis[k] += product;
+            product *= t - x[k];
+        }
+    }
+    let at_mid: f64 = x[..n - 1].iter().map(|xk| m - xk).product();
+    let integral = |mut c: [f64; MAX]| {
+        let scale = h * (c[0].abs() + c[1].abs() + 1e-12);
+        for j in 1..n {
+            for k in (j..n).rev() {
+                c[k] = (c[k] - c[k - 1]) / (x[k] - x[k - j]);
+            }
+        }
+        let surprise = c[n - 1] * at_mid;
+        (surprise.abs() * h <= tol * scale).then(|| c[..n].iter().zip(&basis).map(|(c, w)| c * w).sum())
+    };
+    Some((integral(fi)?, integral(fp)?))
 }
 
 /// Adaptive Simpson quadrature of (current, power) over `[a, b]` given the samples at `a`,
@@ -133,3 +224,4 @@ fn adaptive_simpson(
     let r = adaptive_simpson(sample, buf, (m, b), [fm, fr, fb], tol, depth - 1);
     (l.0 + r.0, l.1 + r.1)
 }
+
