@@ -22,6 +22,7 @@ mod design_study;
 mod diagnose;
 mod ecm;
 mod eis;
+mod energy_quadrature;
 mod experiment_design;
 mod fade_fit;
 mod fast_charge;
