@@ -19,6 +19,12 @@ What is compared, and why it is fair
   t, one solve call); ours ``simulate`` with ``t_eval = None``
   (``examples/work_precision.rs``, timed inside the process around ``simulate``; PyBaMM's
   time is the Python-level ``solve`` call, which includes building its Solution object).
+* Same outputs on both sides: the voltage at every step. PyBaMM's IDAKLU computes it inside
+  the solver (``output_variables=["Voltage [V]"]``, its fastest path, the one PyBOP takes) and
+  the timed region reads ``sol["Voltage [V]"].entries``; ours returns voltage, current,
+  charge, energy and temperature at every step (more than PyBaMM is asked for).
+  ``--pybamm-outputs state`` times PyBaMM returning the full state with no voltage read
+  (the comparison before 2026-11-29: PyBaMM then does less than we do).
 * Error: RMS of the voltage at the reference's times, from each solver's own dense output
   (PyBaMM ``t_interp`` = those times, ours ``t_eval``), an untimed second solve with the same
   settings. Times exactly at a current step are skipped (left/right limit ambiguity).
@@ -67,9 +73,10 @@ def read_ref(path: Path):
 
 
 class Pybamm:
-    def __init__(self):
+    def __init__(self, outputs: str):
         import pybamm
 
+        self.outputs = outputs
         self.pb = pybamm
         self.pv = pybamm.ParameterValues("Chen2020")
         self.i1c = float(self.pv["Nominal cell capacity [A.h]"])
@@ -91,8 +98,9 @@ class Pybamm:
                 rate = float(case.rstrip("C"))
                 p["Current function [A]"] = rate * self.i1c
                 t_end = 1.3 * 3600.0 / rate
+            variables = ["Voltage [V]"] if self.outputs == "voltage" else None
             s = pb.Simulation(getattr(pb.lithium_ion, MODELS[model])(), parameter_values=p,
-                              solver=pb.IDAKLUSolver(rtol=rtol, atol=rtol))
+                              solver=pb.IDAKLUSolver(rtol=rtol, atol=rtol, output_variables=variables))
             s.build()
             s.solver.solve(s.built_model, [0.0, t_end])  # warm-up: sets up the solver
             self.sims[key] = (s, t_end)
@@ -104,6 +112,8 @@ class Pybamm:
         for _ in range(repeats):
             t0 = time.perf_counter()
             sol = s.solver.solve(s.built_model, [0.0, t_end])
+            if self.outputs == "voltage":
+                sol["Voltage [V]"].entries
             times.append(time.perf_counter() - t0)
         return statistics.median(times), len(sol.t)
 
@@ -190,12 +200,14 @@ def main() -> None:
     ap.add_argument("--repeats", type=int, default=3)
     ap.add_argument("--refs", type=Path, default=REPO / "out" / "pybamm_tight")
     ap.add_argument("--out", type=Path, default=REPO / "out" / "work_precision")
+    ap.add_argument("--pybamm-outputs", choices=["voltage", "state"], default="voltage",
+                    help="what PyBaMM's timed solve returns: the voltage at its steps (as ours) or its full state")
     args = ap.parse_args()
     if not OURS_BIN.exists():
         sys.exit(f"{OURS_BIN} missing: cargo build --release --example work_precision")
     models, cases = args.models.split(","), args.cases.split(",")
     rtols = [float(r) for r in args.rtols.split(",")]
-    pyb = Pybamm()
+    pyb = Pybamm(args.pybamm_outputs)
     configs = [(m, c, r) for m in models for c in cases for r in rtols]
     refs = {}
     for m in models:
@@ -235,7 +247,7 @@ def main() -> None:
         for x in results:
             f.write(f"{x['side']},{x['model']},{x['case']},{x['rtol']:g},{x['solve_s']:.6g},{x['points']},{x['rms_mV']:.4g},{x['max_mV']:.4g}\n")
     svg(results, models, cases, args.out / "work_precision.svg")
-    lines = [f"Work-precision, median of {args.rounds} interleaved rounds x {args.repeats} solves; error = RMS voltage vs PyBaMM rtol 1e-10 (mV); "
+    lines = [f"Work-precision, median of {args.rounds} interleaved rounds x {args.repeats} solves; PyBaMM returns {args.pybamm_outputs} at its steps; error = RMS voltage vs PyBaMM rtol 1e-10 (mV); "
              "ratio = PyBaMM's time at our error (log-log interpolation) / ours.\n",
              "| model | case | rtol | PyBaMM error (mV) | PyBaMM solve (ms) | PyBaMM points | ours error (mV) | ours solve (ms) | ours points | ratio at matched accuracy |",
              "|---|---|---|---|---|---|---|---|---|---|"]
