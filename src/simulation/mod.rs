@@ -326,8 +326,8 @@ pub fn simulate_observed(
         let dae = UnderCurrent { model, current: |t: f64, y: &[f64]| drive.current(t, y), kinks: kinks.clone() };
         let reason = match &held {
             Some(hold) => {
-                let mut hold_ws = Workspace::new(n + 1, hold::VoltageHold::pattern(model))?;
-                integrate(hold, &mut hold_ws, &opts.solver, t0, &mut y, t_end, event, &mut observer, &mut stats)
+                let hold_ws = ws.extended(n + 1, || hold::VoltageHold::pattern(model))?;
+                integrate(hold, hold_ws, &opts.solver, t0, &mut y, t_end, event, &mut observer, &mut stats)
             }
             None => integrate(&dae, ws, &opts.solver, t0, &mut y, t_end, event, &mut observer, &mut stats),
         };

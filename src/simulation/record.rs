@@ -115,10 +115,11 @@ impl Recorder<'_> {
         kinks: &[f64],
         buf: &mut [f64],
     ) -> IntervalEnd {
+        // (current, power); at rest the power is 0 without evaluating the voltage.
         let mut sample = |t: f64, buf: &mut [f64]| {
             dense.eval_ranges(t, &self.outputs, buf);
             let i = drive.current(t, buf);
-            (i, i * self.model.voltage(&buf[..self.model.len()], i))
+            (i, if i == 0.0 { 0.0 } else { i * self.model.voltage(&buf[..self.model.len()], i) })
         };
         let mid = sample(0.5 * (a + b), buf);
         let end = match at_b {

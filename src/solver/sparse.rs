@@ -68,6 +68,11 @@ enum Factorised {
 }
 
 impl SparseSystem {
+    /// Number of states.
+    pub fn len(&self) -> usize {
+        self.n
+    }
+
     /// Builds the pattern from distinct Jacobian entries `(row, col)`.
     pub fn new(n: usize, entries: &[(usize, usize)]) -> Result<Self, Error> {
         if let Some(&(r, c)) = entries.iter().find(|&&(r, c)| r >= n || c >= n) {

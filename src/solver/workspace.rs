@@ -14,6 +14,9 @@ pub struct Workspace {
     /// The algebraic block (algebraic rows and columns) with its own, smaller colouring and
     /// LU; built at the first consistent initialisation.
     algebraic: Option<AlgebraicBlock>,
+    /// A work space for the same DAE with more states (a voltage hold's: the model's states
+    /// and the current), built at its first use and kept with this one.
+    extended: Option<Box<Workspace>>,
 }
 
 impl Workspace {
@@ -24,7 +27,18 @@ impl Workspace {
         entries.dedup();
         let system = SparseSystem::new(n, &entries)?;
         let jac = vec![0.0; entries.len()];
-        Ok(Self { pattern: ColouredPattern::new(n, entries), system, jac, algebraic: None })
+        Ok(Self { pattern: ColouredPattern::new(n, entries), system, jac, algebraic: None, extended: None })
+    }
+
+    /// The work space for this DAE extended to `n` states with Jacobian entries `entries()`,
+    /// built at the first call (or when `n` changes) and kept, so that a cycle's voltage
+    /// holds do not each rebuild its colouring and symbolic LU.
+    pub fn extended(&mut self, n: usize, entries: impl FnOnce() -> Vec<(usize, usize)>) -> Result<&mut Workspace, Error> {
+        match &mut self.extended {
+            Some(ws) if ws.system.len() == n => {}
+            slot => *slot = Some(Box::new(Workspace::new(n, entries())?)),
+        }
+        Ok(self.extended.as_deref_mut().expect("built above"))
     }
 
     /// Residual evaluations per Jacobian.
