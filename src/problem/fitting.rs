@@ -359,6 +359,20 @@ impl FittingProblem {
         Ok(p)
     }
 
+    /// Why the model cannot replay `what` (the recording, named for the user) at parameters
+    /// `x`, as an error that names the values; `None` when it can.
+    pub fn unreplayable(&self, x: &[f64], what: &str) -> Option<Error> {
+        let why = self.simulate(x).err()?;
+        let values: Vec<String> = self.parameters.iter().zip(x).map(|(p, v)| format!("{} = {v:.6e}", p.path)).collect();
+        Some(Error::InvalidSetting {
+            field: format!("{what} at the start values"),
+            reason: format!(
+                "the model cannot replay it from {}: {why} (a model cell that empties before the recording ends needs a higher starting state of charge: raise the initial value of initial_soc)",
+                values.join(", ")
+            ),
+        })
+    }
+
     /// Model voltage (V) at every recorded point.
     pub fn simulate(&self, x: &[f64]) -> Result<Vec<f64>, Error> {
         Ok(self.run(x, false)?.voltage)

@@ -119,11 +119,22 @@ pub struct FitResult {
 /// parameters' initial values, then evaluates standard errors at the optimum.
 pub fn fit(problem: &FittingProblem, cost: CostKind, optimiser: &str, options: OptimOptions) -> Result<FitResult, Error> {
     let objective = FitObjective { problem, cost };
-    let search = minimise(&objective, &problem.parameters, cost, optimiser, options)?;
+    let search = minimise(&objective, &problem.parameters, cost, optimiser, options)
+        .map_err(|err| explain_start(err, || problem.unreplayable(&problem.initial(), "data")))?;
     let theta = &search.result.x[..problem.dim()];
     let sim = problem.simulate_with_sensitivities(theta)?;
     let id = identifiability(problem, &sim)?;
     Ok(search.into_result(id, sim.voltage))
+}
+
+/// An optimiser's refusal of a start where the objective is not finite (field `x0`), replaced
+/// by `why` the model cannot replay the data there (a discharge that reaches its cut-off
+/// before the recording ends, a state outside its window), when that is the reason.
+pub(crate) fn explain_start(err: Error, why: impl FnOnce() -> Option<Error>) -> Error {
+    match &err {
+        Error::InvalidSetting { field, .. } if field == "x0" => why().unwrap_or(err),
+        _ => err,
+    }
 }
 
 /// A finished search: the optimiser's result, the names of its coordinates, its trace and

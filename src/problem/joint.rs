@@ -8,7 +8,7 @@
 use rayon::prelude::*;
 use serde::Serialize;
 
-use super::identification::{FitObjective, FitResult, Identifiability, minimise};
+use super::identification::{FitObjective, FitResult, Identifiability, explain_start, minimise};
 use crate::stats::weighted_rms;
 use super::fitting::{FitParameter, FittingProblem};
 use crate::cost::CostKind;
@@ -190,7 +190,9 @@ pub struct JointFit {
 pub fn fit_joint(problem: &JointProblem, cost: CostKind, optimiser: &str, options: OptimOptions) -> Result<JointFit, Error> {
     let objective = JointObjective { problem, cost };
     let initial = problem.initial();
-    let search = minimise(&objective, &problem.parameters, cost, optimiser, options)?;
+    let search = minimise(&objective, &problem.parameters, cost, optimiser, options).map_err(|err| {
+        explain_start(err, || problem.experiments.iter().find_map(|e| e.problem.unreplayable(&problem.local(e, &initial), &format!("data \"{}\"", e.name))))
+    })?;
     let theta = search.result.x[..problem.dim()].to_vec();
     let sims: Vec<_> = problem
         .experiments

@@ -259,3 +259,19 @@ fn posterior_credible_intervals_cover_the_truth() {
         assert!(p.q2_5 <= truth[k] && truth[k] <= p.q97_5, "{}: [{}, {}] misses {}", p.name, p.q2_5, p.q97_5, truth[k]);
     }
 }
+
+#[test]
+fn a_start_the_model_cannot_replay_is_named() {
+    use cellstudio::cost::CostKind;
+    use cellstudio::optim::OptimOptions;
+    use cellstudio::problem::identification::fit;
+    // The seed discharge (1C from full, then a rest) from half charge: the model's cell
+    // empties half-way through the recording.
+    let spec = ModelSpec::new(ModelKind::Spm, Submodels { contact_resistance: true, ..Default::default() });
+    let params = vec![FitParameter::linear("initial_soc", 0.5, 0.3, 1.0), FitParameter::log("cell.contact_resistance", 0.01, 1e-4, 0.1)];
+    let problem = FittingProblem::new(spec, chen2020(), params, seed_recording(0.0, 1)).unwrap();
+    let err = fit(&problem, CostKind::Sse, "lbfgsb", OptimOptions::default()).unwrap_err().to_string();
+    for part in ["`data at the start values`", "initial_soc = 5.000000e-1", "cell.contact_resistance = 1.000000e-2", "raise the initial value of initial_soc"] {
+        assert!(err.contains(part), "{part} missing from: {err}");
+    }
+}
