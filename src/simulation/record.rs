@@ -183,6 +183,7 @@ fn history_rule(nodes: &[(f64, f64, f64)], (m, im, pm): (f64, f64, f64), (b, ib,
     }
     let at_mid: f64 = x[..n - 1].iter().map(|xk| m - xk).product();
     let integral = |mut c: [f64; MAX]| {
+        // The integrand's size at b and a (c[0], c[1] before the differences).
         let scale = h * (c[0].abs() + c[1].abs() + 1e-12);
         for j in 1..n {
             for k in (j..n).rev() {
