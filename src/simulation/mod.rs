@@ -211,7 +211,7 @@ pub fn simulate_observed(
         e: 0.0,
         i: 0.0,
         p: 0.0,
-        history: Vec::with_capacity(3),
+        history: Vec::new(),
     };
     let mut next_eval = 0usize;
     let mut t0 = 0.0;
@@ -296,14 +296,15 @@ pub fn simulate_observed(
         };
         let ends_early = step.has_cutoffs() || matches!(step, Step::Hold { until_current: Some(_), .. });
         let event: Option<&dyn Fn(f64, &[f64]) -> f64> = if ends_early { Some(&event_fn) } else { None };
-        let kinks: Vec<f64> = step.kinks().iter().map(|k| t0 + k).collect();
+        let kinks = step.kinks().iter().map(|k| t0 + k).collect();
+        let dae = UnderCurrent { model, current: |t: f64, y: &[f64]| drive.current(t, y), kinks };
         let mut observer = |t_old: f64, dense: &DenseOutput| {
             let t_new = dense.t_end();
             if let Some(te) = t_eval {
                 while next_eval < te.len() && te[next_eval] <= t_new {
                     let t = te[next_eval];
                     if opts.charge_at_outputs {
-                        let end = rec.integrate_to(dense, &drive, (t_old, t), None, &kinks, &mut buf);
+                        let end = rec.integrate_to(dense, &drive, (t_old, t), None, &dae.kinks, &mut buf);
                         let (q, e) = (rec.q + end.dq, rec.e + end.de);
                         rec.record(t, &buf, end.current, end.voltage, q, e);
                     } else {
@@ -314,7 +315,7 @@ pub fn simulate_observed(
             }
             let (t_event, i, v) = last_event.get();
             let at_end = (t_event == t_new).then_some((i, v));
-            let end = rec.integrate_to(dense, &drive, (t_old, t_new), at_end, &kinks, &mut buf);
+            let end = rec.integrate_to(dense, &drive, (t_old, t_new), at_end, &dae.kinks, &mut buf);
             rec.advance(t_new, &end);
             if t_eval.is_none() {
                 let (q, e) = (rec.q, rec.e);
@@ -323,7 +324,6 @@ pub fn simulate_observed(
         };
         let t_end = t0 + step.duration();
         let mut stats = SolverStats::default();
-        let dae = UnderCurrent { model, current: |t: f64, y: &[f64]| drive.current(t, y), kinks: kinks.clone() };
         let reason = match &held {
             Some(hold) => {
                 let hold_ws = ws.extended(n + 1, || hold::VoltageHold::pattern(model))?;
