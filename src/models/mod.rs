@@ -164,6 +164,13 @@ pub trait Model: Send + Sync {
     fn mass(&self) -> &[f64];
     /// Typical magnitude of each state (for tolerances and difference steps).
     fn scale(&self) -> &[f64];
+    /// Magnitude below which a finite-difference Jacobian's step in each state stops
+    /// shrinking (the step is `sqrt(eps)` of it or of the state): the state scale, unless the
+    /// right-hand side is linear in the state (forward sensitivities), where a larger step
+    /// keeps the difference well above rounding at no loss.
+    fn difference_scale(&self) -> &[f64] {
+        self.scale()
+    }
     /// Structural non-zeros `(row, col)` of `df/dy` (may omit weak dense couplings).
     fn jacobian_pattern(&self) -> Vec<(usize, usize)>;
     /// Initial state; algebraic states hold a guess that `consistent_initialisation` refines.

@@ -93,6 +93,9 @@ impl<F: Fn(f64, &[f64]) -> f64> Dae for UnderCurrent<'_, F> {
     fn scale(&self) -> &[f64] {
         self.model.scale()
     }
+    fn difference_scale(&self) -> &[f64] {
+        self.model.difference_scale()
+    }
     fn rhs(&self, t: f64, y: &[f64], out: &mut [f64]) {
         self.model.rhs(y, (self.current)(t, y), out)
     }

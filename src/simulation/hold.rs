@@ -15,14 +15,17 @@ pub(super) struct VoltageHold<'a> {
     pub voltage: f64,
     mass: Vec<f64>,
     scale: Vec<f64>,
+    difference_scale: Vec<f64>,
 }
 
 impl<'a> VoltageHold<'a> {
     /// `current_scale` (A): the typical current, e.g. the 1C current.
     pub fn new(model: &'a dyn Model, voltage: f64, current_scale: f64) -> Self {
         let mass = model.mass().iter().copied().chain([0.0]).collect();
-        let scale = model.scale().iter().copied().chain([current_scale.abs().max(1e-6)]).collect();
-        Self { model, voltage, mass, scale }
+        let current_scale = current_scale.abs().max(1e-6);
+        let scale = model.scale().iter().copied().chain([current_scale]).collect();
+        let difference_scale = model.difference_scale().iter().copied().chain([current_scale]).collect();
+        Self { model, voltage, mass, scale, difference_scale }
     }
 
     /// The Jacobian pattern of the held system: the model's, the current's column in every
@@ -45,6 +48,9 @@ impl Dae for VoltageHold<'_> {
     }
     fn scale(&self) -> &[f64] {
         &self.scale
+    }
+    fn difference_scale(&self) -> &[f64] {
+        &self.difference_scale
     }
     fn rhs(&self, _t: f64, y: &[f64], out: &mut [f64]) {
         let n = self.model.len();

@@ -119,7 +119,11 @@ impl Solution {
 /// holding the differential states fixed. Once an update is below `CHORD_FROM` (relative to
 /// the state scales) and ten times smaller than the one before, the factorised Jacobian is kept
 /// (chord iterations: one right-hand side and one solve each) while the updates keep shrinking
-/// tenfold.
+/// tenfold. Converged when an update is below `1e-12`, or below `NOISE_FLOOR` and no longer
+/// halving with a fresh Jacobian: a right-hand side computed by differences (forward
+/// sensitivities' directional derivatives, exact to about `sqrt(eps)` of `J s`) has a noise
+/// floor that Newton cannot go below; far under the integrator's tolerances, whose corrector
+/// solves the algebraic rows again at every step.
 pub fn consistent_initialisation(
     model: &dyn Model,
     ws: &mut Workspace,
@@ -128,6 +132,8 @@ pub fn consistent_initialisation(
 ) -> Result<(), Error> {
     /// Largest update (relative to the state scales) after which the Jacobian is kept.
     const CHORD_FROM: f64 = 1e-3;
+    /// Largest update (relative to the state scales) taken as the right-hand side's noise.
+    const NOISE_FLOOR: f64 = 1e-6;
     let mass = model.mass();
     if mass.iter().all(|&m| m != 0.0) {
         return Ok(());
@@ -142,7 +148,7 @@ pub fn consistent_initialisation(
     for _ in 0..50 {
         g(y, &mut f);
         if refresh {
-            ws.factorise_algebraic(&mut g, y, &f, scale, mass)?;
+            ws.factorise_algebraic(&mut g, y, &f, model.difference_scale(), mass)?;
         }
         for ((d, v), &m) in dy.iter_mut().zip(&f).zip(mass) {
             *d = if m == 0.0 { -v } else { 0.0 };
@@ -152,13 +158,15 @@ pub fn consistent_initialisation(
         for i in 0..n {
             if mass[i] == 0.0 {
                 y[i] += dy[i];
-                step = step.max((dy[i] / scale[i]).abs());
+                // Not `f64::max`, which would drop a NaN.
+                let r = (dy[i] / scale[i]).abs();
+                step = if r > step || r.is_nan() { r } else { step };
             }
         }
         if !step.is_finite() {
             break;
         }
-        if step < 1e-12 {
+        if step < 1e-12 || (refresh && step < NOISE_FLOOR && step > 0.5 * last) {
             return Ok(());
         }
         refresh = !(step < CHORD_FROM && step < 0.1 * last);

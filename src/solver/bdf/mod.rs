@@ -30,6 +30,11 @@ pub trait Dae {
     fn mass(&self) -> &[f64];
     /// Typical magnitude of each state (absolute tolerance and difference steps scale by it).
     fn scale(&self) -> &[f64];
+    /// Floor of each state's finite-difference step, before the `sqrt(eps)` factor (see
+    /// [`crate::models::Model::difference_scale`]).
+    fn difference_scale(&self) -> &[f64] {
+        self.scale()
+    }
     /// Evaluates `f(t, y)` into `out`.
     fn rhs(&self, t: f64, y: &[f64], out: &mut [f64]);
     /// Times (s), increasing, where `f` has a kink in `t` (the points of a piecewise-linear

@@ -32,9 +32,9 @@ const MAX_GAMMA_DRIFT: f64 = 0.3;
 pub(super) struct Newton<'a> {
     dae: &'a dyn Dae,
     ws: &'a mut Workspace,
-    /// The DAE's mass-matrix diagonal and state scales.
+    /// The DAE's mass-matrix diagonal and its floors of the Jacobian's difference steps.
     pub(super) mass: &'a [f64],
-    scale: &'a [f64],
+    difference_scale: &'a [f64],
     /// Stopping threshold on the estimated remaining correction, in error weights.
     tol: f64,
     /// A Jacobian has been evaluated (in the work space).
@@ -65,7 +65,7 @@ impl<'a> Newton<'a> {
             dae,
             ws,
             mass: dae.mass(),
-            scale: dae.scale(),
+            difference_scale: dae.difference_scale(),
             // Newton stops when the estimated remaining correction is below this fraction of the
             // error weights. Tighter values only add iterations and, through slower convergence
             // tests, Jacobian evaluations.
@@ -104,7 +104,7 @@ impl<'a> Newton<'a> {
         weight: &[f64],
         stats: &mut SolverStats,
     ) -> Result<Option<usize>, Error> {
-        let (dae, ws, mass, state_scale) = (self.dae, &mut *self.ws, self.mass, self.scale);
+        let (dae, ws, mass, state_scale) = (self.dae, &mut *self.ws, self.mass, self.difference_scale);
         let (y_pred, psi) = (&pred.y[..], &pred.psi[..]);
         let (f, rhs, y_new, dvec) = (&mut self.f[..], &mut self.rhs[..], &mut self.y_new[..], &mut self.dvec[..]);
         let mut n_iter = 0;
