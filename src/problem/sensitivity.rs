@@ -32,8 +32,8 @@ pub struct Sensitivities<'a> {
     steps: Vec<f64>,
     mass: Vec<f64>,
     scale: Vec<f64>,
-    /// Floors of the Jacobian's difference steps: the base model's, then the
-    /// sensitivity blocks' at [`SENSITIVITY_COLUMN_STEP`].
+    /// Floors of the Jacobian's difference steps: the base model's widened to a step of
+    /// `eps^(1/3)`, then the sensitivity blocks' at [`SENSITIVITY_COLUMN_STEP`].
     difference_scale: Vec<f64>,
     /// The base model's output states (what its voltage reads).
     outputs: Vec<usize>,
@@ -49,7 +49,12 @@ impl<'a> Sensitivities<'a> {
         let mass = base.mass().repeat(blocks);
         let scale = base.scale().repeat(blocks);
         let widen = SENSITIVITY_COLUMN_STEP / f64::EPSILON.sqrt();
-        let difference_scale = base.difference_scale().iter().copied().chain(scale[n..].iter().map(|s| widen * s)).collect();
+        // The states' columns also carry the sensitivity rows' dependence on `y` (through
+        // `J(y) s`), a difference of the central `J s`, whose noise is about eps^(2/3): a step
+        // of eps^(1/3) of the scale balances that noise against the truncation error of the
+        // base rows (a modified Newton's matrix need not be more exact).
+        let state_step = f64::EPSILON.powf(1.0 / 3.0) / f64::EPSILON.sqrt();
+        let difference_scale = base.difference_scale().iter().map(|s| state_step * s).chain(scale[n..].iter().map(|s| widen * s)).collect();
         let outputs = base.output_states();
         Self { base, perturbed, scales, steps, mass, scale, difference_scale, outputs, scratch: Mutex::new((vec![0.0; n], vec![0.0; n], vec![0.0; n])) }
     }

@@ -70,8 +70,8 @@ fn sensitivities_match_finite_differences() {
 /// parameters, against differences of plain simulations at tight tolerances. The potentials'
 /// sensitivities are algebraic states, and they failed to initialise at the steps: Newton
 /// stalled on the noise of a one-sided `J s`, and the Jacobian's sensitivity columns were
-/// noise. At the default tolerance the largest error, just after the step, is 1.9e-3 of the
-/// largest sensitivity (D_n); at rtol 1e-8 1.1e-4.
+/// noise. At the default tolerance the largest error is 3.7e-4 of the largest sensitivity
+/// (D_n, just after the step); at rtol 1e-8 1.0e-4.
 #[test]
 fn dfn_sensitivities_hold_across_current_steps() {
     let path = format!("{}/tests/data/parameterisation/gitt.csv", env!("CARGO_MANIFEST_DIR"));
@@ -110,7 +110,7 @@ fn dfn_sensitivities_hold_across_current_steps() {
             }
         })
         .collect();
-    for (rtol, bound) in [(None, 5e-3), (Some(1e-8), 3e-4)] {
+    for (rtol, bound) in [(None, 1.5e-3), (Some(1e-8), 3e-4)] {
         let mut problem = FittingProblem::new(spec, chen2020(), params.clone(), rec.clone()).unwrap();
         if let Some(r) = rtol {
             problem.solver.rtol = r;
