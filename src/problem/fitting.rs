@@ -362,15 +362,20 @@ impl FittingProblem {
     /// Why the model cannot replay `what` (the recording, named for the user) at parameters
     /// `x`, as an error that names the values; `None` when it can.
     pub fn unreplayable(&self, x: &[f64], what: &str) -> Option<Error> {
-        let why = self.simulate(x).err()?;
+        Some(self.start_failure(x, what, self.simulate(x).err()?))
+    }
+
+    /// The error `why` of a replay of `what` at the start values `x`, with those values and
+    /// the likely fix (see [`FittingProblem::unreplayable`]).
+    pub fn start_failure(&self, x: &[f64], what: &str, why: Error) -> Error {
         let values: Vec<String> = self.parameters.iter().zip(x).map(|(p, v)| format!("{} = {v:.6e}", p.path)).collect();
-        Some(Error::InvalidSetting {
+        Error::InvalidSetting {
             field: format!("{what} at the start values"),
             reason: format!(
                 "the model cannot replay it from {}: {why} (a model cell that empties before the recording ends needs a higher starting state of charge: raise the initial value of initial_soc)",
                 values.join(", ")
             ),
-        })
+        }
     }
 
     /// Model voltage (V) at every recorded point.

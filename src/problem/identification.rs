@@ -127,12 +127,15 @@ pub fn fit(problem: &FittingProblem, cost: CostKind, optimiser: &str, options: O
     Ok(search.into_result(id, sim.voltage))
 }
 
-/// An optimiser's refusal of a start where the objective is not finite (field `x0`), replaced
-/// by `why` the model cannot replay the data there (a discharge that reaches its cut-off
-/// before the recording ends, a state outside its window), when that is the reason.
+/// An optimiser's refusal of a start where the objective is not finite (field `x0`), or a
+/// solver failure that ended the search, replaced by `why` the model cannot replay the data
+/// at the start values (a discharge that reaches its cut-off before the recording ends, a
+/// state outside its window, a model cell that empties under load), when that is the reason:
+/// `why` returns `None` where the start replays, and the error stands.
 pub(crate) fn explain_start(err: Error, why: impl FnOnce() -> Option<Error>) -> Error {
     match &err {
         Error::InvalidSetting { field, .. } if field == "x0" => why().unwrap_or(err),
+        Error::Solver { .. } => why().unwrap_or(err),
         _ => err,
     }
 }

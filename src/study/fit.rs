@@ -325,7 +325,8 @@ const MIN_DEGREES_OF_FREEDOM: usize = 10;
 pub(crate) fn single_fit_into(study: &FitStudy, data: Option<&Path>, dir: &Path) -> Result<FitOutcome, Error> {
     let (problem, checks) = study.problem_and_notes(data)?;
     let (method, options) = study.optimiser()?;
-    let initial_voltage = problem.simulate(&problem.initial())?;
+    let x0 = problem.initial();
+    let initial_voltage = problem.simulate(&x0).map_err(|why| problem.start_failure(&x0, "data", why))?;
     let initial_rmse = crate::stats::weighted_rms(&problem.residuals(&initial_voltage), &problem.weights);
     let result = fit(&problem, study.cost, &method, options)?;
     let notes: Vec<String> = study.noise_note(data).into_iter().chain(checks).collect();

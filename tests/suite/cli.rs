@@ -42,6 +42,18 @@ fn fit_never_adds_synthetic_noise_to_a_user_recording() {
     assert!(report.contains("synthetic Gaussian noise of 2 mV"), "{report}");
 }
 
+/// A cell that cannot replay the recording at the start values (half the positive electrode:
+/// it empties before the discharge ends) is named as such, with those values and the fix,
+/// before any search, not as a bare solver failure; nothing is written.
+#[test]
+fn a_fit_whose_start_cannot_replay_the_recording_says_why() {
+    let s = Scratch::new("start");
+    let study = fit_study(&s, "[cost]\nkind = \"sse\"\n");
+    let o = run(&s.0, &["fit", study.to_str().unwrap(), "--set", "positive.thickness=3e-5"]);
+    fails_with(&o, &["`data at the start values`", "cell.contact_resistance = ", "the model's voltage left", "raise the initial value of initial_soc"]);
+    assert!(!s.path("out").exists(), "a failed fit wrote its output folder");
+}
+
 #[test]
 fn eis_never_writes_over_the_spectrum_it_fits() {
     let s = Scratch::new("eis");
