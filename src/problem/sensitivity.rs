@@ -16,10 +16,10 @@ pub const PARAMETER_STEP: f64 = 1e-7;
 
 /// Difference step of a Jacobian column of a sensitivity block, relative to the state scale.
 /// The sensitivity equations are linear in `s`, so a step this large costs no truncation
-/// error, while `J s`, itself a directional difference, is exact only to about `sqrt(eps)`
-/// of its size: a column step of `sqrt(eps)` of the scale, as for the states, would leave
-/// those columns of order-one noise (a DFN fit of the initial state of charge had Newton
-/// diverge at a current step).
+/// error, while `J s`, itself a directional difference, carries rounding noise (about
+/// `eps^(2/3)` of its size, `sqrt(eps)` when it was one-sided): a column step of `sqrt(eps)`
+/// of the scale, as for the states, left those columns order-one noise (a DFN fit of the
+/// initial state of charge had Newton diverge at a current step).
 const SENSITIVITY_COLUMN_STEP: f64 = 1e-2;
 
 /// A model with its forward sensitivities appended to the state.

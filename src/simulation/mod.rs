@@ -121,8 +121,8 @@ impl Solution {
 /// (chord iterations: one right-hand side and one solve each) while the updates keep shrinking
 /// tenfold. Converged when an update is below `1e-12`, or below `NOISE_FLOOR` and no longer
 /// halving with a fresh Jacobian: a right-hand side computed by differences (forward
-/// sensitivities' directional derivatives, exact to about `sqrt(eps)` of `J s`) has a noise
-/// floor that Newton cannot go below; far under the integrator's tolerances, whose corrector
+/// sensitivities' directional derivatives `J s`) has a noise floor that Newton cannot go
+/// below; far under the integrator's tolerances, whose corrector
 /// solves the algebraic rows again at every step.
 pub fn consistent_initialisation(
     model: &dyn Model,
