@@ -35,6 +35,8 @@ pub struct Sensitivities<'a> {
     /// Floors of the Jacobian's difference steps: the base model's widened to a step of
     /// `eps^(1/3)`, then the sensitivity blocks' at [`SENSITIVITY_COLUMN_STEP`].
     difference_scale: Vec<f64>,
+    /// `eps^(1/3)`: the relative step of the central `J s` and of the states' Jacobian columns.
+    central_step: f64,
     /// The base model's output states (what its voltage reads).
     outputs: Vec<usize>,
     scratch: Mutex<(Vec<f64>, Vec<f64>, Vec<f64>)>,
@@ -53,24 +55,26 @@ impl<'a> Sensitivities<'a> {
         // `J(y) s`), a difference of the central `J s`, whose noise is about eps^(2/3): a step
         // of eps^(1/3) of the scale balances that noise against the truncation error of the
         // base rows (a modified Newton's matrix need not be more exact).
-        let state_step = f64::EPSILON.powf(1.0 / 3.0) / f64::EPSILON.sqrt();
+        let central_step = f64::EPSILON.cbrt();
+        let state_step = central_step / f64::EPSILON.sqrt();
         let difference_scale = base.difference_scale().iter().map(|s| state_step * s).chain(scale[n..].iter().map(|s| widen * s)).collect();
         let outputs = base.output_states();
-        Self { base, perturbed, scales, steps, mass, scale, difference_scale, outputs, scratch: Mutex::new((vec![0.0; n], vec![0.0; n], vec![0.0; n])) }
+        Self { base, perturbed, scales, steps, mass, scale, difference_scale, central_step, outputs, scratch: Mutex::new((vec![0.0; n], vec![0.0; n], vec![0.0; n])) }
     }
 
     fn n(&self) -> usize {
         self.base.len()
     }
 
-    /// Directional-difference step for `J s` so that `ε s` is `sqrt(eps)` of the state scale,
-    /// measured over the states `rows` (all of them for the right-hand side, the output states
-    /// for the voltage).
-    fn direction_step(&self, s: &[f64], rows: impl ExactSizeIterator<Item = usize>) -> Option<f64> {
+    /// Directional-difference step for `J s` so that `ε s` is `relative` of the state scale
+    /// (`sqrt(eps)` for a one-sided difference, `eps^(1/3)` for a central one), measured over
+    /// the states `rows` (all of them for the right-hand side, the output states for the
+    /// voltage).
+    fn direction_step(&self, s: &[f64], rows: impl ExactSizeIterator<Item = usize>, relative: f64) -> Option<f64> {
         let n = rows.len().max(1) as f64;
         let scale = self.base.scale();
         let wrms = (rows.map(|j| (s[j] / scale[j]).powi(2)).sum::<f64>() / n).sqrt();
-        (wrms > 0.0).then(|| f64::EPSILON.sqrt() / wrms)
+        (wrms > 0.0).then(|| relative / wrms)
     }
 
     /// Initial augmented state: the base model's, with `s_k(0) = p̄_k dy0/dθ_k`.
@@ -101,7 +105,7 @@ impl<'a> Sensitivities<'a> {
             .map(|k| {
                 let s = &z[(k + 1) * n..(k + 2) * n];
                 // Directional difference along s, over the states the voltage reads.
-                let direct = if let Some(eps) = self.direction_step(s, self.outputs.iter().copied()) {
+                let direct = if let Some(eps) = self.direction_step(s, self.outputs.iter().copied(), f64::EPSILON.sqrt()) {
                     for &j in &self.outputs {
                         buf[j] = y[j] + eps * s[j];
                     }
@@ -172,10 +176,9 @@ impl Model for Sensitivities<'_> {
             for j in 0..n {
                 o[j] = f * (fb[j] - f0[j]);
             }
-            if let Some(eps) = self.direction_step(s, 0..s.len()) {
-                // Central: J s to about eps^(2/3) instead of sqrt(eps), below the corrector's
-                // tolerance on the algebraic rows (a DFN's potentials).
-                let eps = eps * f64::EPSILON.powf(1.0 / 3.0) / f64::EPSILON.sqrt();
+            // Central: J s to about eps^(2/3) instead of sqrt(eps), below the corrector's
+            // tolerance on the algebraic rows (a DFN's potentials).
+            if let Some(eps) = self.direction_step(s, 0..s.len(), self.central_step) {
                 for j in 0..n {
                     shifted[j] = y[j] + eps * s[j];
                 }

@@ -122,8 +122,8 @@ impl Solution {
 /// tenfold. Converged when an update is below `1e-12`, or below `NOISE_FLOOR` and no longer
 /// halving with a fresh Jacobian: a right-hand side computed by differences (forward
 /// sensitivities' directional derivatives `J s`) has a noise floor that Newton cannot go
-/// below; far under the integrator's tolerances, whose corrector
-/// solves the algebraic rows again at every step.
+/// below; far under the integrator's tolerances, whose corrector solves the algebraic rows
+/// again at every step.
 pub fn consistent_initialisation(
     model: &dyn Model,
     ws: &mut Workspace,

@@ -104,7 +104,7 @@ impl<'a> Newton<'a> {
         weight: &[f64],
         stats: &mut SolverStats,
     ) -> Result<Option<usize>, Error> {
-        let (dae, ws, mass, state_scale) = (self.dae, &mut *self.ws, self.mass, self.difference_scale);
+        let (dae, ws, mass, difference_scale) = (self.dae, &mut *self.ws, self.mass, self.difference_scale);
         let (y_pred, psi) = (&pred.y[..], &pred.psi[..]);
         let (f, rhs, y_new, dvec) = (&mut self.f[..], &mut self.rhs[..], &mut self.y_new[..], &mut self.dvec[..]);
         let mut n_iter = 0;
@@ -115,7 +115,7 @@ impl<'a> Newton<'a> {
             if !self.have_jac {
                 let mut g = |yy: &[f64], out: &mut [f64]| dae.rhs(t_new, yy, out);
                 dae.rhs(t_new, y_pred, f);
-                ws.pattern.evaluate(&mut g, y_pred, f, state_scale, &mut ws.jac);
+                ws.pattern.evaluate(&mut g, y_pred, f, difference_scale, &mut ws.jac);
                 stats.rhs_evals += 1 + ws.pattern.n_colours();
                 stats.jacobian_evals += 1;
                 ws.system.load_jacobian(&ws.jac);
