@@ -57,6 +57,16 @@ impl Error {
         move |source| Error::Io { path: path.display().to_string(), source }
     }
 
+    /// The error of a section checked as a whole study (a parameterisation stage that is a
+    /// fit study's sections): the field it names, prefixed with `section.`.
+    pub fn within(self, section: &str) -> Self {
+        match self {
+            Error::InvalidParameter { field, value, reason } => Error::InvalidParameter { field: format!("{section}.{field}"), value, reason },
+            Error::InvalidSetting { field, reason } => Error::InvalidSetting { field: format!("{section}.{field}"), reason },
+            other => other,
+        }
+    }
+
     /// For `map_err` on reading an input the user named with `field` (a study key such as
     /// `data.data1.file`, or a flag such as `--params`): a file that cannot be read becomes an
     /// error naming the field and the path, and for a relative path the working directory it

@@ -10,7 +10,6 @@ use crate::error::Error;
 use crate::params::ParameterSet;
 use crate::problem::fitting::{FitParameter, FittingProblem, ModelSpec};
 use crate::problem::least_squares::{LeastSquares, LeastSquaresFit, LmSettings, levenberg_marquardt, sse};
-use crate::stats::noise_from_dense_differences;
 use crate::stats::{lag1, weighted_rms};
 
 /// Which points train and which validate.
@@ -168,17 +167,10 @@ fn decade_screen<P: LeastSquares>(problem: &P, x0: &[f64], screen: &[usize]) -> 
     (moved.then_some(best), 1 + trials.len())
 }
 
-/// Resolution (K) of a recorded temperature: the least noise it is credited with.
-const TEMPERATURE_RESOLUTION: f64 = 0.1;
-
-/// Weight (V/K) of a recorded temperature's residuals beside the voltage's: the noise of the
-/// voltage over that of the temperature (at least [`TEMPERATURE_RESOLUTION`]), so each
-/// counts as its likelihood does. `None` without a recorded temperature.
+/// Weight (V/K) of a recorded temperature's residuals beside the voltage's
+/// ([`crate::stats::noise::temperature_weight`]); `None` without a recorded temperature.
 pub fn temperature_weight(data: &Recording) -> Option<f64> {
-    let t = data.temperature.as_ref()?;
-    let noise_v = noise_from_dense_differences(&data.voltage, &data.time);
-    let noise_t = noise_from_dense_differences(t, &data.time).max(TEMPERATURE_RESOLUTION);
-    (noise_v > 0.0).then(|| noise_v / noise_t)
+    crate::stats::noise::temperature_weight(&data.voltage, data.temperature.as_ref()?, &data.time)
 }
 
 /// Halvings of the way back from a start that breaks the model toward one that runs.

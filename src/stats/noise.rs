@@ -33,6 +33,19 @@ pub fn noise_from_dense_differences(x: &[f64], t: &[f64]) -> f64 {
     noise_of(d)
 }
 
+/// Resolution (K) of a recorded temperature: the least noise it is credited with.
+const TEMPERATURE_RESOLUTION: f64 = 0.1;
+
+/// Weight (V/K) of a recorded temperature's residuals beside the voltage's: the noise of the
+/// voltage over that of the temperature (at least [`TEMPERATURE_RESOLUTION`]), both from
+/// [`noise_from_dense_differences`] over the times `t` (s), so each counts as its likelihood
+/// does. `None` when the voltage shows no noise.
+pub fn temperature_weight(voltage: &[f64], temperature: &[f64], t: &[f64]) -> Option<f64> {
+    let noise_v = noise_from_dense_differences(voltage, t);
+    let noise_t = noise_from_dense_differences(temperature, t).max(TEMPERATURE_RESOLUTION);
+    (noise_v > 0.0).then(|| noise_v / noise_t)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -228,9 +228,14 @@ impl FitStudy {
     /// else 0) and the notes of the recording's checks against the cell (a likely unit error
     /// is an error before any fit).
     pub fn experiment_problem(&self, k: usize, data: Option<&Path>) -> Result<(FittingProblem, usize, Vec<String>), Error> {
+        self.experiment_problem_on(self.cell.load()?, k, data)
+    }
+
+    /// [`experiment_problem`](Self::experiment_problem) on the parameter set `base` instead of
+    /// the study's cell (a parameterisation stage fits on the set the stages before left).
+    pub fn experiment_problem_on(&self, mut base: crate::params::ParameterSet, k: usize, data: Option<&Path>) -> Result<(FittingProblem, usize, Vec<String>), Error> {
         self.check_data_override(data)?;
         let d = &self.data[k];
-        let mut base = self.cell.load()?;
         if let Some(t) = d.temperature {
             base.set("thermal.ambient_temperature", t)?;
             base.set("thermal.initial_temperature", t)?;

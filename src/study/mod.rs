@@ -16,6 +16,7 @@ mod fit_data;
 pub mod fit_run;
 pub mod gitt;
 pub mod joint_fit;
+pub mod joint_stage;
 pub mod kinetics;
 pub mod landscape;
 pub mod limits;
