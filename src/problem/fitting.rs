@@ -177,6 +177,8 @@ pub struct FittingProblem {
     /// Weight (V/K) of the recorded temperature's residuals beside the voltage's in costs,
     /// when the temperature is fitted too.
     temperature_weight: Option<f64>,
+    /// Whether the voltage's residuals enter the costs (false: the temperature alone is fitted).
+    voltage_fitted: bool,
     /// Distinct output times (s, from the recording's start) and each point's output index.
     t_eval: Vec<f64>,
     output_of_point: Vec<usize>,
@@ -230,6 +232,7 @@ impl FittingProblem {
             protocol,
             pinned: Vec::new(),
             temperature_weight: None,
+            voltage_fitted: true,
             t_eval,
             output_of_point,
             pool: Mutex::new(Vec::new()),
@@ -257,6 +260,7 @@ impl FittingProblem {
             protocol: self.protocol.clone(),
             pinned,
             temperature_weight: self.temperature_weight,
+            voltage_fitted: self.voltage_fitted,
             t_eval: self.t_eval.clone(),
             output_of_point: self.output_of_point.clone(),
             pool: Mutex::new(Vec::new()),
@@ -330,6 +334,29 @@ impl FittingProblem {
         }
         self.temperature_weight = Some(weight);
         Ok(self)
+    }
+
+    /// Fits the recorded temperature alone (K residuals): the voltage drives the heat but its
+    /// residuals leave the costs (a thermal parameter fitted on an electrochemistry fitted
+    /// before). Needs a recorded temperature and a thermal model.
+    pub fn fitting_temperature_only(self) -> Result<Self, Error> {
+        let mut problem = self.fitting_temperature(1.0)?;
+        problem.voltage_fitted = false;
+        Ok(problem)
+    }
+
+    /// Residuals per recorded point in the costs: the voltage's, the temperature's, or both.
+    pub fn residuals_per_point(&self) -> usize {
+        usize::from(self.voltage_fitted) + usize::from(self.temperature_weight.is_some())
+    }
+
+    /// Residuals (in recording order) whose serial correlation the fit reports: the
+    /// voltage's `V_model - V_data` (V), or the temperature's (K) when it is fitted alone.
+    pub fn fitted_residuals(&self, outputs: &Simulated) -> Vec<f64> {
+        match (&self.data.temperature, self.voltage_fitted) {
+            (Some(recorded), false) => outputs.temperature.iter().zip(recorded).map(|(m, d)| m - d).collect(),
+            _ => self.residuals(&outputs.voltage),
+        }
     }
 
     /// Number of fitted model parameters.
@@ -553,10 +580,10 @@ impl FittingProblem {
     }
 
     /// Weighted cost residuals of `outputs`: `sqrt(w) (V_model - V_data)` at every recorded
-    /// point, then `sqrt(w) c (T_model - T_data)` when the temperature is fitted with weight
-    /// `c` (V/K).
+    /// point (unless the temperature is fitted alone), then `sqrt(w) c (T_model - T_data)` when
+    /// the temperature is fitted with weight `c` (V/K).
     pub fn weighted_residuals(&self, outputs: &Simulated) -> Vec<f64> {
-        let voltage = self.residuals(&outputs.voltage).into_iter().zip(&self.weights).map(|(r, w)| r * w.sqrt());
+        let voltage = self.residuals(&outputs.voltage).into_iter().zip(&self.weights).map(|(r, w)| r * w.sqrt()).filter(|_| self.voltage_fitted);
         let temperature = match (self.temperature_weight, &self.data.temperature) {
             (Some(c), Some(recorded)) => outputs.temperature.iter().zip(recorded).zip(&self.weights).map(|((m, d), w)| c * (m - d) * w.sqrt()).collect(),
             _ => Vec::new(),
@@ -603,5 +630,12 @@ mod tests {
         let k = 7;
         let expected = 0.01 * (outputs.temperature[k] - recorded[k]) * problem.weights[k].sqrt();
         assert!((r[20 + k] - expected).abs() < 1e-15, "{} vs {expected}", r[20 + k]);
+        assert_eq!(problem.residuals_per_point(), 2);
+        // Fitted alone: only the temperature's residuals (K), and they are the ones reported.
+        let alone = fit(thermal, Some(recorded.clone())).fitting_temperature_only().expect("temperature alone");
+        let r = alone.weighted_residuals(&outputs);
+        assert_eq!((r.len(), alone.residuals_per_point()), (20, 1));
+        assert!((r[k] - (outputs.temperature[k] - recorded[k]) * alone.weights[k].sqrt()).abs() < 1e-15);
+        assert_eq!(alone.fitted_residuals(&outputs)[k], outputs.temperature[k] - recorded[k]);
     }
 }

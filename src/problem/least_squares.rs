@@ -110,11 +110,11 @@ impl LeastSquares for FittingProblem {
     }
     fn counts(&self, run: &Self::Run) -> (usize, usize) {
         let points = self.weights.iter().filter(|w| **w > 0.0).count();
-        // A fitted temperature doubles the residuals.
-        (points, if run.temperature.is_empty() { points } else { 2 * points })
+        // A temperature fitted beside the voltage doubles the residuals.
+        (points, if run.temperature.is_empty() { points } else { self.residuals_per_point() * points })
     }
     fn lag1(&self, run: &Self::Run) -> f64 {
-        lag1(&self.residuals(&run.voltage), &self.weights)
+        lag1(&self.fitted_residuals(run), &self.weights)
     }
     fn curve(run: Self::Run) -> Vec<f64> {
         run.voltage

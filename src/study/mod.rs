@@ -30,6 +30,7 @@ pub mod simulate;
 pub mod sobol;
 pub mod pareto;
 pub mod sweep;
+pub mod thermal_stage;
 mod validate;
 mod warnings;
 pub use warnings::{OnBound, at_bound_warnings, named_on_bounds, on_bounds, truncation_warning, truncation_warning_with};

@@ -3,8 +3,9 @@
 //! pseudo-OCV of slow charge and discharge branches), `[balancing]` (stoichiometry windows and
 //! electrode capacities from that pseudo-OCV and the set's half-cell OCPs), `[pulses]`
 //! (resistance against state of charge), `[kinetics]` (rate constants or resistances fitted to
-//! a pulse), `[gitt]` (particle diffusivity against stoichiometry) and `[joint]` (several
-//! recordings refitted together at the end). One report, one JSON and each stage's tables
+//! a pulse), `[gitt]` (particle diffusivity against stoichiometry), `[thermal]` (heat
+//! transfer and capacity from a recorded temperature) and `[joint]` (several recordings
+//! refitted together at the end). One report, one JSON and each stage's tables
 //! and plots.
 
 use std::path::{Path, PathBuf};
@@ -33,6 +34,7 @@ pub struct ParameterisationStudy {
     pub pulses: Option<super::pulses::PulseSection>,
     pub kinetics: Option<super::kinetics::KineticsSection>,
     pub gitt: Option<super::gitt::GittSection>,
+    pub thermal: Option<super::thermal_stage::ThermalSection>,
     pub joint: Option<super::joint_stage::JointSection>,
     #[serde(default)]
     pub output: Output,
@@ -97,8 +99,8 @@ impl ParameterisationStudy {
     /// Checks every section before any work.
     pub fn validate(&self) -> Result<(), Error> {
         self.cell.load()?;
-        if self.ocv.is_none() && self.balancing.is_none() && self.pulses.is_none() && self.kinetics.is_none() && self.gitt.is_none() && self.joint.is_none() {
-            return Err(Error::InvalidSetting { field: "ocv".into(), reason: "the study has no stage: give at least one of [ocv], [balancing], [pulses], [kinetics], [gitt], [joint]".into() });
+        if self.ocv.is_none() && self.balancing.is_none() && self.pulses.is_none() && self.kinetics.is_none() && self.gitt.is_none() && self.thermal.is_none() && self.joint.is_none() {
+            return Err(Error::InvalidSetting { field: "ocv".into(), reason: "the study has no stage: give at least one of [ocv], [balancing], [pulses], [kinetics], [gitt], [thermal], [joint]".into() });
         }
         if let Some(o) = &self.ocv {
             o.validate()?;
@@ -115,6 +117,9 @@ impl ParameterisationStudy {
         if let Some(g) = &self.gitt {
             g.validate()?;
         }
+        if let Some(t) = &self.thermal {
+            t.validate(&self.cell.load()?)?;
+        }
         if let Some(j) = &self.joint {
             j.validate(&self.cell.load()?)?;
         }
@@ -123,7 +128,7 @@ impl ParameterisationStudy {
 
     /// Files the run reads: the study, the parameter set, the recordings.
     pub fn inputs(&self) -> Vec<&Path> {
-        let pulses = self.pulses.iter().map(|p| p.file.as_path()).chain(self.kinetics.iter().map(|k| k.file.as_path())).chain(self.gitt.iter().map(|g| g.file.as_path()));
+        let pulses = self.pulses.iter().map(|p| p.file.as_path()).chain(self.kinetics.iter().map(|k| k.file.as_path())).chain(self.gitt.iter().map(|g| g.file.as_path())).chain(self.thermal.iter().map(|t| t.file.as_path()));
         let recordings = self.ocv.iter().flat_map(|o| o.files()).chain(pulses).chain(self.joint.iter().flat_map(|j| j.files()));
         self.source.as_deref().into_iter().chain(self.cell.file()).chain(recordings).collect()
     }
@@ -159,6 +164,9 @@ pub fn run_parameterisation(study: &ParameterisationStudy) -> Result<Parameteris
     }
     if let Some(section) = &study.gitt {
         outputs.push(("gitt", super::gitt::run_gitt(section, &mut stages, &dir)?));
+    }
+    if let Some(section) = &study.thermal {
+        outputs.push(("thermal", super::thermal_stage::run_thermal(section, &mut stages, &dir)?));
     }
     if let Some(section) = &study.joint {
         outputs.push(("joint", super::joint_stage::run_joint_stage(section, &mut stages, &dir)?));

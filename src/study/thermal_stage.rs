@@ -1,0 +1,165 @@
+//! The `[thermal]` stage of a parameterisation study: thermal parameters (the heat transfer
+//! coefficient, a heat capacity) fitted to a recording's temperature beside its voltage, with
+//! the lumped thermal model on the set as the stages before left it (bounded
+//! Levenberg-Marquardt on plain simulations of the temperature alone: the voltage drives the
+//! heat, its misfit is the electrochemistry's, reported beside);
+//! `fit_temperature_thermal.svg`, `fit_voltage_thermal.svg`, `fit_residual_thermal.svg`.
+
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+use serde::{Deserialize, Serialize};
+
+use super::ReportSection;
+use super::parameterise::{StageOutput, Stages};
+use crate::data::CsvFormat;
+use crate::data::cycler::read_checked;
+use crate::error::Error;
+use crate::problem::fitting::{FitParameter, FittingProblem, ModelSpec};
+use crate::problem::least_squares::{LmSettings, levenberg_marquardt};
+use crate::report::plot::{Series, line_plot};
+
+/// `[thermal]`: the recording (with its temperature), the thermal model and the parameters.
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct ThermalSection {
+    /// Recording with a temperature column (a discharge that heats the cell, and the rest after).
+    pub file: PathBuf,
+    #[serde(default)]
+    pub format: CsvFormat,
+    /// The model, with `submodels = { thermal = true }`.
+    pub model: ModelSpec,
+    /// The parameters fitted (`path`, `initial`, `lower`, `upper`, `log`), as in a fit study.
+    pub parameters: Vec<FitParameter>,
+    /// Initial state of charge (-); when absent the model starts at rest at the first recorded
+    /// voltage (the recording must then begin at rest).
+    #[serde(default)]
+    pub initial_soc: Option<f64>,
+    /// Ambient and initial temperature (K); the first recorded temperature when absent.
+    #[serde(default)]
+    pub temperature: Option<f64>,
+    /// Put the fitted values into the parameter set for the later stages (default true); a
+    /// value on a bound of its search range is never put in.
+    #[serde(default = "yes")]
+    pub apply: bool,
+}
+
+fn yes() -> bool {
+    true
+}
+
+impl ThermalSection {
+    pub(crate) fn validate(&self, set: &crate::params::ParameterSet) -> Result<(), Error> {
+        if !self.model.submodels.thermal {
+            return Err(Error::InvalidSetting { field: "thermal.model.submodels.thermal".into(), reason: "the thermal stage fits the temperature: set submodels = { thermal = true }".into() });
+        }
+        if self.parameters.is_empty() {
+            return Err(Error::InvalidSetting { field: "thermal.parameters".into(), reason: "at least one is needed".into() });
+        }
+        for p in &self.parameters {
+            p.validate(set).map_err(|e| e.within("thermal"))?;
+        }
+        if let Some(soc) = self.initial_soc.filter(|s| !(0.0..=1.0).contains(s)) {
+            return Err(Error::invalid("thermal.initial_soc", soc, "must lie in [0, 1]"));
+        }
+        if let Some(t) = self.temperature {
+            crate::params::check::temperature("thermal.temperature", t)?;
+        }
+        Ok(())
+    }
+}
+
+/// Runs `[thermal]` with the parameter set as the stages before left it.
+pub fn run_thermal(section: &ThermalSection, stages: &mut Stages, dir: &Path) -> Result<StageOutput, Error> {
+    let (data, mut notes) = read_checked(&section.file, &section.format, &stages.parameters).map_err(|e| e.input("thermal.file"))?;
+    let rec = data.recording;
+    let recorded = rec.temperature.clone().ok_or_else(|| Error::InvalidSetting {
+        field: "thermal.file".into(),
+        reason: format!("`{}` has no temperature column to fit", section.file.display()),
+    })?;
+    let mut base = stages.parameters.clone();
+    let ambient = section.temperature.unwrap_or(recorded[0]);
+    base.set("thermal.ambient_temperature", ambient)?;
+    base.set("thermal.initial_temperature", ambient)?;
+    if let Some(soc) = section.initial_soc {
+        crate::params::set_initial_soc_from(&mut base, soc, "thermal.initial_soc")?;
+    }
+    let mut problem = FittingProblem::new(section.model, base, section.parameters.clone(), rec)?;
+    if section.initial_soc.is_none() {
+        problem = problem.starting_at_rest().map_err(|e| e.within("thermal"))?;
+    }
+    let problem = problem.fitting_temperature_only()?;
+    let x0 = problem.initial();
+    let initial = problem.simulate_outputs(&x0).map_err(|why| problem.start_failure(&x0, "thermal.file", why))?;
+    let fit = levenberg_marquardt(&problem, &x0, LmSettings::default())?;
+    let fitted = problem.simulate_outputs(&fit.x)?;
+    let names: Vec<String> = section.parameters.iter().map(|p| p.path.clone()).collect();
+    let (lower, upper): (Vec<f64>, Vec<f64>) = section.parameters.iter().map(|p| (p.lower, p.upper)).unzip();
+    let mut warnings = super::at_bound_warnings("the thermal fit", &names, &fit.x, &lower, &upper);
+    let at_bound = super::named_on_bounds(&names, &fit.x, &lower, &upper);
+    if !fit.converged {
+        warnings.push(format!("the thermal fit stopped after {} iterations before converging: the values are the best found so far", fit.iterations));
+    }
+    let mut files: Vec<PathBuf> = super::fit::fit_plots(dir, "thermal", "_thermal", &problem, &initial.voltage, &fitted.voltage)?;
+    let temperature_plot = dir.join("fit_temperature_thermal.svg");
+    let t = &problem.data.time;
+    line_plot(
+        &temperature_plot,
+        "thermal: temperature",
+        "time (s)",
+        "temperature (K)",
+        &[
+            Series { label: "data".into(), x: t, y: &recorded },
+            Series { label: "initial".into(), x: t, y: &initial.temperature },
+            Series { label: "fitted".into(), x: t, y: &fitted.temperature },
+        ],
+    )?;
+    files.push(temperature_plot);
+    let rms_v = |s: &crate::problem::fitting::Simulated| crate::stats::weighted_rms(&problem.residuals(&s.voltage), &problem.weights);
+    let rms_t = |s: &crate::problem::fitting::Simulated| {
+        let r: Vec<f64> = s.temperature.iter().zip(&recorded).map(|(m, d)| m - d).collect();
+        crate::stats::weighted_rms(&r, &problem.weights)
+    };
+    let rise = recorded.iter().fold(f64::NEG_INFINITY, |a, b| a.max(*b)) - recorded[0];
+    let mut md = String::from("\n## Thermal (`[thermal]`)\n\n");
+    let _ = writeln!(
+        md,
+        "`{}` (temperature rise {rise:.2} K over the first recorded {:.2} K): the {} model with the lumped thermal balance at ambient {ambient:.2} K, {}, the temperature fitted alone (the voltage drives the heat) by bounded Levenberg-Marquardt on plain simulations with the parameter set as the stages before left it: temperature RMSE {:.3} K (initial {:.3} K), voltage RMSE {:.3} mV (initial {:.3} mV), {} simulations, {}converged.\n",
+        section.file.display(),
+        recorded[0],
+        section.model.kind,
+        match section.initial_soc {
+            Some(s) => format!("from state of charge {s}"),
+            None => "from rest at the first recorded voltage".into(),
+        },
+        rms_t(&fitted),
+        rms_t(&initial),
+        1e3 * rms_v(&fitted),
+        1e3 * rms_v(&initial),
+        fit.simulations,
+        if fit.converged { "" } else { "not " }
+    );
+    md.push_str("| parameter | fitted | std. error | before |\n|---|---|---|---|\n");
+    let mut fitted_text = Vec::new();
+    for (k, name) in names.iter().enumerate() {
+        let before = stages.parameters.get(name)?;
+        let _ = writeln!(md, "| {name} | {:.5e} | {:.2e} | {before:.5e} |", fit.x[k], fit.std_errors[k]);
+        fitted_text.push(format!("{name} = {:.4e} ± {:.1e}", fit.x[k], fit.std_errors[k]));
+    }
+    let summary = format!("thermal: {}; temperature RMSE {:.3} K, voltage RMSE {:.3} mV", fitted_text.join(", "), rms_t(&fitted), 1e3 * rms_v(&fitted));
+    if section.apply {
+        let applied: Vec<&String> = names.iter().filter(|n| !at_bound.iter().any(|b| &b.name == *n)).collect();
+        for name in &applied {
+            let k = names.iter().position(|n| n == *name).expect("a fitted name");
+            stages.parameters.set(name, fit.x[k])?;
+        }
+        if !applied.is_empty() {
+            notes.push(format!("the fitted values of {} are used from here on (thermal.apply = true)", applied.iter().map(|s| s.as_str()).collect::<Vec<_>>().join(", ")));
+        }
+        if applied.len() < names.len() {
+            notes.push("a thermal parameter that ended on a bound of its range kept the value before the stage".into());
+        }
+    }
+    let json = serde_json::json!({ "fit": fit, "temperature_rmse_k": rms_t(&fitted), "initial_temperature_rmse_k": rms_t(&initial), "ambient_k": ambient });
+    Ok(StageOutput { report: ReportSection { files, section: md, warnings }, summary, notes, json })
+}
