@@ -1,10 +1,7 @@
 //! Raw cycler exports: detection of the vendor from the header, one reader per vendor
-//! (Basytec, BioLogic, Maccor, Neware, Arbin; this crate's own CSV as `Native`), conversion
-//! to a [`Recording`] (s, A discharge positive, V, K) with the cycler's step numbers, and the
-//! split into steps ([`steps`]).
-//!
-//! Parquet files (PyProBE's processed format) are not read: the `parquet` crate would bring
-//! the Arrow stack into every build for one file type; convert them to CSV first.
+//! (Basytec, BioLogic, Maccor, Neware, Arbin, PyProBE's processed tables as Parquet or CSV;
+//! this crate's own CSV as `Native`), conversion to a [`Recording`] (s, A discharge positive,
+//! V, K) with the cycler's step numbers, and the split into steps ([`steps`]).
 
 mod arbin;
 mod basytec;
@@ -12,6 +9,8 @@ mod biologic;
 mod inspect;
 mod maccor;
 mod neware;
+mod parquet_table;
+mod pyprobe;
 mod steps;
 mod table;
 
@@ -36,6 +35,8 @@ pub enum CyclerFormat {
     Maccor,
     Neware,
     Arbin,
+    /// PyProBE's processed table (`Time [s]`, `Current [A]`, ...), as Parquet or CSV.
+    PyProbe,
 }
 
 impl std::fmt::Display for CyclerFormat {
@@ -51,8 +52,9 @@ type HeaderFn = fn(&[&str]) -> Option<usize>;
 type LayoutFn = fn(&[String]) -> Result<Layout, String>;
 
 /// Vendors in the order they are tried (the most specific first).
-const VENDORS: [(CyclerFormat, HeaderFn, LayoutFn); 6] = [
+const VENDORS: [(CyclerFormat, HeaderFn, LayoutFn); 7] = [
     (CyclerFormat::Native, native_header, native_layout),
+    (CyclerFormat::PyProbe, pyprobe::header, pyprobe::layout),
     (CyclerFormat::Basytec, basytec::header, basytec::layout),
     (CyclerFormat::BioLogic, biologic::header, biologic::layout),
     (CyclerFormat::Arbin, arbin::header, arbin::layout),
@@ -129,7 +131,7 @@ pub fn read_str(name: &str, text: &str) -> Result<CyclerData, Error> {
             let separator = [';', '\t'].into_iter().find(|&c| ["time_s", "current_A", "voltage_V"].iter().all(|n| first.split(c).any(|f| f.trim().trim_matches('"') == *n)));
             let hint = separator.map_or(String::new(), |c| format!("; its columns are separated by {c:?}: save it with commas (and `.` decimals)"));
             parse_err(format!(
-                "not a known cycler export: no Basytec, BioLogic, Maccor, Neware, Arbin or time_s,current_A,voltage_V header in the first {HEADER_SEARCH_LINES} lines (first line: `{}`){hint}",
+                "not a known cycler export: no Basytec, BioLogic, Maccor, Neware, Arbin, PyProBE or time_s,current_A,voltage_V header in the first {HEADER_SEARCH_LINES} lines (first line: `{}`){hint}",
                 first.chars().take(80).collect::<String>()
             ))
         })?;
@@ -140,10 +142,20 @@ pub fn read_str(name: &str, text: &str) -> Result<CyclerData, Error> {
 }
 
 /// Reads a cycler export (any encoding; bytes that are not UTF-8, as Latin-1 degree signs,
-/// are replaced).
+/// are replaced), or a Parquet file.
 pub fn read(path: &Path) -> Result<CyclerData, Error> {
     let bytes = std::fs::read(path).map_err(Error::io(path))?;
-    read_str(&path.display().to_string(), &String::from_utf8_lossy(&bytes))
+    read_bytes(path, &bytes)
+}
+
+/// [`read`] of the file's bytes: a Parquet file's rows as text, else the bytes as text.
+fn read_bytes(path: &Path, bytes: &[u8]) -> Result<CyclerData, Error> {
+    let name = path.display().to_string();
+    if parquet_table::is_parquet(bytes) {
+        let text = parquet_table::to_text(path).map_err(|message| Error::Parse { path: name.clone(), message })?;
+        return read_str(&name, &text);
+    }
+    read_str(&name, &String::from_utf8_lossy(bytes))
 }
 
 /// The file `path` as a fit, a diagnosis and `data inspect` read it: with `format` when it is
@@ -159,8 +171,8 @@ pub fn read_with(path: &Path, format: &CsvFormat) -> Result<CyclerData, Error> {
     let text = String::from_utf8_lossy(&bytes);
     match detect(text.strip_prefix('\u{feff}').unwrap_or(&text)) {
         Some(CyclerFormat::Native) => Ok(plain(Recording::from_csv_with(path, format)?)),
-        // A vendor's reader, or the error naming the vendors and the first line.
-        _ => read_str(&path.display().to_string(), &text),
+        // A vendor's reader (or Parquet), or the error naming the vendors and the first line.
+        _ => read_bytes(path, &bytes),
     }
 }
 
