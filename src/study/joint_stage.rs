@@ -136,21 +136,8 @@ pub fn run_joint_stage(section: &JointSection, stages: &mut Stages, dir: &Path) 
     let summary = format!("joint: {}; RMSE (mV) {}", fitted.join(", "), rmse.join(", "));
     let mut notes: Vec<String> = checks;
     if section.apply {
-        let mut applied = Vec::new();
-        for (k, p) in section.parameters.iter().enumerate() {
-            if at_bound.iter().any(|b| b.name == p.path) {
-                continue;
-            }
-            stages.parameters.set(&p.path, r.x[k])?;
-            applied.push(p.path.clone());
-        }
-        let kept: Vec<&str> = at_bound.iter().filter(|b| section.parameters.iter().any(|p| p.path == b.name)).map(|b| b.name.as_str()).collect();
-        if !applied.is_empty() {
-            notes.push(format!("the joint refit's values of {} are in the parameter set from here on (joint.apply = true)", applied.join(", ")));
-        }
-        if !kept.is_empty() {
-            notes.push(format!("{} ended on a bound of the search range in the joint refit and kept the value before it", kept.join(", ")));
-        }
+        let names: Vec<String> = section.parameters.iter().map(|p| p.path.clone()).collect();
+        notes.extend(stages.apply_fitted("joint", &names, &r.x[..names.len()], &at_bound)?);
     }
     let json = serde_json::to_value(&fit).expect("serialisable");
     Ok(StageOutput { report: ReportSection { files, section: md, warnings }, summary, notes, json })

@@ -71,6 +71,7 @@ pub fn run_kinetics(section: &KineticsSection, stages: &mut Stages, dir: &Path) 
     let names: Vec<String> = section.parameters.iter().map(|p| p.path.clone()).collect();
     let (lower, upper): (Vec<f64>, Vec<f64>) = section.parameters.iter().map(|p| (p.lower, p.upper)).unzip();
     let mut warnings = super::at_bound_warnings("the kinetics fit", &names, &fit.x, &lower, &upper);
+    let at_bound = super::named_on_bounds(&names, &fit.x, &lower, &upper);
     if !fit.converged {
         warnings.push(format!("the kinetics fit stopped after {} iterations before converging: the values are the best found so far", fit.iterations));
     }
@@ -100,10 +101,7 @@ pub fn run_kinetics(section: &KineticsSection, stages: &mut Stages, dir: &Path) 
     }
     let _ = write!(summary, ", RMSE {:.3} mV", 1e3 * rmse(&fit.voltage));
     if section.apply {
-        for (name, v) in names.iter().zip(&fit.x) {
-            stages.parameters.set(name, *v)?;
-        }
-        notes.push(format!("the fitted values of {} are used from here on (kinetics.apply = true)", names.join(", ")));
+        notes.extend(stages.apply_fitted("kinetics", &names, &fit.x, &at_bound)?);
     }
     Ok(StageOutput { report: ReportSection { files, section: md, warnings }, summary, notes, json: serde_json::to_value(&fit).expect("serialisable") })
 }

@@ -50,6 +50,31 @@ pub struct Stages {
     pub window_capacity: Option<f64>,
 }
 
+impl Stages {
+    /// Puts a stage's fitted values (`names`, `values`) into the parameter set, except those
+    /// on a bound of their search range (`at_bound`: no estimate), which keep the value
+    /// before the stage; returns the notes that say which went in and which did not.
+    pub fn apply_fitted(&mut self, stage: &str, names: &[String], values: &[f64], at_bound: &[super::OnBound]) -> Result<Vec<String>, Error> {
+        let (mut applied, mut kept) = (Vec::new(), Vec::new());
+        for (name, v) in names.iter().zip(values) {
+            if at_bound.iter().any(|b| &b.name == name) {
+                kept.push(name.as_str());
+            } else {
+                self.parameters.set(name, *v)?;
+                applied.push(name.as_str());
+            }
+        }
+        let mut notes = Vec::new();
+        if !applied.is_empty() {
+            notes.push(format!("the fitted values of {} are used from here on ({stage}.apply = true)", applied.join(", ")));
+        }
+        if !kept.is_empty() {
+            notes.push(format!("{} ended on a bound of the search range in [{stage}] and kept the value before it", kept.join(", ")));
+        }
+        Ok(notes)
+    }
+}
+
 /// What a parameterisation run produced.
 pub struct ParameterisationOutcome {
     pub files: Vec<PathBuf>,
@@ -191,4 +216,21 @@ pub fn run_parameterisation(study: &ParameterisationStudy) -> Result<Parameteris
     write_output(&dir, "report.md", md, &mut files)?;
     let files = out.commit(&files)?;
     Ok(ParameterisationOutcome { files, summary, notes, warnings, stages: stages_json, parameters: stages.parameters })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A fitted value on a bound of its range stays out of the set; the others go in.
+    #[test]
+    fn a_value_on_a_bound_keeps_the_one_before() {
+        let mut stages = Stages { parameters: crate::params::chen2020(), ocv: None, window_capacity: None };
+        let names = vec!["negative.diffusivity".to_string(), "positive.rate_constant".to_string()];
+        let on_bound = vec![super::super::OnBound { name: names[1].clone(), value: 1e-4, side: "upper" }];
+        let notes = stages.apply_fitted("kinetics", &names, &[2e-14, 1e-4], &on_bound).unwrap();
+        assert_eq!(stages.parameters.get("negative.diffusivity").unwrap(), 2e-14);
+        assert_eq!(stages.parameters.get("positive.rate_constant").unwrap(), crate::params::chen2020().get("positive.rate_constant").unwrap());
+        assert!(notes[0].contains("negative.diffusivity") && notes[1].contains("positive.rate_constant") && notes[1].contains("kept"), "{notes:?}");
+    }
 }

@@ -148,17 +148,7 @@ pub fn run_thermal(section: &ThermalSection, stages: &mut Stages, dir: &Path) ->
     }
     let summary = format!("thermal: {}; temperature RMSE {:.3} K, voltage RMSE {:.3} mV", fitted_text.join(", "), rms_t(&fitted), 1e3 * rms_v(&fitted));
     if section.apply {
-        let applied: Vec<&String> = names.iter().filter(|n| !at_bound.iter().any(|b| &b.name == *n)).collect();
-        for name in &applied {
-            let k = names.iter().position(|n| n == *name).expect("a fitted name");
-            stages.parameters.set(name, fit.x[k])?;
-        }
-        if !applied.is_empty() {
-            notes.push(format!("the fitted values of {} are used from here on (thermal.apply = true)", applied.iter().map(|s| s.as_str()).collect::<Vec<_>>().join(", ")));
-        }
-        if applied.len() < names.len() {
-            notes.push("a thermal parameter that ended on a bound of its range kept the value before the stage".into());
-        }
+        notes.extend(stages.apply_fitted("thermal", &names, &fit.x, &at_bound)?);
     }
     let json = serde_json::json!({ "fit": fit, "temperature_rmse_k": rms_t(&fitted), "initial_temperature_rmse_k": rms_t(&initial), "ambient_k": ambient });
     Ok(StageOutput { report: ReportSection { files, section: md, warnings }, summary, notes, json })
