@@ -99,8 +99,9 @@ pub(crate) enum Command {
         /// Cycling study file, e.g. examples/cycle_sei_chen2020.toml.
         study: PathBuf,
     },
-    /// Run a parameterisation study: pseudo-OCV, electrode balancing, pulse resistance and
-    /// GITT diffusivity as stages, each feeding the next, with one report.
+    /// Run a parameterisation study: pseudo-OCV, electrode balancing, pulse resistance,
+    /// kinetics, GITT diffusivity, thermal and a joint refit as stages, each feeding the next,
+    /// with one report.
     Parameterise {
         #[command(flatten)]
         overrides: Overrides,
