@@ -169,7 +169,7 @@ pub(crate) enum Command {
         #[arg(long, default_value = "spm")]
         model: ModelKind,
         /// Recording CSV with time_s, current_A (discharge positive), voltage_V[, temperature_K],
-        /// or a raw Basytec, BioLogic, Maccor, Neware or Arbin export (detected).
+        /// or a raw Basytec, BioLogic, Maccor, Neware or Arbin export, or PyProBE Parquet (detected).
         #[arg(long)]
         data: PathBuf,
         /// Parameter-set file (default: embedded Chen 2020).
@@ -229,7 +229,8 @@ pub(crate) enum DataCommand {
     Inspect {
         #[command(flatten)]
         overrides: Overrides,
-        /// A raw cycler export (Basytec, BioLogic, Maccor, Neware, Arbin) or a recording CSV.
+        /// A raw cycler export (Basytec, BioLogic, Maccor, Neware, Arbin), PyProBE Parquet or
+        /// a recording CSV.
         file: PathBuf,
         /// The cell the recording is checked against: parameter-set file (default: embedded
         /// Chen 2020).
