@@ -335,11 +335,7 @@ pub(crate) fn single_fit_into(study: &FitStudy, data: Option<&Path>, dir: &Path)
     let initial_rmse = crate::stats::weighted_rms(&problem.residuals(&initial_voltage), &problem.weights);
     let result = fit(&problem, study.cost, &method, options)?;
     let notes: Vec<String> = study.noise_note(data).into_iter().chain(checks).collect();
-    let names: Vec<String> = problem.parameters.iter().map(|p| p.path.clone()).collect();
-    let lower: Vec<f64> = problem.parameters.iter().map(|p| p.lower).collect();
-    let upper: Vec<f64> = problem.parameters.iter().map(|p| p.upper).collect();
-    let mut warnings = super::at_bound_warnings("the fit", &names, &result.x, &lower, &upper);
-    let at_bound = super::named_on_bounds(&names, &result.x, &lower, &upper);
+    let (at_bound, mut warnings) = super::fitted_on_bounds("the fit", &problem.parameters, &result.x);
     warnings.extend(super::truncation_warning("the fit", &result.stop, result.iterations, result.evaluations));
     let points = problem.weights.iter().filter(|w| **w > 0.0).count();
     if points < problem.dim() + MIN_DEGREES_OF_FREEDOM {

@@ -45,12 +45,8 @@ pub(crate) struct JointRun {
 pub(crate) fn run_joint(study: &FitStudy, problem: &JointProblem, data: Option<&Path>, dir: &Path, suffix: &str) -> Result<JointRun, Error> {
     let (method, options) = study.optimiser()?;
     let fit = fit_joint(problem, study.cost, &method, options)?;
-    let names: Vec<String> = problem.parameters.iter().map(|p| p.path.clone()).collect();
-    let lower: Vec<f64> = problem.parameters.iter().map(|p| p.lower).collect();
-    let upper: Vec<f64> = problem.parameters.iter().map(|p| p.upper).collect();
     let r = &fit.result;
-    let mut warnings = super::at_bound_warnings("the joint fit", &names, &r.x, &lower, &upper);
-    let at_bound = super::named_on_bounds(&names, &r.x, &lower, &upper);
+    let (at_bound, mut warnings) = super::fitted_on_bounds("the joint fit", &problem.parameters, &r.x);
     warnings.extend(super::truncation_warning("the joint fit", &r.stop, r.iterations, r.evaluations));
     let mut files = Vec::new();
     for (e, ef) in problem.experiments.iter().zip(&fit.experiments) {

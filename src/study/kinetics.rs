@@ -69,12 +69,8 @@ pub fn run_kinetics(section: &KineticsSection, stages: &mut Stages, dir: &Path) 
     let initial = problem.simulate(&problem.initial())?;
     let fit = levenberg_marquardt(&problem, &problem.initial(), LmSettings::default())?;
     let names: Vec<String> = section.parameters.iter().map(|p| p.path.clone()).collect();
-    let (lower, upper): (Vec<f64>, Vec<f64>) = section.parameters.iter().map(|p| (p.lower, p.upper)).unzip();
-    let mut warnings = super::at_bound_warnings("the kinetics fit", &names, &fit.x, &lower, &upper);
-    let at_bound = super::named_on_bounds(&names, &fit.x, &lower, &upper);
-    if !fit.converged {
-        warnings.push(format!("the kinetics fit stopped after {} iterations before converging: the values are the best found so far", fit.iterations));
-    }
+    let (at_bound, mut warnings) = super::fitted_on_bounds("the kinetics fit", &section.parameters, &fit.x);
+    warnings.extend(super::unconverged_warning("the kinetics fit", &fit));
     let files: Vec<PathBuf> = super::fit::fit_plots(dir, "kinetics", "_kinetics", &problem, &initial, &fit.voltage)?;
     let rmse = |v: &[f64]| crate::stats::weighted_rms(&problem.residuals(v), &problem.weights);
     let mut md = String::from("\n## Kinetics (`[kinetics]`)\n\n");

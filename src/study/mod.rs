@@ -33,7 +33,7 @@ pub mod sweep;
 pub mod thermal_stage;
 mod validate;
 mod warnings;
-pub use warnings::{OnBound, at_bound_warnings, named_on_bounds, on_bounds, truncation_warning, truncation_warning_with};
+pub use warnings::{OnBound, at_bound_warnings, fitted_on_bounds, named_on_bounds, on_bounds, truncation_warning, truncation_warning_with, unconverged_warning};
 
 
 /// What an optional section of a fit report (profiles, experiment design, Sobol' indices)

@@ -123,7 +123,7 @@ impl ParameterisationStudy {
 
     /// Checks every section before any work.
     pub fn validate(&self) -> Result<(), Error> {
-        self.cell.load()?;
+        let cell = self.cell.load()?;
         if self.ocv.is_none() && self.balancing.is_none() && self.pulses.is_none() && self.kinetics.is_none() && self.gitt.is_none() && self.thermal.is_none() && self.joint.is_none() {
             return Err(Error::InvalidSetting { field: "ocv".into(), reason: "the study has no stage: give at least one of [ocv], [balancing], [pulses], [kinetics], [gitt], [thermal], [joint]".into() });
         }
@@ -143,10 +143,10 @@ impl ParameterisationStudy {
             g.validate()?;
         }
         if let Some(t) = &self.thermal {
-            t.validate(&self.cell.load()?)?;
+            t.validate(&cell)?;
         }
         if let Some(j) = &self.joint {
-            j.validate(&self.cell.load()?)?;
+            j.validate(&cell)?;
         }
         Ok(())
     }

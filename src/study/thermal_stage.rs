@@ -1,8 +1,8 @@
 //! The `[thermal]` stage of a parameterisation study: thermal parameters (the heat transfer
-//! coefficient, a heat capacity) fitted to a recording's temperature beside its voltage, with
-//! the lumped thermal model on the set as the stages before left it (bounded
-//! Levenberg-Marquardt on plain simulations of the temperature alone: the voltage drives the
-//! heat, its misfit is the electrochemistry's, reported beside);
+//! coefficient, a heat capacity) fitted to a recording's temperature alone, with the lumped
+//! thermal model on the set as the stages before left it (bounded Levenberg-Marquardt on plain
+//! simulations: the voltage drives the heat, its misfit is the electrochemistry's and is
+//! reported beside, not fitted);
 //! `fit_temperature_thermal.svg`, `fit_voltage_thermal.svg`, `fit_residual_thermal.svg`.
 
 use std::fmt::Write as _;
@@ -94,12 +94,8 @@ pub fn run_thermal(section: &ThermalSection, stages: &mut Stages, dir: &Path) ->
     let fit = levenberg_marquardt(&problem, &x0, LmSettings::default())?;
     let fitted = problem.simulate_outputs(&fit.x)?;
     let names: Vec<String> = section.parameters.iter().map(|p| p.path.clone()).collect();
-    let (lower, upper): (Vec<f64>, Vec<f64>) = section.parameters.iter().map(|p| (p.lower, p.upper)).unzip();
-    let mut warnings = super::at_bound_warnings("the thermal fit", &names, &fit.x, &lower, &upper);
-    let at_bound = super::named_on_bounds(&names, &fit.x, &lower, &upper);
-    if !fit.converged {
-        warnings.push(format!("the thermal fit stopped after {} iterations before converging: the values are the best found so far", fit.iterations));
-    }
+    let (at_bound, mut warnings) = super::fitted_on_bounds("the thermal fit", &section.parameters, &fit.x);
+    warnings.extend(super::unconverged_warning("the thermal fit", &fit));
     let mut files: Vec<PathBuf> = super::fit::fit_plots(dir, "thermal", "_thermal", &problem, &initial.voltage, &fitted.voltage)?;
     let temperature_plot = dir.join("fit_temperature_thermal.svg");
     let t = &problem.data.time;
@@ -115,11 +111,10 @@ pub fn run_thermal(section: &ThermalSection, stages: &mut Stages, dir: &Path) ->
         ],
     )?;
     files.push(temperature_plot);
-    let rms_v = |s: &crate::problem::fitting::Simulated| crate::stats::weighted_rms(&problem.residuals(&s.voltage), &problem.weights);
-    let rms_t = |s: &crate::problem::fitting::Simulated| {
-        let r: Vec<f64> = s.temperature.iter().zip(&recorded).map(|(m, d)| m - d).collect();
-        crate::stats::weighted_rms(&r, &problem.weights)
-    };
+    // RMSE of the voltage (V) and of the fitted temperature (K), initial and fitted.
+    let rms = |r: Vec<f64>| crate::stats::weighted_rms(&r, &problem.weights);
+    let (v0, v1) = (rms(problem.residuals(&initial.voltage)), rms(problem.residuals(&fitted.voltage)));
+    let (t0, t1) = (rms(problem.fitted_residuals(&initial)), rms(problem.fitted_residuals(&fitted)));
     let rise = recorded.iter().fold(f64::NEG_INFINITY, |a, b| a.max(*b)) - recorded[0];
     let mut md = String::from("\n## Thermal (`[thermal]`)\n\n");
     let _ = writeln!(
@@ -132,10 +127,10 @@ pub fn run_thermal(section: &ThermalSection, stages: &mut Stages, dir: &Path) ->
             Some(s) => format!("from state of charge {s}"),
             None => "from rest at the first recorded voltage".into(),
         },
-        rms_t(&fitted),
-        rms_t(&initial),
-        1e3 * rms_v(&fitted),
-        1e3 * rms_v(&initial),
+        t1,
+        t0,
+        1e3 * v1,
+        1e3 * v0,
         fit.simulations,
         if fit.converged { "" } else { "not " }
     );
@@ -146,10 +141,10 @@ pub fn run_thermal(section: &ThermalSection, stages: &mut Stages, dir: &Path) ->
         let _ = writeln!(md, "| {name} | {:.5e} | {:.2e} | {before:.5e} |", fit.x[k], fit.std_errors[k]);
         fitted_text.push(format!("{name} = {:.4e} ± {:.1e}", fit.x[k], fit.std_errors[k]));
     }
-    let summary = format!("thermal: {}; temperature RMSE {:.3} K, voltage RMSE {:.3} mV", fitted_text.join(", "), rms_t(&fitted), 1e3 * rms_v(&fitted));
+    let summary = format!("thermal: {}; temperature RMSE {t1:.3} K, voltage RMSE {:.3} mV", fitted_text.join(", "), 1e3 * v1);
     if section.apply {
         notes.extend(stages.apply_fitted("thermal", &names, &fit.x, &at_bound)?);
     }
-    let json = serde_json::json!({ "fit": fit, "temperature_rmse_k": rms_t(&fitted), "initial_temperature_rmse_k": rms_t(&initial), "ambient_k": ambient });
+    let json = serde_json::json!({ "fit": fit, "temperature_rmse_k": t1, "initial_temperature_rmse_k": t0, "ambient_k": ambient });
     Ok(StageOutput { report: ReportSection { files, section: md, warnings }, summary, notes, json })
 }

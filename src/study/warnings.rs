@@ -40,10 +40,27 @@ pub fn named_on_bounds(names: &[String], x: &[f64], lower: &[f64], upper: &[f64]
 
 /// One warning per value of `x` on a bound ([`on_bounds`]), naming it.
 pub fn at_bound_warnings(what: &str, names: &[String], x: &[f64], lower: &[f64], upper: &[f64]) -> Vec<String> {
-    named_on_bounds(names, x, lower, upper)
-        .into_iter()
-        .map(|b| format!("{what} has {b}; the best value may lie outside the searched range"))
-        .collect()
+    named_on_bounds(names, x, lower, upper).iter().map(|b| bound_warning(what, b)).collect()
+}
+
+/// The fitted `parameters`' values in `x` that ended on a bound of their search range, and one
+/// warning per value ([`at_bound_warnings`]) saying so.
+pub fn fitted_on_bounds(what: &str, parameters: &[crate::problem::fitting::FitParameter], x: &[f64]) -> (Vec<OnBound>, Vec<String>) {
+    let names: Vec<String> = parameters.iter().map(|p| p.path.clone()).collect();
+    let (lower, upper): (Vec<f64>, Vec<f64>) = parameters.iter().map(|p| (p.lower, p.upper)).unzip();
+    let on_bound = named_on_bounds(&names, x, &lower, &upper);
+    let warnings = on_bound.iter().map(|b| bound_warning(what, b)).collect();
+    (on_bound, warnings)
+}
+
+/// The warning of `what` ending with `b` on a bound.
+fn bound_warning(what: &str, b: &OnBound) -> String {
+    format!("{what} has {b}; the best value may lie outside the searched range")
+}
+
+/// A warning when a Levenberg-Marquardt fit stopped on its iteration cap before converging.
+pub fn unconverged_warning(what: &str, fit: &crate::problem::least_squares::LeastSquaresFit) -> Option<String> {
+    (!fit.converged).then(|| format!("{what} stopped after {} iterations before converging: the values are the best found so far", fit.iterations))
 }
 
 /// A warning when an optimiser stopped on its iteration or evaluation cap rather than on
