@@ -210,6 +210,11 @@ pub trait Model: Send + Sync {
     fn plating_margin(&self, _y: &[f64], _current: f64) -> Option<f64> {
         None
     }
+    /// Indices of the states that only integrate an ageing rate (SEI, plated lithium, lost
+    /// active material): see [`crate::solver::Dae::accumulating_states`].
+    fn accumulating_states(&self) -> Vec<usize> {
+        Vec::new()
+    }
     /// Indices of the states that [`Model::voltage`] and [`Model::temperature`] read: the
     /// energy quadrature interpolates only these (all states unless a model says fewer).
     fn output_states(&self) -> Vec<usize> {

@@ -129,6 +129,10 @@ impl Model for Spm {
         &self.scale
     }
 
+    fn accumulating_states(&self) -> Vec<usize> {
+        self.sei.indices().chain(self.lam.indices()).chain(self.plating.indices()).collect()
+    }
+
     fn jacobian_pattern(&self) -> Vec<(usize, usize)> {
         let nn = self.ec.disc.sphere_n.len();
         let np = self.ec.disc.sphere_p.len();

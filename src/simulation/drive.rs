@@ -93,6 +93,9 @@ impl<F: Fn(f64, &[f64]) -> f64> Dae for UnderCurrent<'_, F> {
     fn scale(&self) -> &[f64] {
         self.model.scale()
     }
+    fn accumulating_states(&self) -> Vec<usize> {
+        self.model.accumulating_states()
+    }
     fn difference_scale(&self) -> &[f64] {
         self.model.difference_scale()
     }

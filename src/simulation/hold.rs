@@ -49,6 +49,9 @@ impl Dae for VoltageHold<'_> {
     fn scale(&self) -> &[f64] {
         &self.scale
     }
+    fn accumulating_states(&self) -> Vec<usize> {
+        self.model.accumulating_states()
+    }
     fn difference_scale(&self) -> &[f64] {
         &self.difference_scale
     }

@@ -86,7 +86,10 @@ fn compare(kind: ModelKind, sei: SeiModel, name: &str) -> Gaps {
     let (mut l, mut li) = (vec![], vec![]);
     let sei0 = model.sei_lithium(&model.initial_state());
     let hold = |s: usize| s % CYCLE.len() == 3;
-    let run = common::step_by_step(model, &mut built.workspace, &steps, &rec, 5, hold, &options(), |sol, k, r| {
+    // The ten cycles one step at a time hold the SEI as a ten-cycle run does.
+    let mut opts = options();
+    opts.solver.accumulator_tolerance = 1.0 / CYCLES as f64;
+    let run = common::step_by_step(model, &mut built.workspace, &steps, &rec, 5, hold, &opts, |sol, k, r| {
         let y = &sol.states[k];
         l.push((model.sei_thickness(y).unwrap() - r[3]) / (l_end - l0));
         li.push((model.sei_lithium(y) - sei0 - r[4]) / lost_end);
@@ -99,10 +102,11 @@ fn compare(kind: ModelKind, sei: SeiModel, name: &str) -> Gaps {
     gaps
 }
 
-/// Limits about five times the achieved: voltage RMS / max 1.4e-5-2.7e-5 / 4.3e-5-1.3e-4 mV,
-/// hold current RMS / max 1.8e-4-4.5e-4 / 6.3e-4-2.6e-3 mA, thickness and lithium lost max
-/// 6.4e-6 (SPM reaction limited; 2.4e-8 to 9.2e-6 otherwise, 3.5e-5 and 4.9e-5 for the
-/// electron-migration and interstitial-diffusion laws: see [`growth_limit`]) of their growth, step ends
+/// Limits about five times the achieved (against PyBaMM at rtol 1e-10 for the SPM and SPMe):
+/// voltage RMS / max 6.8e-6-2.3e-5 / 2.4e-5-1.2e-4 mV, hold current RMS / max 1.3e-4-3.3e-4 /
+/// 3.8e-4-2.3e-3 mA, thickness and lithium lost max 2.2e-6 (SPM reaction limited; 4.1e-8 to
+/// 5.9e-7 otherwise, 4.0e-6 to 6.2e-5 for the electron-migration and interstitial-diffusion
+/// laws, which grow the layer by a few per cent: see [`growth_limit`]) of their growth, step ends
 /// 1.8e-3-2.5e-3 s (the C/20 end of a hold, as sensitive to either solver's tolerance:
 /// ours moves by 1.8e-3 s from rtol 1e-8 to 1e-12).
 /// The DFN, its own limits about five times its achieved: voltage RMS / max
@@ -110,7 +114,7 @@ fn compare(kind: ModelKind, sei: SeiModel, name: &str) -> Gaps {
 /// thickness and lithium 2.7e-8-5.5e-8, step ends 1.4e-3-1.6e-3 s.
 fn check(kind: ModelKind) {
     // (voltage RMS, max) mV, (current RMS, max) mA, thickness and lithium (-).
-    let (voltage, current, growth) = if kind == ModelKind::Dfn { ((5e-5, 4e-4), (5e-4, 2e-3), 3e-7) } else { ((1.5e-4, 6e-4), (1.5e-3, 1e-2), 3e-5) };
+    let (voltage, current, growth) = if kind == ModelKind::Dfn { ((5e-5, 4e-4), (5e-4, 2e-3), 3e-7) } else { ((1.5e-4, 6e-4), (1.5e-3, 1e-2), 1e-5) };
     for (sei, name) in OPTIONS {
         let g = compare(kind, sei, name);
         assert!(g.voltage.0 < voltage.0 && g.voltage.1 < voltage.1, "{kind} {name}: voltage {:?} mV", g.voltage);
@@ -167,11 +171,13 @@ fn cycle_summaries_match_pybamm() {
                 ours_fade * 1e3,
                 ref_fade * 1e3
             );
-            // Achieved: 2.4e-5-6.4e-5 mA h, 1.4e-7-6.2e-6 (5.4e-5 and 1.3e-4 for the
-            // electron-migration and interstitial-diffusion laws), 2.5e-9-2.4e-6, fade 3e-7-2.4e-5
-            // (DFN: 2.0e-5-2.6e-5 mA h, 6.8e-8, 7e-9-1.8e-8, 1.4e-6-5.4e-6).
+            // Achieved (the SEI held to a tenth of rtol 1e-8 over the ten cycles; SPM and SPMe
+            // against PyBaMM at 1e-10): 5.7e-6-5.3e-5 mA h, 6.0e-8-2.2e-6 (1.4e-6 to 6.3e-5 for
+            // the electron-migration and interstitial-diffusion laws), 7.2e-9-8.4e-7, fade
+            // 1.7e-8-1.2e-5 (DFN against PyBaMM at 1e-8: 1.9e-5-3.4e-5 mA h, 4.2e-8-1.3e-7,
+            // 4e-11-2.2e-8, 3.8e-9-5.4e-6).
             assert_eq!(summaries.len(), CYCLES);
-            assert!(dq < 3e-4 && dli < growth_limit(sei, 3e-5) && dl < 1.2e-5, "{kind} {name}: {dq} mA h, {dli}, {dl}");
+            assert!(dq < 2e-4 && dli < growth_limit(sei, 1e-5) && dl < 4e-6, "{kind} {name}: {dq} mA h, {dli}, {dl}");
             // Relative 4e-5, with an absolute floor of 1e-4 mA h (below the per-cycle capacity
             // limit) for the two laws that barely grow: the interstitial-diffusion layer fades
             // the cell by only 0.014 mA h.

@@ -130,6 +130,10 @@ impl Model for Dfn {
         &self.scale
     }
 
+    fn accumulating_states(&self) -> Vec<usize> {
+        self.sei.indices().chain(self.lam.indices()).chain(self.plating.indices()).collect()
+    }
+
     fn jacobian_pattern(&self) -> Vec<(usize, usize)> {
         let l = &self.layout;
         let nx = l.nx();

@@ -140,6 +140,10 @@ impl Model for Augmented {
         &self.scale
     }
 
+    fn accumulating_states(&self) -> Vec<usize> {
+        self.base.accumulating_states()
+    }
+
     fn jacobian_pattern(&self) -> Vec<(usize, usize)> {
         let mut p = self.base.jacobian_pattern();
         p.extend(self.rc.iter().chain(&self.hysteresis).chain(&self.charge).map(|&k| (k, k)));

@@ -65,10 +65,13 @@ pub(super) fn weighted_sum_squares(x: &[f64], w: &[f64]) -> f64 {
 /// Partial sums of [`weighted_sum_squares`].
 const LANES: usize = 4;
 
-/// Error weights `1 / (atol + rtol |y|)`.
-pub(super) fn set_weights(w: &mut [f64], atol: &[f64], rtol: f64, y: &[f64]) {
+/// Error weights `1 / (atol + rtol |y|)`, times `gain` on the `tightened` states.
+pub(super) fn set_weights(w: &mut [f64], atol: &[f64], rtol: f64, y: &[f64], tightened: &[usize], gain: f64) {
     for ((w, a), y) in w.iter_mut().zip(atol).zip(y) {
         *w = 1.0 / (a + rtol * y.abs());
+    }
+    for &k in tightened {
+        w[k] *= gain;
     }
 }
 

@@ -42,6 +42,12 @@ pub trait Dae {
     fn breakpoints(&self) -> &[f64] {
         &[]
     }
+    /// States that only integrate a rate and never relax (an SEI layer, plated lithium, lost
+    /// active material): their local errors add up over a run instead of decaying, so
+    /// [`SolverOptions::accumulator_tolerance`] may hold them tighter than the rest.
+    fn accumulating_states(&self) -> Vec<usize> {
+        Vec::new()
+    }
 }
 
 /// Tolerances and limits of the integrator.
@@ -56,11 +62,15 @@ pub struct SolverOptions {
     pub max_step: f64,
     /// Largest number of accepted steps per call.
     pub max_steps: usize,
+    /// Factor (0, 1] on both tolerances of the [`Dae::accumulating_states`]; 1 holds them
+    /// like every other state. A cycling run of `N` cycles holds them to `1 / N` of it, so
+    /// that what they accumulate over the run is about one cycle's error at the tolerance.
+    pub accumulator_tolerance: f64,
 }
 
 impl Default for SolverOptions {
     fn default() -> Self {
-        Self { rtol: 1e-6, atol: 1e-6, max_step: f64::INFINITY, max_steps: 100_000 }
+        Self { rtol: 1e-6, atol: 1e-6, max_step: f64::INFINITY, max_steps: 100_000, accumulator_tolerance: 1.0 }
     }
 }
 

@@ -32,6 +32,9 @@ pub struct Bdf<'a> {
     newton: Newton<'a>,
     /// Error weights 1 / (atol + rtol |y|) of the current step.
     weight: Vec<f64>,
+    /// The DAE's accumulating states when `opts.accumulator_tolerance` tightens them (their
+    /// weights are divided by it), else empty.
+    accumulating: Vec<usize>,
     /// Time (s) of the state `d[0]`.
     t: f64,
     /// The stop time (s): steps end on it rather than pass it.
@@ -92,6 +95,7 @@ impl<'a> Bdf<'a> {
             pred: Prediction::new(n),
             newton: Newton::new(dae, ws, opts.rtol),
             weight: vec![0.0; n],
+            accumulating: if opts.accumulator_tolerance < 1.0 { dae.accumulating_states() } else { Vec::new() },
             t: t0,
             t_stop,
             breaks,
@@ -178,7 +182,7 @@ impl<'a> Bdf<'a> {
             let h = t_new - t;
             self.h_abs = h;
             self.d.predict(order, &self.coeffs, &mut self.pred);
-            set_weights(&mut self.weight, &self.atol, self.opts.rtol, &self.pred.y);
+            set_weights(&mut self.weight, &self.atol, self.opts.rtol, &self.pred.y, &self.accumulating, 1.0 / self.opts.accumulator_tolerance);
             let c = h / self.coeffs.alpha[order];
             let solved = self.newton.solve(t_new, c, &self.pred, &self.weight, &mut self.stats)?;
             let Some(n_iter) = solved else {
@@ -190,7 +194,7 @@ impl<'a> Bdf<'a> {
                 continue;
             };
             self.safety = control::safety(n_iter, NEWTON_MAXITER);
-            set_weights(&mut self.weight, &self.atol, self.opts.rtol, &self.newton.y_new);
+            set_weights(&mut self.weight, &self.atol, self.opts.rtol, &self.newton.y_new, &self.accumulating, 1.0 / self.opts.accumulator_tolerance);
             // An algebraic state's slope jumps at a breakpoint, so while the predictor still
             // extrapolates from points before it, the corrector's distance from the prediction
             // is no error estimate for those rows; the corrector has solved them exactly given
