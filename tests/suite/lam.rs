@@ -187,11 +187,12 @@ fn lam_cycle_summaries_match_pybamm() {
                 }
             }
             println!("{kind} {name}: discharge capacity within {dq:.2e} A h, active material lost within {dam:.2e}, lithium within {dli:.2e} of the final");
-            // Limits three to five times the largest achieved: capacity 3.7e-8-6.6e-7 A h,
-            // active material lost 2.8e-6-9.1e-5 and lithium 4.9e-7-8.4e-5 of their final values
-            // (DFN: 1.1e-8-1.0e-7 A h, 3.8e-8-3.2e-7, 3.6e-8-3.7e-7).
-            assert!(dq < 2e-6, "{kind} {name}: discharge capacity {dq:e} A h");
-            assert!(dam < 4e-4 && dli < 4e-4, "{kind} {name}: active material {dam:e}, lithium {dli:e}");
+            // Limits about four times the largest achieved (the ageing states held to a fifth
+            // of the tolerance over the five cycles): capacity 1.7e-8-1.2e-7 A h, active
+            // material lost 1.7e-9-5.8e-5 and lithium 1.7e-9-3.2e-5 of their final values (DFN:
+            // 6.6e-9-1.6e-7 A h, 3.8e-9-3.2e-7, 1.1e-8-3.7e-7).
+            assert!(dq < 6e-7, "{kind} {name}: discharge capacity {dq:e} A h");
+            assert!(dam < 2.5e-4 && dli < 1.5e-4, "{kind} {name}: active material {dam:e}, lithium {dli:e}");
         }
     }
 }

@@ -132,11 +132,12 @@ fn plating_cycle_summaries_match_pybamm() {
                 ddead = ddead.max((s.dead_lithium_mol.unwrap() - r[3]).abs() / final_lost);
             }
             println!("{kind} {name}: discharge capacity within {dq:.2e} A h, lithium lost to plating within {dli:.2e} and dead lithium within {ddead:.2e} of the final loss");
-            // Limits about four times the largest achieved: capacity 1.3e-8-3.4e-7 A h, lithium
-            // lost to plating 1.5e-7-7.9e-7 and dead lithium up to 4.1e-7 of the final loss
-            // (DFN: 1.3e-8-1.4e-7 A h, 2.5e-7-5.5e-7, 6.4e-8).
+            // Limits about four times the largest achieved (the ageing states held to a third
+            // of the tolerance over the three cycles): capacity 1.5e-8-4.7e-7 A h, lithium lost
+            // to plating 7.8e-8-6.2e-7 and dead lithium up to 3.5e-7 of the final loss (DFN:
+            // 6.6e-9-1.4e-7 A h, 5.5e-8-3.9e-7, 5.5e-8).
             assert!(dq < 1.5e-6, "{kind} {name}: discharge capacity {dq:e} A h");
-            assert!(dli < 4e-6 && ddead < 2e-6, "{kind} {name}: lithium lost {dli:e}, dead {ddead:e}");
+            assert!(dli < 2.5e-6 && ddead < 1.5e-6, "{kind} {name}: lithium lost {dli:e}, dead {ddead:e}");
         }
     }
 }
