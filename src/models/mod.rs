@@ -210,6 +210,12 @@ pub trait Model: Send + Sync {
     fn plating_margin(&self, _y: &[f64], _current: f64) -> Option<f64> {
         None
     }
+    /// Rows of [`Model::rhs`] that read the applied current (all of them unless a model says
+    /// fewer): a voltage hold, where the current is an unknown, puts its Jacobian column on
+    /// these rows only. A row left out only slows the hold's Newton iteration.
+    fn rows_reading_current(&self) -> Vec<usize> {
+        (0..self.len()).collect()
+    }
     /// Indices of the states that only integrate an ageing rate (SEI, plated lithium, lost
     /// active material): see [`crate::solver::Dae::accumulating_states`].
     fn accumulating_states(&self) -> Vec<usize> {

@@ -28,12 +28,13 @@ impl<'a> VoltageHold<'a> {
         Self { model, voltage, mass, scale, difference_scale }
     }
 
-    /// The Jacobian pattern of the held system: the model's, the current's column in every
-    /// row (it enters any equation), and the voltage row over the states the voltage reads.
+    /// The Jacobian pattern of the held system: the model's, the current's column in the rows
+    /// that read it and in the voltage row, and the voltage row over the states the voltage
+    /// reads.
     pub fn pattern(model: &dyn Model) -> Vec<(usize, usize)> {
         let n = model.len();
         let mut pattern = model.jacobian_pattern();
-        pattern.extend((0..=n).map(|r| (r, n)));
+        pattern.extend(model.rows_reading_current().into_iter().chain([n]).map(|r| (r, n)));
         pattern.extend(model.output_states().into_iter().map(|c| (n, c)));
         pattern
     }

@@ -34,7 +34,7 @@ impl AlgebraicBlock {
         let local: Vec<(usize, usize)> = block.iter().map(|&(r, c)| (compact[r], compact[c])).collect();
         let na = index.len();
         Ok(Self {
-            system: SparseSystem::new(na, &local)?,
+            system: SparseSystem::new(na, &local, &[])?,
             jac: vec![0.0; block.len()],
             pattern: ColouredPattern::new(n, block),
             index,

@@ -43,9 +43,11 @@ impl Elimination {
 }
 
 /// Exact minimum-degree elimination of the graph of `A + A^T` for the pattern `entries`
-/// (`(row, col)` pairs of an `n x n` matrix; the diagonal is implied). Ties go to the lowest
+/// (`(row, col)` pairs of an `n x n` matrix; the diagonal is implied), the nodes `last` left
+/// to the end in their given order (an unknown whose own pivot may be zero, as a voltage
+/// hold's current, gets its pivot from the fill of its neighbours). Ties go to the lowest
 /// index, so the result is deterministic.
-pub fn minimum_degree(n: usize, entries: &[(usize, usize)]) -> Elimination {
+pub fn minimum_degree(n: usize, entries: &[(usize, usize)], last: &[usize]) -> Elimination {
     let mut adj: Vec<Vec<usize>> = vec![Vec::new(); n];
     for &(r, c) in entries {
         if r != c {
@@ -57,16 +59,18 @@ pub fn minimum_degree(n: usize, entries: &[(usize, usize)]) -> Elimination {
         a.sort_unstable();
         a.dedup();
     }
-    let mut heap: BinaryHeap<Reverse<(usize, usize)>> = (0..n).map(|v| Reverse((adj[v].len(), v))).collect();
+    let mut held = vec![false; n];
+    for &v in last {
+        held[v] = true;
+    }
+    let mut heap: BinaryHeap<Reverse<(usize, usize)>> = (0..n).filter(|&v| !held[v]).map(|v| Reverse((adj[v].len(), v))).collect();
     let mut eliminated = vec![false; n];
     // mark[w] == u + 1 while the neighbours of u are being merged
     let mut mark = vec![0usize; n];
     let mut order = Vec::with_capacity(n);
     let mut later = vec![Vec::new(); n];
-    while let Some(Reverse((deg, v))) = heap.pop() {
-        if eliminated[v] || deg != adj[v].len() {
-            continue;
-        }
+    type Heap = BinaryHeap<Reverse<(usize, usize)>>;
+    let mut eliminate = |v: usize, adj: &mut Vec<Vec<usize>>, heap: &mut Heap, eliminated: &mut [bool]| {
         eliminated[v] = true;
         order.push(v);
         let nbrs = std::mem::take(&mut adj[v]);
@@ -81,9 +85,20 @@ pub fn minimum_degree(n: usize, entries: &[(usize, usize)]) -> Elimination {
                     list.push(w);
                 }
             }
-            heap.push(Reverse((list.len(), u)));
+            if !held[u] {
+                heap.push(Reverse((list.len(), u)));
+            }
         }
         later[v] = nbrs;
+    };
+    while let Some(Reverse((deg, v))) = heap.pop() {
+        if eliminated[v] || deg != adj[v].len() {
+            continue;
+        }
+        eliminate(v, &mut adj, &mut heap, &mut eliminated);
+    }
+    for &v in last {
+        eliminate(v, &mut adj, &mut heap, &mut eliminated);
     }
     Elimination { order, later }
 }
@@ -97,7 +112,7 @@ mod tests {
         // Node 0 couples to every other node: eliminating it first would fill the matrix.
         let n = 6;
         let entries: Vec<(usize, usize)> = (1..n).flat_map(|i| [(0, i), (i, 0)]).collect();
-        let e = minimum_degree(n, &entries);
+        let e = minimum_degree(n, &entries, &[]);
         // The hub goes once a single leaf is left (a tie with that leaf).
         assert_eq!(e.order[n - 2], 0);
         let fill: usize = e.later.iter().map(Vec::len).sum();
@@ -117,9 +132,9 @@ mod tests {
             }
             entries.extend([(first + 4, c % 3), (c % 3, first + 4)]);
         }
-        let plain = minimum_degree(23, &entries);
+        let plain = minimum_degree(23, &entries, &[]);
         let fill: Vec<usize> = plain.later.iter().map(Vec::len).collect();
-        let levelled = minimum_degree(23, &entries).by_level();
+        let levelled = minimum_degree(23, &entries, &[]).by_level();
         assert_eq!(levelled.later.iter().map(Vec::len).collect::<Vec<_>>(), fill);
         let mut pos = [0; 23];
         for (i, &v) in levelled.order.iter().enumerate() {

@@ -73,14 +73,15 @@ impl SparseSystem {
         self.n
     }
 
-    /// Builds the pattern from distinct Jacobian entries `(row, col)`.
-    pub fn new(n: usize, entries: &[(usize, usize)]) -> Result<Self, Error> {
+    /// Builds the pattern from distinct Jacobian entries `(row, col)`, the unknowns `last`
+    /// eliminated last (see [`super::ordering::minimum_degree`]).
+    pub fn new(n: usize, entries: &[(usize, usize)], last: &[usize]) -> Result<Self, Error> {
         if let Some(&(r, c)) = entries.iter().find(|&&(r, c)| r >= n || c >= n) {
             return Err(Error::Linear(format!("Jacobian entry ({r}, {c}) outside a {n} x {n} matrix")));
         }
         let mut all = entries.to_vec();
         all.extend((0..n).map(|i| (i, i)));
-        let (lu, mut slots) = StaticLu::new(n, &all);
+        let (lu, mut slots) = StaticLu::new(n, &all, last);
         let diag_slots = slots.split_off(entries.len());
         let jac_lu = vec![0.0; lu.nnz()];
         Ok(Self {

@@ -45,8 +45,8 @@ impl StaticLu {
     /// Symbolic analysis of the pattern `entries` (`(row, col)`, original numbering; the
     /// diagonal is added). Returns the factoriser and, for each entry, its position in the
     /// value array that [`StaticLu::factorise`] takes.
-    pub fn new(n: usize, entries: &[(usize, usize)]) -> (Self, Vec<usize>) {
-        let elim = minimum_degree(n, entries).by_level();
+    pub fn new(n: usize, entries: &[(usize, usize)], last: &[usize]) -> (Self, Vec<usize>) {
+        let elim = minimum_degree(n, entries, last).by_level();
         let perm = elim.order;
         let mut iperm = vec![0; n];
         for (i, &p) in perm.iter().enumerate() {
@@ -234,7 +234,7 @@ mod tests {
                 }
             }
         }
-        let (mut lu, slots) = StaticLu::new(n, &entries);
+        let (mut lu, slots) = StaticLu::new(n, &entries, &[]);
         for (&(r, c), &s) in entries.iter().zip(&slots) {
             lu.values_mut()[s] = a[r * n + c];
         }
@@ -250,7 +250,7 @@ mod tests {
     #[test]
     fn zero_pivot_is_reported() {
         let entries = [(0, 0), (0, 1), (1, 0), (1, 1)];
-        let (mut lu, slots) = StaticLu::new(2, &entries);
+        let (mut lu, slots) = StaticLu::new(2, &entries, &[]);
         // [[0, 1], [1, 0]] needs pivoting.
         for (&(r, c), &s) in entries.iter().zip(&slots) {
             lu.values_mut()[s] = if r == c { 0.0 } else { 1.0 };

@@ -22,21 +22,28 @@ pub struct Workspace {
 impl Workspace {
     /// Builds the work space for `n` states and Jacobian entries `(row, col)` (duplicates
     /// are merged).
-    pub fn new(n: usize, mut entries: Vec<(usize, usize)>) -> Result<Self, Error> {
+    pub fn new(n: usize, entries: Vec<(usize, usize)>) -> Result<Self, Error> {
+        Self::eliminating_last(n, entries, &[])
+    }
+
+    /// [`Workspace::new`] with the unknowns `last` eliminated last by the LU.
+    fn eliminating_last(n: usize, mut entries: Vec<(usize, usize)>, last: &[usize]) -> Result<Self, Error> {
         entries.sort_unstable();
         entries.dedup();
-        let system = SparseSystem::new(n, &entries)?;
+        let system = SparseSystem::new(n, &entries, last)?;
         let jac = vec![0.0; entries.len()];
         Ok(Self { pattern: ColouredPattern::new(n, entries), system, jac, algebraic: None, extended: None })
     }
 
     /// The work space for this DAE extended to `n` states with Jacobian entries `entries()`,
     /// built at the first call (or when `n` changes) and kept, so that a cycle's voltage
-    /// holds do not each rebuild its colouring and symbolic LU.
+    /// holds do not each rebuild its colouring and symbolic LU. The extension's last state (a
+    /// hold's current, whose own pivot is zero without a contact resistance) is eliminated
+    /// last.
     pub fn extended(&mut self, n: usize, entries: impl FnOnce() -> Vec<(usize, usize)>) -> Result<&mut Workspace, Error> {
         match &mut self.extended {
             Some(ws) if ws.system.len() == n => {}
-            slot => *slot = Some(Box::new(Workspace::new(n, entries())?)),
+            slot => *slot = Some(Box::new(Workspace::eliminating_last(n, entries(), &[n - 1])?)),
         }
         Ok(self.extended.as_deref_mut().expect("built above"))
     }

@@ -186,7 +186,7 @@ fn integrate_is_the_stepper_driven_to_the_end() {
 fn a_zero_static_pivot_falls_back_to_partial_pivoting() {
     // diag(mass) - c J with a zero diagonal: [[0, 2], [3, 0]] needs a row exchange.
     let entries = [(0, 1), (1, 0)];
-    let mut system = SparseSystem::new(2, &entries).unwrap();
+    let mut system = SparseSystem::new(2, &entries, &[]).unwrap();
     system.factorise(&[0.0, 0.0], 1.0, &[-2.0, -3.0]).unwrap();
     assert!(system.pivoted(), "the static LU should have refused a zero pivot");
     let mut x = [4.0, 9.0];

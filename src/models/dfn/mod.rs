@@ -130,6 +130,17 @@ impl Model for Dfn {
         &self.scale
     }
 
+    fn rows_reading_current(&self) -> Vec<usize> {
+        // The applied current enters as the solid current at the positive collector and in
+        // the heat source; with loss of active material also in its drivers, whose rates every
+        // particle row reads (a row left out there breaks the Newton updates' lithium balance).
+        let l = &self.layout;
+        if self.lam.len() > 0 {
+            return (0..l.len).collect();
+        }
+        std::iter::once(l.phis(Side::Positive, l.nxp - 1)).chain(l.temp).collect()
+    }
+
     fn accumulating_states(&self) -> Vec<usize> {
         self.sei.indices().chain(self.lam.indices()).chain(self.plating.indices()).collect()
     }
