@@ -119,6 +119,19 @@ mod tests {
         assert_eq!(fill, n - 1, "only the original off-diagonal couplings");
     }
 
+    /// A chain 1-2-3-4-5 with a leaf 0 on node 3 (a voltage hold's current on one row): free,
+    /// the leaf goes first (lowest degree and index); held, it goes last, and the elimination
+    /// of the chain couples it to the node eliminated just before it (its pivot gets fill).
+    #[test]
+    fn held_nodes_go_last_and_collect_their_fill() {
+        let mut entries: Vec<(usize, usize)> = (1..5).flat_map(|i| [(i, i + 1), (i + 1, i)]).collect();
+        entries.extend([(3, 0), (0, 3)]);
+        assert_eq!(minimum_degree(6, &entries, &[]).order[0], 0);
+        let held = minimum_degree(6, &entries, &[0]);
+        assert_eq!(held.order[5], 0);
+        assert_eq!(held.later[held.order[4]], vec![0]);
+    }
+
     /// Four 5-node chains hanging off a 3-node spine (particles on an electrolyte line): the
     /// level order keeps the fill and eliminates every node before its later neighbours, and
     /// the chains' nodes of one depth come out together.
