@@ -53,6 +53,12 @@ impl Workspace {
         self.pattern.n_colours()
     }
 
+    /// Whether the last factorisation of the Newton matrix fell back to partial pivoting (a
+    /// tiny static pivot).
+    pub fn pivoted(&self) -> bool {
+        self.system.pivoted()
+    }
+
     /// Entries of the LU factors of the Newton matrix, fill included (zero fill means the
     /// factors have as many entries as the pattern plus the diagonal).
     pub fn factor_nnz(&self) -> usize {
