@@ -130,7 +130,7 @@ impl Model for Spm {
     }
 
     fn accumulating_states(&self) -> Vec<usize> {
-        self.sei.indices().chain(self.lam.indices()).chain(self.plating.indices()).collect()
+        super::submodels::accumulating_states(&self.sei, &self.lam, &self.plating)
     }
 
     fn jacobian_pattern(&self) -> Vec<(usize, usize)> {

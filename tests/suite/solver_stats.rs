@@ -83,14 +83,15 @@ fn dfn_voltage_hold_factors_without_pivoting_and_little_fill() {
     let built = b.build(&p).unwrap();
     let n = built.model.len();
     let cccv = cellstudio::protocol::experiment::parse(&["Charge at 1C until 4.1 V", "Hold at 4.1 V until C/20"], p.cell.nominal_capacity).unwrap();
-    let low = SimOptions::for_cell(&p);
+    let opts = SimOptions::for_cell(&p);
+    // From 30 % state of charge, so that the charge reaches the hold.
     let y0 = {
         let mut q = p.clone();
         cellstudio::params::set_initial_soc_from(&mut q, 0.3, "soc").unwrap();
         let mut bq = ModelBuilder::new(ModelKind::Dfn, Submodels::default(), MeshSizes::default());
         bq.build(&q).unwrap().model.initial_state()
     };
-    simulate(built.model.as_ref(), &mut built.workspace, &cccv, &low, Some(y0)).unwrap();
+    simulate(built.model.as_ref(), &mut built.workspace, &cccv, &opts, Some(y0)).unwrap();
     let base = built.workspace.factor_nnz();
     let hold = built.workspace.extended(n + 1, || unreachable!("the hold built it")).unwrap();
     println!("DFN: discharge factors {base}, hold factors {}", hold.factor_nnz());

@@ -142,7 +142,7 @@ impl Model for Dfn {
     }
 
     fn accumulating_states(&self) -> Vec<usize> {
-        self.sei.indices().chain(self.lam.indices()).chain(self.plating.indices()).collect()
+        crate::models::submodels::accumulating_states(&self.sei, &self.lam, &self.plating)
     }
 
     fn jacobian_pattern(&self) -> Vec<(usize, usize)> {

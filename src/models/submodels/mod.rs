@@ -16,3 +16,10 @@ pub use plating::{PlatingLayer, PlatingModel};
 pub use sei::{SeiLayer, SeiModel};
 pub use size_distribution::{ParticleSize, SizeClasses};
 pub use thermal::LumpedThermal;
+
+/// The states of an electrochemical model's ageing layers that only integrate a rate (the
+/// SEI, the lost active material, the plated lithium): its
+/// [`crate::models::Model::accumulating_states`].
+pub fn accumulating_states(sei: &SeiLayer, lam: &LamLayer, plating: &PlatingLayer) -> Vec<usize> {
+    sei.indices().chain(lam.indices()).chain(plating.indices()).collect()
+}
