@@ -144,6 +144,14 @@ impl Model for Augmented {
         self.base.accumulating_states()
     }
 
+    fn rows_reading_current(&self) -> Vec<usize> {
+        // The wrapped model's rows (the leak only shifts the current it reads) and every
+        // appended state: the RC, hysteresis and charge states all integrate the current.
+        let mut rows = self.base.rows_reading_current();
+        rows.extend(self.n_base..self.len());
+        rows
+    }
+
     fn jacobian_pattern(&self) -> Vec<(usize, usize)> {
         let mut p = self.base.jacobian_pattern();
         p.extend(self.rc.iter().chain(&self.hysteresis).chain(&self.charge).map(|&k| (k, k)));
