@@ -8,7 +8,7 @@ mod cli;
 use cli::{Cli, Command, DataCommand, Overrides};
 
 use cellstudio::models::Submodels;
-use cellstudio::models::submodels::ParticleSize;
+use cellstudio::models::submodels::{ParticleSize, refuse_unread, refuse_unread_overrides};
 use cellstudio::output::OutputDir;
 use cellstudio::params::{ParameterSet, apply_overrides};
 use cellstudio::Error;
@@ -226,9 +226,16 @@ fn run(cli: Cli) -> Result<(), Error> {
             cellstudio::optim::by_name(&optimiser, Default::default())?;
             let mut p = load_parameters(params.as_deref(), &overrides)?;
             set_contact_resistance(&mut p, contact_resistance)?;
+            // A contact resistance given, set or fitted switches its submodel on.
+            let fits_contact = fit.is_some() && parameters.iter().any(|q| q == "cell.contact_resistance");
+            let submodels = Submodels { contact_resistance: contact_resistance.is_some() || overrides.sets("cell.contact_resistance") || fits_contact, ..Default::default() };
+            refuse_unread_overrides(&submodels, &overrides.set)?;
+            if fit.is_some() {
+                refuse_unread(&submodels, parameters.iter().map(|q| (format!("--parameters {q}"), q.as_str())))?;
+            }
             let run = eis::EisRun {
                 kind: model,
-                submodels: Submodels { contact_resistance: contact_resistance.is_some() || overrides.sets("cell.contact_resistance"), ..Default::default() },
+                submodels,
                 params: p,
                 soc,
                 frequencies,
@@ -322,6 +329,7 @@ fn run(cli: Cli) -> Result<(), Error> {
                 (Error::InvalidSetting { reason, .. }, Some(field)) => Error::InvalidSetting { field: field.clone(), reason },
                 (other, _) => other,
             })?;
+            refuse_unread_overrides(&submodels, &overrides.set)?;
             let run = SimulateRun { model, submodels, params: p, protocol, mesh, repeat, out, inputs: params.into_iter().collect() };
             let outcome = run_simulate(&run)?;
             warn(&outcome.warnings);

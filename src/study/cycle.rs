@@ -117,8 +117,11 @@ impl CycleStudy {
             return Err(Error::invalid("cycling.tolerance", c.tolerance, "must lie in (0, 0.01)"));
         }
         let p = self.parameters()?;
+        let sub = &self.model.submodels;
+        crate::models::submodels::refuse_unread_overrides(sub, &self.cell.overrides)?;
         if let Some(fit) = &self.fit {
             fit.validate(&p)?;
+            crate::models::submodels::refuse_unread(sub, fit.parameters.iter().enumerate().map(|(k, q)| (format!("fit.parameters[{k}].path"), q.path.as_str())))?;
         }
         crate::protocol::experiment::parse(&c.cycle, p.cell.nominal_capacity)
             .map_err(|e| Error::InvalidSetting { field: "cycling.cycle".into(), reason: e.to_string() })?

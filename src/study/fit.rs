@@ -124,7 +124,9 @@ impl FitStudy {
         let (method, sampler, _) = self.sampler()?;
         crate::sample::by_name(&method, sampler)?;
         self.cell.load()?;
-        Ok(())
+        let sub = &self.model.submodels;
+        crate::models::submodels::refuse_unread(sub, self.parameters.iter().enumerate().map(|(k, p)| (format!("parameters[{k}].path"), p.path.as_str())))?;
+        crate::models::submodels::refuse_unread_overrides(sub, &self.cell.overrides)
     }
 
     /// The study with `--set` overrides of the cell's parameters, checked again.

@@ -43,6 +43,7 @@ impl Study {
                 reason: format!("`{path}` follows from the stack in cell.format = {}; change the format's dimensions instead", serde_json::to_string(&self.cell.format).unwrap_or_default()),
             });
         }
+        crate::models::submodels::refuse_unread(&self.model.submodels, set_paths.iter().map(|(f, p)| (f.clone(), *p)))?;
         if self.variables.is_empty() {
             return Err(Error::InvalidSetting { field: "variables".into(), reason: "at least one is needed".into() });
         }

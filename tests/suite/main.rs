@@ -64,3 +64,4 @@ mod sweep_study;
 mod thermal;
 mod thermal_reference;
 mod timed_energy;
+mod unread_parameters;

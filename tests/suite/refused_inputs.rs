@@ -146,3 +146,23 @@ fn a_negative_number_after_a_flag_is_its_value_and_is_checked() {
     fails_with(&run(&s.0, &["simulate", "--repeat", "0"]), &["`--repeat` = 0", "at least 1"]);
     assert!(s.entries().is_empty(), "a refused run wrote something");
 }
+
+#[test]
+fn a_parameter_the_model_does_not_read_is_refused_naming_what_would_read_it() {
+    let s = Scratch::new("unread");
+    // Before, each ran and changed nothing: the first under the SEI law that reads
+    // `sei.exchange_current`, the others with their submodel off.
+    let cycle = std::fs::read_to_string(Path::new(REPO).join("examples/cycle_sei_chen2020.toml")).unwrap();
+    let cycle = s.write("cycle.toml", &cycle.replace("out/cycle_sei", "out")).to_string_lossy().into_owned();
+    let o = run(&s.0, &["cycle", &cycle, "--set", "sei.kinetic_rate_constant=1e-9"]);
+    fails_with(&o, &["--set sei.kinetic_rate_constant", "\"reaction limited\"", "only \"ec reaction limited\" reads it"]);
+    let o = run(&s.0, &["simulate", "--set", "sei.exchange_current=1e-6"]);
+    fails_with(&o, &["--set sei.exchange_current", "the SEI submodel is off"]);
+    let design = design_with_points(&s, "[3, 3]");
+    let o = run(&s.0, &["design", &design, "--set", "plating.kinetic_rate_constant=1e-10"]);
+    fails_with(&o, &["--set plating.kinetic_rate_constant", "lithium-plating submodel is off"]);
+    let fit = fit_study(&s, "");
+    let o = run(&s.0, &["fit", &fit.to_string_lossy(), "--set", "cell.rc_resistance=0.01"]);
+    fails_with(&o, &["--set cell.rc_resistance", "the RC submodel is off", "rc = true"]);
+    assert!(!s.path("out").exists(), "a refused run wrote its output folder");
+}

@@ -6,6 +6,7 @@
 pub mod augmented;
 pub mod lam;
 pub mod plating;
+pub mod reads;
 pub mod sei;
 pub mod size_distribution;
 pub mod thermal;
@@ -13,6 +14,7 @@ pub mod thermal;
 pub use augmented::Augmented;
 pub use lam::{LamDrivers, LamLayer, LamModel};
 pub use plating::{PlatingLayer, PlatingModel};
+pub use reads::{refuse_unread, refuse_unread_overrides, unread_reason};
 pub use sei::{SeiLayer, SeiModel};
 pub use size_distribution::{ParticleSize, SizeClasses};
 pub use thermal::LumpedThermal;
