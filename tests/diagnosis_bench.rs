@@ -1134,3 +1134,55 @@ fn a_diagnosis_stopped_at_its_round_limit_says_the_rest_was_not_diagnosed() {
     let conclusion = report::conclusion(&rounds);
     assert!(conclusion.contains("part of the recording") && conclusion.contains("was not diagnosed") && conclusion.contains("round limit (--max-rounds 1)"), "{conclusion}");
 }
+
+// Blind batch ah (twenty-fifth session; a helper made it with `scripts/make_unseen_cases.py
+// ah` without reading `src/diagnose`, and judged the binary of 38c2d6d once: 7 of 8). Slow
+// (1-7 min each, DFN drives and long duties): CI skips them.
+
+#[test]
+#[ignore = "slow (blind batch ah): CI skips it; run with --include-ignored"]
+fn ah1_negative_control_circular_saw_cuts_at_minus_3_degc_spm() {
+    run_case("diagnosis-extra/ah1_control_circular_saw_cuts_minus3C_1s_spm");
+}
+
+#[test]
+#[ignore = "slow (blind batch ah): CI skips it; run with --include-ignored"]
+fn ah2_negative_hysteresis_under_frequency_regulation_spme() {
+    run_case("diagnosis-extra/ah2_hysteresis_negative_12mV_frequency_regulation_27C_5s_spme");
+}
+
+#[test]
+#[ignore = "slow (blind batch ah): CI skips it; run with --include-ignored"]
+fn ah3_positive_active_material_loss_in_a_forklift_shift_dfn() {
+    run_case("diagnosis-extra/ah3_lam_positive_10pct_forklift_shift_cold_store_charger_6C_3s_dfn");
+}
+
+#[test]
+#[ignore = "slow (blind batch ah): CI skips it; run with --include-ignored"]
+fn ah4_contact_and_self_heating_in_evtol_hops_spme() {
+    run_case("diagnosis-extra/ah4_contact_3mOhm_and_thermal_h8_recorded_evtol_hops_39C_2s_spme");
+}
+
+#[test]
+#[ignore = "fails (blind batch ah's miss, open): DFN data to the SPMe, 8 % lithium lost; round 1 names a tie of a second negative material (5 parameters, 3.08 mV) and the lithium loss (2, 3.22 mV) with the second material first"]
+fn ah5_lithium_inventory_in_ferry_crossings_dfn_data_to_spme() {
+    run_case("diagnosis-extra/ah5_inventory_8pct_ferry_crossings_shore_charging_9C_10s_dfn_data_spme");
+}
+
+#[test]
+#[ignore = "slow (blind batch ah): CI skips it; run with --include-ignored"]
+fn ah6_kinetics_of_both_electrodes_in_a_dc_fast_charge_dfn() {
+    run_case("diagnosis-extra/ah6_kinetics_both_x0p6_ev_dc_fast_charge_highway_34C_1s_2mV_dfn");
+}
+
+#[test]
+#[ignore = "slow (blind batch ah): CI skips it; run with --include-ignored"]
+fn ah7_negative_diffusivity_and_lithium_loss_in_hppc_dfn() {
+    run_case("diagnosis-extra/ah7_diffusivity_negative_x0p2_and_inventory_5pct_hppc_seven_soc_19C_2s_dfn");
+}
+
+#[test]
+#[ignore = "slow (blind batch ah): CI skips it; run with --include-ignored"]
+fn ah8_a_voltage_channel_reading_low_at_a_telecom_site_spm() {
+    run_case("diagnosis-extra/ah8_voltage_channel_gain_0p4pct_low_telecom_site_constant_power_42C_30s_spm");
+}
