@@ -3042,6 +3042,31 @@ def batch_a(root):
                initial_soc=0.7, seed=258, cycler=CYCLER, compare=lion.SPMe())
 
 
+def single_times(t):
+    """The recorded points whose time is not repeated (a repeated time marks a current step)."""
+    single = np.ones(len(t), dtype=bool)
+    single[1:] &= t[1:] - t[:-1] > 1e-6
+    single[:-1] &= t[1:] - t[:-1] > 1e-6
+    return single
+
+
+def record_rmse(folder, name, key, d):
+    """Adds the RMS (mV) of the voltage differences `d` (V) to the case's truth.json under `key`."""
+    with open(os.path.join(folder, "truth.json")) as f:
+        truth = json.load(f)
+    truth[key] = round(1e3 * float(np.sqrt(np.mean(d ** 2))), 2)
+    with open(os.path.join(folder, "truth.json"), "w") as f:
+        json.dump(truth, f, indent=1)
+    print(f"  {name}: {key} = {truth[key]} mV")
+
+
+def at_temperature(p, celsius):
+    """`p` with the ambient and initial temperatures at `celsius` degC."""
+    kelvin = 273.15 + celsius
+    p.update({"Ambient temperature [K]": kelvin, "Initial temperature [K]": kelvin})
+    return p
+
+
 def replay_rmse(root, name, model, params, steps, initial_soc, key, period=1, skip_steps=0):
     """Adds to `name`'s truth.json, under `key`, the RMS difference (mV) between the recorded voltage and
     `model` with `params` run through `steps` from `initial_soc` (after `skip_steps` unrecorded steps),
@@ -3055,18 +3080,11 @@ def replay_rmse(root, name, model, params, steps, initial_soc, key, period=1, sk
     if skip_steps:
         n0 = sum(len(c["Time [s]"].entries) for c in sol.cycles[:skip_steps])
         tr, vr = tr[n0:] - tr[n0], vr[n0:]
-    single = np.ones(len(t), dtype=bool)
-    single[1:] &= t[1:] - t[:-1] > 1e-6
-    single[:-1] &= t[1:] - t[:-1] > 1e-6
+    single = single_times(t)
     single &= t <= tr[-1]
     _, first = np.unique(tr, return_index=True)
     d = v[single] - np.interp(t[single], tr[first], vr[first])
-    with open(os.path.join(folder, "truth.json")) as f:
-        truth = json.load(f)
-    truth[key] = round(1e3 * float(np.sqrt(np.mean(d ** 2))), 2)
-    with open(os.path.join(folder, "truth.json"), "w") as f:
-        json.dump(truth, f, indent=1)
-    print(f"  {name}: {key} = {truth[key]} mV")
+    record_rmse(folder, name, key, d)
 
 
 def regulation_blocks(seed, blocks):
@@ -4324,10 +4342,7 @@ def batch_ag(root):
     pair as SEI growth gives (5 % lithium loss with the negative exchange current x0.5). Words as
     in batches ae and af. Each effect's size on its own (the nominal candidate, or a replay, against
     the noise-free voltage) is in truth.json (effect_rmse_mV and the replay keys)."""
-    def at(p, celsius):
-        kelvin = 273.15 + celsius
-        p.update({"Ambient temperature [K]": kelvin, "Initial temperature [K]": kelvin})
-        return p
+    at = at_temperature
     # ag1: control, SPMe, two e-bike commutes with a parked day between and a C/2 CC-CV charge, 24 degC, 4 s, a BMS logger's resolution
     p = at(chen(), 24)
     steps = (["Rest for 5 minutes"] + ebike_commute(3201) + ["Rest for 2 hours"] + ebike_commute(32010)
@@ -4569,9 +4584,7 @@ def recorded_current_rmse(root, name, model, params, initial_soc, key):
     folder = os.path.join(root, name)
     data = np.loadtxt(os.path.join(folder, "recording.csv"), delimiter=",", skiprows=1)
     t, i, v = data[:, 0].copy(), data[:, 1], data[:, 2]
-    single = np.ones(len(t), dtype=bool)
-    single[1:] &= t[1:] - t[:-1] > 1e-6
-    single[:-1] &= t[1:] - t[:-1] > 1e-6
+    single = single_times(t)
     ts = t.copy()
     for k in range(1, len(ts)):
         if ts[k] - ts[k - 1] <= 1e-6:
@@ -4582,12 +4595,7 @@ def recorded_current_rmse(root, name, model, params, initial_soc, key):
     sim = pybamm.Simulation(model, parameter_values=p, solver=pybamm.IDAKLUSolver(rtol=1e-6, atol=1e-6))
     sol = sim.solve(t_eval=ts, initial_soc=initial_soc)
     d = v[single] - sol["Voltage [V]"](t=ts[single])
-    with open(os.path.join(folder, "truth.json")) as f:
-        truth = json.load(f)
-    truth[key] = round(1e3 * float(np.sqrt(np.mean(d ** 2))), 2)
-    with open(os.path.join(folder, "truth.json"), "w") as f:
-        json.dump(truth, f, indent=1)
-    print(f"  {name}: {key} = {truth[key]} mV")
+    record_rmse(folder, name, key, d)
 
 
 def batch_ah(root):
@@ -4607,10 +4615,7 @@ def batch_ah(root):
     the voltage gain as in a4. Each effect's size on its own (the nominal candidate, or a replay,
     against the noise-free voltage) is in truth.json (effect_rmse_mV and the replay keys; where a
     charge ends on a voltage, a replay driven by the recorded current, `recorded_current_rmse`)."""
-    def at(p, celsius):
-        kelvin = 273.15 + celsius
-        p.update({"Ambient temperature [K]": kelvin, "Initial temperature [K]": kelvin})
-        return p
+    at = at_temperature
     kinetic_words = ["kinetic", "exchange", "charge-transfer", "charge transfer", "reaction rate"]
     lithium_words = ["inventory", "lithium loss", "lithium lost", "cyclable"]
     # ah1: control, a cordless circular saw's cuts on a winter building site, -3 degC, 1 s, 0.5 mV, SPM
