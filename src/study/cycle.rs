@@ -121,7 +121,7 @@ impl CycleStudy {
         crate::models::submodels::refuse_unread_overrides(sub, &self.cell.overrides)?;
         if let Some(fit) = &self.fit {
             fit.validate(&p)?;
-            crate::models::submodels::refuse_unread(sub, fit.parameters.iter().enumerate().map(|(k, q)| (format!("fit.parameters[{k}].path"), q.path.as_str())))?;
+            crate::models::submodels::refuse_unread(sub, super::fit::fitted_paths("fit.parameters", &fit.parameters))?;
         }
         crate::protocol::experiment::parse(&c.cycle, p.cell.nominal_capacity)
             .map_err(|e| Error::InvalidSetting { field: "cycling.cycle".into(), reason: e.to_string() })?

@@ -125,7 +125,7 @@ impl FitStudy {
         crate::sample::by_name(&method, sampler)?;
         self.cell.load()?;
         let sub = &self.model.submodels;
-        crate::models::submodels::refuse_unread(sub, self.parameters.iter().enumerate().map(|(k, p)| (format!("parameters[{k}].path"), p.path.as_str())))?;
+        crate::models::submodels::refuse_unread(sub, fitted_paths("parameters", &self.parameters))?;
         crate::models::submodels::refuse_unread_overrides(sub, &self.cell.overrides)
     }
 
@@ -462,4 +462,10 @@ pub fn parameter_table(r: &FitResult) -> String {
         }
     }
     s
+}
+
+/// Each fitted parameter's path with its field in the study (`{list}[k].path`), for errors
+/// that name the field.
+pub(crate) fn fitted_paths<'a>(list: &'a str, parameters: &'a [FitParameter]) -> impl Iterator<Item = (String, &'a str)> + 'a {
+    parameters.iter().enumerate().map(move |(k, p)| (format!("{list}[{k}].path"), p.path.as_str()))
 }

@@ -47,9 +47,8 @@ fn submodel_paths(p: &ParameterSet) -> Vec<String> {
     for group in ["sei", "lam", "plating"] {
         leaves(group, &json[group], &mut out);
     }
-    let cell = ["contact_resistance", "rc_resistance", "rc_capacitance", "hysteresis_voltage", "hysteresis_rate", "hysteresis_initial"];
-    let cell2 = ["leakage_current", "voltage_offset", "voltage_gain"];
-    out.extend(cell.iter().chain(&cell2).map(|n| format!("cell.{n}")));
+    let cell = ["contact_resistance", "rc_resistance", "rc_capacitance", "hysteresis_voltage", "hysteresis_rate", "hysteresis_initial", "leakage_current", "voltage_offset", "voltage_gain"];
+    out.extend(cell.iter().map(|n| format!("cell.{n}")));
     out.extend(["negative.radius_relative_std", "positive.radius_relative_std"].map(String::from));
     out
 }
