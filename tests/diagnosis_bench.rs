@@ -98,7 +98,10 @@ fn judged(t: &Truth, rounds: &[Diagnosis]) -> bool {
     // otherwise is skipped, and the next round's taken for the first: blind bb6).
     let readable = ["missing physics", "no missing physics", "unexplained", "parameter mismatch"];
     assert!(verdicts.iter().all(|v| readable.iter().any(|r| v.starts_with(r))), "a verdict the judge cannot read: {verdicts:?}");
-    let first = &verdicts[0];
+    // The judge's sentence ends at the first full stop followed by white space (its regex
+    // `[^\n]*?(?:\.(?=\s)|$)`): an "e.g. " inside a tie once hid its second name (blind ah5).
+    let verdicts: Vec<&str> = verdicts.iter().map(|v| first_sentence(v)).collect();
+    let first = verdicts[0];
     if t.effect.contains('+') {
         let all = verdicts.join(" ");
         t.accept.iter().all(|g| g.iter().any(|w| all.contains(w)))
@@ -107,6 +110,14 @@ fn judged(t: &Truth, rounds: &[Diagnosis]) -> bool {
     } else {
         !first.starts_with("no missing") && !first.starts_with("unexplained") && t.accept.iter().flatten().any(|w| first.contains(w))
     }
+}
+
+/// `text` up to its first full stop followed by white space (or its first line), as the
+/// bench's judge reads a verdict.
+fn first_sentence(text: &str) -> &str {
+    let line = text.lines().next().unwrap_or_default();
+    let stop = line.char_indices().find(|&(i, c)| c == '.' && line[i + 1..].starts_with(char::is_whitespace));
+    stop.map_or(line, |(i, _)| &line[..=i])
 }
 
 /// A case's truth and its diagnosis (up to 3 rounds) on Chen 2020 at the case's ambient,

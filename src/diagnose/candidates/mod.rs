@@ -242,7 +242,7 @@ impl Candidate {
             Candidate::RcDynamics => "RC / double-layer dynamics",
             Candidate::Hysteresis => "OCV hysteresis",
             Candidate::EntropicChange => "temperature dependence of the open-circuit potentials (their entropic change dU/dT)",
-            Candidate::SecondMaterialNegative => "a second active material in the negative electrode (a composite or blend, e.g. silicon beside graphite: part of its capacity at another open-circuit potential)",
+            Candidate::SecondMaterialNegative => "a second active material in the negative electrode (a composite or blend, such as silicon beside graphite: part of its capacity at another open-circuit potential)",
             Candidate::SecondMaterialPositive => "a second active material in the positive electrode (a blended cathode: part of its capacity at another open-circuit potential)",
             Candidate::SeiGrowth => "SEI growth (lithium lost as the film grows, in cycling and in storage)",
             Candidate::SeiGrowthSeries => "SEI growth, reaction and transport in series (lithium lost as the film grows, more slowly as it thickens)",
