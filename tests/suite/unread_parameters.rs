@@ -32,8 +32,8 @@ fn cell() -> ParameterSet {
     p
 }
 
-/// Every scalar parameter of the switchable submodels: the `sei`, `lam` and `plating` tables
-/// and the cell's and electrodes' submodel parameters.
+/// Every scalar parameter of the switchable submodels: the `sei`, `lam` and `plating` tables,
+/// the cell's and electrodes' submodel parameters and the lumped thermal model's heat balance.
 fn submodel_paths(p: &ParameterSet) -> Vec<String> {
     fn leaves(prefix: &str, v: &serde_json::Value, out: &mut Vec<String>) {
         match v {
@@ -50,6 +50,9 @@ fn submodel_paths(p: &ParameterSet) -> Vec<String> {
     let cell = ["contact_resistance", "rc_resistance", "rc_capacitance", "hysteresis_voltage", "hysteresis_rate", "hysteresis_initial", "leakage_current", "voltage_offset", "voltage_gain"];
     out.extend(cell.iter().map(|n| format!("cell.{n}")));
     out.extend(["negative.radius_relative_std", "positive.radius_relative_std"].map(String::from));
+    let thermal = ["heat_transfer_coefficient", "cooling_area", "cell_volume", "negative_collector_heat_capacity", "positive_collector_heat_capacity"];
+    out.extend(thermal.iter().map(|n| format!("thermal.{n}")));
+    out.extend(["negative", "separator", "positive"].map(|d| format!("{d}.volumetric_heat_capacity")));
     out
 }
 
@@ -84,9 +87,10 @@ fn a_parameter_called_unread_changes_nothing_and_a_laws_own_parameter_changes_th
     let paths = submodel_paths(&p);
     assert!(paths.len() > 40, "{paths:?}");
     let reaction = SeiModel::ReactionLimited;
-    let variants: [(Submodels, &str); 14] = [
+    let variants: [(Submodels, &str); 15] = [
         (Submodels::default(), "positive.thickness"),
         (Submodels { contact_resistance: true, rc: true, hysteresis: true, leak: true, voltage_offset: true, voltage_gain: true, ..Default::default() }, "cell.rc_resistance"),
+        (Submodels { thermal: true, ..Default::default() }, "thermal.heat_transfer_coefficient"),
         (Submodels { particle_size: ParticleSize::Distribution, ..Default::default() }, "positive.radius_relative_std"),
         (Submodels { sei: SeiModel::ReactionLimited, ..Default::default() }, "sei.exchange_current"),
         (Submodels { sei: SeiModel::SolventDiffusionLimited, ..Default::default() }, "sei.solvent_diffusivity"),

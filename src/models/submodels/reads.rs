@@ -47,6 +47,14 @@ pub fn unread_reason(submodels: &Submodels, path: &str) -> Option<String> {
         ("cell", "leakage_current") if !s.leak => off("leak", "leak = true"),
         ("cell", "voltage_offset") if !s.voltage_offset => off("voltage-offset", "voltage_offset = true"),
         ("cell", "voltage_gain") if !s.voltage_gain => off("voltage-gain", "voltage_gain = true"),
+        // The lumped thermal model's heat balance (the isothermal model reads the ambient and
+        // reference temperatures, and the entropic change away from the reference).
+        ("thermal", "heat_transfer_coefficient" | "cooling_area" | "cell_volume" | "negative_collector_heat_capacity" | "positive_collector_heat_capacity")
+        | ("negative" | "separator" | "positive", "volumetric_heat_capacity")
+            if !s.thermal =>
+        {
+            off("thermal", "thermal = true")
+        }
         ("negative" | "positive", "radius_relative_std") if s.particle_size == ParticleSize::Single => {
             off("particle-size distribution", "particle_size = \"distribution\"")
         }
