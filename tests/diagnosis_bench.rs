@@ -1175,7 +1175,7 @@ fn ah4_contact_and_self_heating_in_evtol_hops_spme() {
 }
 
 #[test]
-#[ignore = "fails (blind batch ah's miss, open): DFN data to the SPMe, 8 % lithium lost; round 1 names a tie of a second negative material (5 parameters, 3.08 mV) and the lithium loss (2, 3.22 mV) with the second material first"]
+#[ignore = "slow (blind batch ah): CI skips it; run with --include-ignored"]
 fn ah5_lithium_inventory_in_ferry_crossings_dfn_data_to_spme() {
     run_case("diagnosis-extra/ah5_inventory_8pct_ferry_crossings_shore_charging_9C_10s_dfn_data_spme");
 }
@@ -1196,4 +1196,49 @@ fn ah7_negative_diffusivity_and_lithium_loss_in_hppc_dfn() {
 #[ignore = "slow (blind batch ah): CI skips it; run with --include-ignored"]
 fn ah8_a_voltage_channel_reading_low_at_a_telecom_site_spm() {
     run_case("diagnosis-extra/ah8_voltage_channel_gain_0p4pct_low_telecom_site_constant_power_42C_30s_spm");
+}
+
+#[test]
+fn ai1_negative_control_underwater_glider_survey_dfn() {
+    run_case("diagnosis-extra/ai1_control_underwater_glider_survey_4C_60s_0p3mV_dfn");
+}
+
+#[test]
+#[ignore = "fails (open): named (electrolyte transport) but the cut falls short, 9.01 -> 2.27 mV against the 2.23 mV goal (1.1x the 2.03 mV noise); the candidate refits diffusivity and conductivity, not the transference number, which the case changed (a fit with it free: 2.05 mV, t+ 0.378 against 0.38)"]
+fn ai2_transference_number_in_a_race_car_stint_dfn() {
+    run_case("diagnosis-extra/ai2_transference_number_0p38_race_car_stint_38C_1s_2mV_dfn");
+}
+
+#[test]
+#[ignore = "slow (blind batch ai): CI skips it; run with --include-ignored"]
+fn ai3_positive_electrode_conductivity_in_a_golf_cart_round_spme() {
+    run_case("diagnosis-extra/ai3_positive_conductivity_x0p2_golf_cart_round_15C_5s_spme");
+}
+
+#[test]
+#[ignore = "slow (blind batch ai): CI skips it; run with --include-ignored"]
+fn ai4_positive_diffusivity_on_a_snowmobile_trail_dfn_data_to_spme() {
+    run_case("diagnosis-extra/ai4_diffusivity_positive_x0p35_snowmobile_trail_minus5C_2s_dfn_data_spme");
+}
+
+#[test]
+fn ai5_lithium_inventory_over_two_days_of_peak_shaving_spm() {
+    run_case("diagnosis-extra/ai5_inventory_6pct_peak_shaving_two_days_30C_30s_1p5mV_spm");
+}
+
+#[test]
+#[ignore = "slow (blind batch ai): CI skips it; run with --include-ignored"]
+fn ai6_self_heating_of_shared_scooter_rides_dfn() {
+    run_case("diagnosis-extra/ai6_thermal_h12_recorded_shared_scooter_rides_10C_3s_0p8mV_dfn");
+}
+
+#[test]
+#[ignore = "slow (blind batch ai): CI skips it; run with --include-ignored"]
+fn ai7_sei_film_and_the_lithium_it_took_in_a_city_bus_spm() {
+    run_case("diagnosis-extra/ai7_sei_film_and_inventory_5pct_city_bus_pantograph_45C_10s_3mV_spm");
+}
+
+#[test]
+fn ai8_voltage_offset_and_positive_lam_in_an_oxygen_concentrator_spme() {
+    run_case("diagnosis-extra/ai8_voltage_offset_8mV_low_and_lam_positive_7pct_oxygen_concentrator_22C_20s_0p5mV_spme");
 }
