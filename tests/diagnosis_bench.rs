@@ -56,7 +56,7 @@
 //! with kinetics), 10 % negative LAM under partial CC-CV cycles, a DFN GITT control at 45 degC
 //! and +-15 mV hysteresis from a two-way GITT.
 //!
-//! The nineteen slowest cases (1-5 min each on two cores: pairs of effects, 12-cycle ageing
+//! The slowest cases (47, 1-5 min each on two cores: pairs of effects, 12-cycle ageing
 //! recordings, DFN drives and depletion) are `#[ignore]`d so CI stays well under its 30
 //! minutes; every session runs them with
 //! `cargo test --release --test diagnosis_bench -- --include-ignored` before it stops.
