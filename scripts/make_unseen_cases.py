@@ -3067,16 +3067,17 @@ def at_temperature(p, celsius):
     return p
 
 
-def replay_rmse(root, name, model, params, steps, initial_soc, key, period=1, skip_steps=0):
+def replay_rmse(root, name, model, params, steps, initial_soc, key, period=1, skip_steps=0, shift_V=0.0):
     """Adds to `name`'s truth.json, under `key`, the RMS difference (mV) between the recorded voltage and
     `model` with `params` run through `steps` from `initial_soc` (after `skip_steps` unrecorded steps),
-    at the recording's single (not repeated) times: what one effect or one model gap does on its own."""
+    at the recording's single (not repeated) times: what one effect or one model gap does on its own.
+    `shift_V` is added to the replayed voltage (a voltage channel's offset put on the model)."""
     folder = os.path.join(root, name)
     data = np.loadtxt(os.path.join(folder, "recording.csv"), delimiter=",", skiprows=1)
     t, v = data[:, 0], data[:, 2]
     sol = pybamm.Simulation(model, parameter_values=params, experiment=pybamm.Experiment(steps, period=f"{period} seconds"),
                             solver=pybamm.IDAKLUSolver(rtol=1e-8, atol=1e-8)).solve(initial_soc=initial_soc)
-    tr, vr = sol["Time [s]"].entries, sol["Voltage [V]"].entries
+    tr, vr = sol["Time [s]"].entries, sol["Voltage [V]"].entries + shift_V
     if skip_steps:
         n0 = sum(len(c["Time [s]"].entries) for c in sol.cycles[:skip_steps])
         tr, vr = tr[n0:] - tr[n0], vr[n0:]
@@ -4779,21 +4780,6 @@ def batch_ah(root):
                initial_soc=1.0, seed=3308, period=30, compare=lion.SPM(), post=lambda t, i, v: 0.996 * v)
 
 
-def shifted_replay_rmse(root, name, model, params, steps, initial_soc, key, shift_V, period=1):
-    """As `replay_rmse`, with `shift_V` added to the replayed voltage (a voltage channel's offset put
-    on the model instead of the recording)."""
-    folder = os.path.join(root, name)
-    data = np.loadtxt(os.path.join(folder, "recording.csv"), delimiter=",", skiprows=1)
-    t, v = data[:, 0], data[:, 2]
-    sol = pybamm.Simulation(model, parameter_values=params, experiment=pybamm.Experiment(steps, period=f"{period} seconds"),
-                            solver=pybamm.IDAKLUSolver(rtol=1e-8, atol=1e-8)).solve(initial_soc=initial_soc)
-    tr, vr = sol["Time [s]"].entries, sol["Voltage [V]"].entries + shift_V
-    single = single_times(t)
-    single &= t <= tr[-1]
-    _, first = np.unique(tr, return_index=True)
-    record_rmse(folder, name, key, v[single] - np.interp(t[single], tr[first], vr[first]))
-
-
 def glider_dives(seed, dives):
     """An underwater glider's survey per cell (discharge positive; a buoyancy-driven AUV whose pack has
     many cells in parallel), for each of `dives` dive cycles: at the surface a GPS fix and a satellite
@@ -5137,7 +5123,7 @@ def batch_ai(root):
                         "LAM leaves)"},
                initial_soc=1.0, seed=3408, period=20, noise=5e-4, compare=lion.SPMe(), post=lambda t, i, v: v - 0.008)
     replay_rmse(root, name, lion.SPMe(), poc_cell(0.07), steps, 1.0, "spme_lam_only_rmse_mV", period=20)
-    shifted_replay_rmse(root, name, lion.SPMe(), poc_cell(0.0), steps, 1.0, "spme_offset_only_rmse_mV", -0.008, period=20)
+    replay_rmse(root, name, lion.SPMe(), poc_cell(0.0), steps, 1.0, "spme_offset_only_rmse_mV", period=20, shift_V=-0.008)
 
 
 BATCHES = {"u": batch_u, "v": batch_v, "w": batch_w, "x": batch_x, "y": batch_y, "z": batch_z, "q": batch_q, "r": batch_r, "s": batch_s, "t": batch_t, "p": batch_p, "o": batch_o, "n": batch_n, "m": batch_m, "l": batch_l, "k": batch_k, "j": batch_j, "i": batch_i, "h": batch_h, "f": batch_f, "e": batch_e, "g": batch_g, "d": batch_d, "c": batch_c, "a": batch_a, "b": batch_b, "ab": batch_ab, "ac": batch_ac, "ad": batch_ad, "ae": batch_ae, "af": batch_af, "ag": batch_ag, "ah": batch_ah, "ai": batch_ai}
