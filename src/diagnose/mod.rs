@@ -28,6 +28,7 @@ pub mod candidates;
 pub mod features;
 pub mod locate;
 mod pairs;
+mod refine;
 mod refit_candidate;
 pub mod refit;
 pub mod report;
@@ -378,10 +379,19 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
     if broke_down.is_some() && matches!(verdict, Verdict::NoMissingPhysics) {
         verdict = Verdict::BrokeDown;
     }
-    let residual_after = outcomes.first().and_then(|c| c.fit.as_ref()).map(|f| {
-        let r: Vec<f64> = data.voltage.iter().zip(&f.voltage).map(|(d, m)| m - d).collect();
-        locate::analyse(&data, &features, &r, q)
-    });
+    let after = |outcomes: &[CandidateOutcome]| {
+        outcomes.first().and_then(|c| c.fit.as_ref()).map(|f| {
+            let r: Vec<f64> = data.voltage.iter().zip(&f.voltage).map(|(d, m)| m - d).collect();
+            locate::analyse(&data, &features, &r, q)
+        })
+    };
+    let mut residual_after = after(&outcomes);
+    // A named effect whose fit still leaves structure: its secondary properties refitted.
+    if let (Some(first), Some(structure)) = (outcomes.first_mut().filter(|_| verdict.found()), residual_after.as_ref()) {
+        if refine::refine(first, structure, &round) {
+            residual_after = after(&outcomes);
+        }
+    }
     let current_noise = data.current_noise();
     if current_noise > 0.0 {
         notes.push(format!(

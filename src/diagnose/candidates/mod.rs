@@ -403,6 +403,17 @@ impl Candidate {
             _ => &[],
         }
     }
+
+    /// Secondary properties of the effect (path, lower and upper bound of a linear search)
+    /// refitted beside the candidate's own parameters once it is named and its fit still leaves
+    /// structure ([`crate::diagnose::refine`]): the electrolyte's transference number, the third
+    /// of its transport properties, which a diffusivity factor stands in for only in part.
+    pub fn refinements(self) -> &'static [(&'static str, f64, f64)] {
+        match self {
+            Candidate::ElectrolyteTransport => &[("electrolyte.transference_number", 0.02, 0.9)],
+            _ => &[],
+        }
+    }
 }
 
 #[cfg(test)]
