@@ -388,8 +388,10 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
     let mut residual_after = after(&outcomes);
     // A named effect whose fit still leaves structure: its secondary properties refitted.
     if let (Some(first), Some(structure)) = (outcomes.first_mut().filter(|_| verdict.found()), residual_after.as_ref()) {
-        if refine::refine(first, structure, &round) {
-            residual_after = after(&outcomes);
+        match refine::refine(first, structure, &round) {
+            Some((true, _)) => residual_after = after(&outcomes),
+            Some((false, record)) => notes.push(format!("The named {} was {record}.", first.name)),
+            None => {}
         }
     }
     let current_noise = data.current_noise();

@@ -18,16 +18,17 @@ use crate::problem::fitting::FitParameter;
 
 /// Refits `named` (the first-ranked outcome) with its candidate's secondary parameters free,
 /// when it is a single named effect that has them and its residual `after` is structured, and
-/// keeps the refined fit when the nested tests support it. Returns whether it was kept.
-pub(super) fn refine(named: &mut CandidateOutcome, after: &ResidualAnalysis, round: &Round) -> bool {
+/// keeps the refined fit when the nested tests support it. Returns `None` when no refinement
+/// was tried, else whether it was kept and what was found, in words.
+pub(super) fn refine(named: &mut CandidateOutcome, after: &ResidualAnalysis, round: &Round) -> Option<(bool, String)> {
     let c = named.candidate;
     let secondary = c.refinements();
     let Some(fit) = named.fit.as_ref().filter(|_| named.named && named.partner.is_none() && !secondary.is_empty() && after.structured) else {
-        return false;
+        return None;
     };
-    let Some(mut aug) = c.augment(&round.options.spec, round.base, round.fitted_paths, &round.load) else { return false };
+    let mut aug = c.augment(&round.options.spec, round.base, round.fitted_paths, &round.load)?;
     if aug.extra.iter().any(|p| secondary.iter().any(|s| p.path == s.0)) {
-        return false;
+        return None;
     }
     aug.extra.extend(secondary.iter().map(|&(path, lower, upper)| {
         let v = aug.base.get(path).unwrap_or(0.5 * (lower + upper)).clamp(lower, upper);
@@ -35,8 +36,11 @@ pub(super) fn refine(named: &mut CandidateOutcome, after: &ResidualAnalysis, rou
     }));
     let change = aug.change.clone();
     // One start: where the named fit ended, the secondary parameters at the set's values.
-    let (refined, _, next) = refit_candidate(aug, round.warm, None, Some(fit), round.options, round.data, round.split);
-    let (Some(refined), Some(next)) = (refined, next) else { return false };
+    let paths: Vec<&str> = secondary.iter().map(|s| s.0).collect();
+    let (refined, failed, next) = refit_candidate(aug, round.warm, None, Some(fit), round.options, round.data, round.split);
+    let (Some(refined), Some(next)) = (refined, next) else {
+        return Some((false, format!("refined with {} free: {}; not kept", paths.join(", "), failed.unwrap_or_default())));
+    };
     let n_train = round.split.train_points();
     let nested = select::compare(fit, &refined, n_train);
     let on_bound = refined.names.iter().zip(&refined.on_bound).any(|(n, b)| *b && secondary.iter().any(|s| s.0 == n));
@@ -44,7 +48,6 @@ pub(super) fn refine(named: &mut CandidateOutcome, after: &ResidualAnalysis, rou
     let (names, values): (Vec<String>, Vec<f64>) = refined.names.iter().zip(&refined.values).filter(|(n, _)| !round.baseline.names.contains(n)).map(|(n, v)| (n.clone(), *v)).unzip();
     let implausible = c.implausible(&names, &values, round.base, &round.load);
     let kept = nested.delta_bic > round.options.margins.min_delta_bic && nested.ln_bayes_factor > 0.0 && nested.holdout_gain > 0.0 && !on_bound && implausible.is_none() && refined.converged;
-    let paths: Vec<&str> = secondary.iter().map(|s| s.0).collect();
     let record = format!(
         "refined with {} free: ΔBIC {:.1} against the named fit, held-out RMSE {:.2} -> {:.2} mV{}",
         paths.join(", "),
@@ -64,11 +67,6 @@ pub(super) fn refine(named: &mut CandidateOutcome, after: &ResidualAnalysis, rou
         named.comparison = select::compare(round.baseline, &refined, n_train);
         named.fit = Some(refined);
         named.next = Some(next);
-    } else {
-        named.note = Some(match named.note.take() {
-            Some(n) => format!("{n}; {record}"),
-            None => record,
-        });
     }
-    kept
+    Some((kept, record))
 }
