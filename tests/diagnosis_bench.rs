@@ -56,7 +56,7 @@
 //! with kinetics), 10 % negative LAM under partial CC-CV cycles, a DFN GITT control at 45 degC
 //! and +-15 mV hysteresis from a two-way GITT.
 //!
-//! The slowest cases (47, 1-5 min each on two cores: pairs of effects, 12-cycle ageing
+//! The slowest cases (52, 1-5 min each on two cores: pairs of effects, 12-cycle ageing
 //! recordings, DFN drives and depletion) are `#[ignore]`d so CI stays well under its 30
 //! minutes; every session runs them with
 //! `cargo test --release --test diagnosis_bench -- --include-ignored` before it stops.
@@ -1241,4 +1241,51 @@ fn ai7_sei_film_and_the_lithium_it_took_in_a_city_bus_spm() {
 #[test]
 fn ai8_voltage_offset_and_positive_lam_in_an_oxygen_concentrator_spme() {
     run_case("diagnosis-extra/ai8_voltage_offset_8mV_low_and_lam_positive_7pct_oxygen_concentrator_22C_20s_0p5mV_spme");
+}
+
+// Blind batch aj (twenty-seventh session): named 7 of 8 at its first run (binary of 3f3ee7a).
+
+#[test]
+fn aj1_control_of_a_sonar_buoy_solar_day_spme() {
+    run_case("diagnosis-extra/aj1_control_sonar_buoy_solar_day_8C_20s_0p6mV_spme");
+}
+
+#[test]
+#[ignore = "slow (blind batch aj): CI skips it; run with --include-ignored"]
+fn aj2_contact_resistance_of_a_weeding_robot_spm() {
+    run_case("diagnosis-extra/aj2_contact_4mOhm_weeding_robot_trailer_charge_27C_5s_spm");
+}
+
+#[test]
+fn aj3_lithium_inventory_in_a_rail_signalling_outage_at_minus_8_degc_spme() {
+    run_case("diagnosis-extra/aj3_inventory_7pct_rail_signalling_backup_outage_minus8C_30s_spme");
+}
+
+#[test]
+fn aj4_negative_lam_over_a_tattoo_pen_day_and_cccv_charge_spm() {
+    run_case("diagnosis-extra/aj4_lam_negative_10pct_tattoo_pen_day_cccv_23C_cycler_1p5mV_spm");
+}
+
+#[test]
+#[ignore = "fails (open): the ambient changes during the recording (21 -> -4 -> 21 degC, the cell's temperature recorded); no candidate lets the ambient follow time (the thermal one fits a constant ambient and ends on its h bound), so kinetics stands in: 14.27 -> 5.94 mV, 778 s"]
+fn aj5_ambient_temperature_change_on_a_wheelchair_outing_dfn() {
+    run_case("diagnosis-extra/aj5_ambient_change_wheelchair_outing_in_frost_21C_to_minus4C_recorded_10s_dfn");
+}
+
+#[test]
+#[ignore = "slow (blind batch aj): CI skips it; run with --include-ignored"]
+fn aj6_negative_kinetics_in_a_defibrillator_rescue_dfn() {
+    run_case("diagnosis-extra/aj6_kinetics_negative_x0p4_aed_rescue_street_cabinet_3C_1s_2p5mV_dfn");
+}
+
+#[test]
+#[ignore = "slow (blind batch aj): CI skips it; run with --include-ignored"]
+fn aj7_aged_electrolyte_on_an_electric_outboard_trip_dfn() {
+    run_case("diagnosis-extra/aj7_electrolyte_aged_diffusivity_x0p6_conductivity_x0p7_electric_outboard_14C_2s_0p3mV_dfn");
+}
+
+#[test]
+#[ignore = "slow (blind batch aj): CI skips it; run with --include-ignored"]
+fn aj8_self_heating_with_slow_positive_diffusion_in_a_cordless_vacuum_spme() {
+    run_case("diagnosis-extra/aj8_thermal_h5_recorded_and_diffusivity_positive_x0p5_cordless_vacuum_30C_3s_3mV_spme");
 }
