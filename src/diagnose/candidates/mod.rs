@@ -504,5 +504,18 @@ mod tests {
         assert_eq!(Candidate::Leak.implausible(&names, &[0.009 * q], &base, &Load::default()), None);
         assert!(Candidate::Leak.implausible(&names, &[-0.011 * q], &base, &Load::default()).is_some_and(|why| why.contains("C/100")));
     }
-}
 
+    /// A refinement frees a parameter of the set that the candidate does not already refit,
+    /// over a range that holds the set's value (where the refit starts).
+    #[test]
+    fn refinements_are_other_parameters_of_the_set_within_their_range() {
+        let base = crate::params::chen2020();
+        for c in Candidate::ALL {
+            for &(path, lower, upper) in c.refinements() {
+                let v = base.get(path).unwrap_or_else(|e| panic!("{c:?}: {path}: {e}"));
+                assert!(lower < v && v < upper, "{c:?}: {path} = {v} outside {lower}..{upper}");
+                assert!(!c.refitted_paths().contains(&path), "{c:?} already refits {path}");
+            }
+        }
+    }
+}
