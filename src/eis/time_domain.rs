@@ -98,7 +98,7 @@ pub fn sine_response(
     };
     let solver = SolverOptions { max_step: opts.solver.max_step.min(period / 40.0), ..opts.solver.clone() };
     let mut stats = SolverStats::default();
-    let dae = UnderCurrent { model, current: |t: f64, _: &[f64]| current(t), kinks: Vec::new() };
+    let dae = UnderCurrent { model, current: |t: f64, _: &[f64]| current(t), kinks: Vec::new(), temperature: None };
     integrate(&dae, ws, &solver, 0.0, &mut y, t_end, None, &mut observer, &mut stats)?;
     if voltage.len() < n_samples {
         return Err(Error::Solver { t: t_end, reason: "the integration ended before the fit window".into() });

@@ -278,6 +278,10 @@ impl Model for Ecm {
         self.open_circuit_voltage(y) - current * self.params.r0 - self.rc_voltages(y).iter().sum::<f64>()
     }
 
+    fn temperature_state(&self) -> Option<usize> {
+        self.params.thermal.is_some().then(|| self.len() - 1)
+    }
+
     fn temperature(&self, y: &[f64]) -> f64 {
         if self.params.thermal.is_some() { y[y.len() - 1] } else { self.params.ambient_temperature }
     }

@@ -181,6 +181,10 @@ pub trait Model: Send + Sync {
     fn voltage(&self, y: &[f64], current: f64) -> f64;
     /// Cell temperature (K).
     fn temperature(&self, y: &[f64]) -> f64;
+    /// Index of the temperature state (a lumped thermal submodel), `None` when isothermal.
+    fn temperature_state(&self) -> Option<usize> {
+        None
+    }
     /// Lithium held in the solid phases (mol).
     fn solid_lithium(&self, y: &[f64]) -> f64;
     /// Lithium bound in the SEI (mol); zero without an SEI submodel.

@@ -128,6 +128,10 @@ impl Model for Mpm {
         self.reaction(Side::Positive, y, current).delta - self.reaction(Side::Negative, y, current).delta - current * self.ec.contact_resistance()
     }
 
+    fn temperature_state(&self) -> Option<usize> {
+        self.ec.submodels.thermal.then(|| self.len() - 1)
+    }
+
     fn temperature(&self, y: &[f64]) -> f64 {
         if self.ec.submodels.thermal { y[y.len() - 1] } else { self.ec.params.thermal.ambient_temperature }
     }

@@ -208,6 +208,10 @@ impl Model for Spm {
         Some(self.surface_potential_difference(Side::Negative, sn, y, current))
     }
 
+    fn temperature_state(&self) -> Option<usize> {
+        self.ec.submodels.thermal.then(|| self.len() - 1)
+    }
+
     fn temperature(&self, y: &[f64]) -> f64 {
         if self.ec.submodels.thermal {
             y[y.len() - 1]

@@ -445,6 +445,10 @@ impl Model for Spme {
         self.plating.lithium(&self.ec, y)
     }
 
+    fn temperature_state(&self) -> Option<usize> {
+        self.ec.submodels.thermal.then(|| self.len() - 1)
+    }
+
     fn temperature(&self, y: &[f64]) -> f64 {
         self.temp(y)
     }

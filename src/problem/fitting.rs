@@ -177,6 +177,8 @@ pub struct FittingProblem {
     /// Weight (V/K) of the recorded temperature's residuals beside the voltage's in costs,
     /// when the temperature is fitted too.
     temperature_weight: Option<f64>,
+    /// The recorded temperature the model's temperature follows (times from the start, K).
+    temperature_input: Option<std::sync::Arc<(Vec<f64>, Vec<f64>)>>,
     /// Whether the voltage's residuals enter the costs (false: the temperature alone is fitted).
     voltage_fitted: bool,
     /// Distinct output times (s, from the recording's start) and each point's output index.
@@ -232,6 +234,7 @@ impl FittingProblem {
             protocol,
             pinned: Vec::new(),
             temperature_weight: None,
+            temperature_input: None,
             voltage_fitted: true,
             t_eval,
             output_of_point,
@@ -260,6 +263,7 @@ impl FittingProblem {
             protocol: self.protocol.clone(),
             pinned,
             temperature_weight: self.temperature_weight,
+            temperature_input: self.temperature_input.clone(),
             voltage_fitted: self.voltage_fitted,
             t_eval: self.t_eval.clone(),
             output_of_point: self.output_of_point.clone(),
@@ -333,6 +337,23 @@ impl FittingProblem {
             return Err(Error::invalid("temperature_weight", weight, "must be positive and finite"));
         }
         self.temperature_weight = Some(weight);
+        Ok(self)
+    }
+
+    /// Runs the model at the recorded temperature: its temperature state follows the
+    /// recording's (`simulation::TEMPERATURE_LAG`) in place of its heat balance, so every
+    /// temperature dependence of the set sees the cell's measured temperature. Needs a recorded
+    /// temperature and a thermal model (which supplies the temperature state).
+    pub fn following_recorded_temperature(mut self) -> Result<Self, Error> {
+        let Some(temps) = self.data.temperature.clone() else {
+            return Err(Error::InvalidSetting { field: "data.temperature".into(), reason: "no temperature recorded to follow".into() });
+        };
+        if !self.spec.submodels.thermal {
+            return Err(Error::InvalidSetting { field: "model.submodels.thermal".into(), reason: "the temperature is a state of the thermal submodel only".into() });
+        }
+        let t0 = self.data.time[0];
+        let times = self.data.time.iter().map(|t| t - t0).collect();
+        self.temperature_input = Some(std::sync::Arc::new((times, temps)));
         Ok(self)
     }
 
@@ -417,6 +438,13 @@ impl FittingProblem {
 
     /// Model voltage and its forward sensitivities to the fitted parameters.
     pub fn simulate_with_sensitivities(&self, x: &[f64]) -> Result<Simulated, Error> {
+        if self.temperature_input.is_some() {
+            // The perturbed copies would follow their own heat balance, not the recording.
+            return Err(Error::InvalidSetting {
+                field: "data.temperature".into(),
+                reason: "forward sensitivities do not follow a recorded temperature yet: fit with a derivative-free optimiser".into(),
+            });
+        }
         self.run(x, true)
     }
 
@@ -430,6 +458,7 @@ impl FittingProblem {
             capacity: p.cell.nominal_capacity,
             // Only the voltage at the recorded times is compared.
             charge_at_outputs: false,
+            temperature_input: self.temperature_input.clone(),
         }
     }
 

@@ -81,7 +81,12 @@ pub(crate) struct UnderCurrent<'a, F> {
     pub model: &'a dyn Model,
     pub current: F,
     pub kinks: Vec<f64>,
+    /// The temperature state's index and a recorded temperature (times s, K) it follows.
+    pub temperature: Option<(usize, &'a [f64], &'a [f64])>,
 }
+
+/// Time constant (s) with which a model's temperature follows a recorded one.
+pub const TEMPERATURE_LAG: f64 = 1.0;
 
 impl<F: Fn(f64, &[f64]) -> f64> Dae for UnderCurrent<'_, F> {
     fn len(&self) -> usize {
@@ -100,7 +105,10 @@ impl<F: Fn(f64, &[f64]) -> f64> Dae for UnderCurrent<'_, F> {
         self.model.difference_scale()
     }
     fn rhs(&self, t: f64, y: &[f64], out: &mut [f64]) {
-        self.model.rhs(y, (self.current)(t, y), out)
+        self.model.rhs(y, (self.current)(t, y), out);
+        if let Some((k, times, temps)) = self.temperature {
+            out[k] = (crate::params::function::interpolate(times, temps, t) - y[k]) / TEMPERATURE_LAG;
+        }
     }
     fn breakpoints(&self) -> &[f64] {
         &self.kinks

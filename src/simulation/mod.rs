@@ -35,6 +35,10 @@ pub struct SimOptions {
     /// current and state there, with the charge and energy of the last solver step (false:
     /// much cheaper when the outputs are dense, as for a recording sampled every second).
     pub charge_at_outputs: bool,
+    /// A recorded cell temperature (times in s from the start, temperatures in K) that the
+    /// model's temperature state follows (`dT/dt = (T_rec(t) - T) / TEMPERATURE_LAG`) in place
+    /// of its heat balance; needs a thermal submodel.
+    pub temperature_input: Option<std::sync::Arc<(Vec<f64>, Vec<f64>)>>,
 }
 
 impl SimOptions {
@@ -47,6 +51,7 @@ impl SimOptions {
             cutoffs: (p.cell.lower_cutoff, p.cell.upper_cutoff),
             capacity: p.cell.nominal_capacity,
             charge_at_outputs: true,
+            temperature_input: None,
         }
     }
 }
@@ -305,7 +310,8 @@ pub fn simulate_observed(
         let ends_early = step.has_cutoffs() || matches!(step, Step::Hold { until_current: Some(_), .. });
         let event: Option<&dyn Fn(f64, &[f64]) -> f64> = if ends_early { Some(&event_fn) } else { None };
         let kinks = step.kinks().iter().map(|k| t0 + k).collect();
-        let dae = UnderCurrent { model, current: |t: f64, y: &[f64]| drive.current(t, y), kinks };
+        let temperature = opts.temperature_input.as_deref().zip(model.temperature_state()).map(|((t, v), k)| (k, t.as_slice(), v.as_slice()));
+        let dae = UnderCurrent { model, current: |t: f64, y: &[f64]| drive.current(t, y), kinks, temperature };
         let mut observer = |t_old: f64, dense: &DenseOutput| {
             let t_new = dense.t_end();
             if let Some(te) = t_eval {

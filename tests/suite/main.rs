@@ -53,6 +53,7 @@ mod readers_never_panic;
 mod readme;
 mod refused_inputs;
 mod reported_searches;
+mod recorded_temperature;
 mod recording_sign;
 mod reference_curves;
 mod samplers;

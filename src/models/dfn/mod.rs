@@ -342,6 +342,10 @@ impl Model for Dfn {
         phi_l - current * self.ec.contact_resistance()
     }
 
+    fn temperature_state(&self) -> Option<usize> {
+        self.layout.temp
+    }
+
     fn temperature(&self, y: &[f64]) -> f64 {
         self.temp(y)
     }
