@@ -29,7 +29,8 @@ fn main() {
         }
         let start = std::time::Instant::now();
         let rmse = |soc: f64| {
-            let v = p.simulate(&[soc]).expect("replay");
+            // A replay that breaks down (the cell emptied early) scores infinitely badly.
+            let Ok(v) = p.simulate(&[soc]) else { return f64::INFINITY };
             // Points at a repeated time (either side of a current step) are left out, as in fits.
             let kept: Vec<f64> = (0..v.len()).filter(|&k| !rec.is_repeated(k)).map(|k| (rec.voltage[k] - v[k]).powi(2)).collect();
             (kept.iter().sum::<f64>() / kept.len() as f64).sqrt()
