@@ -185,6 +185,13 @@ pub trait Model: Send + Sync {
     fn temperature_state(&self) -> Option<usize> {
         None
     }
+    /// Rows that follow a recorded temperature `T_rec` when one is given, each with its
+    /// target's weight `w`: `dz/dt = (w T_rec(t) - z) / lag` in place of the model's equation
+    /// (`w = 1` for the temperature itself, `0` for a sensitivity of it, which the recording
+    /// does not depend on).
+    fn temperature_rows(&self) -> Vec<(usize, f64)> {
+        self.temperature_state().map(|k| (k, 1.0)).into_iter().collect()
+    }
     /// Lithium held in the solid phases (mol).
     fn solid_lithium(&self, y: &[f64]) -> f64;
     /// Lithium bound in the SEI (mol); zero without an SEI submodel.

@@ -438,13 +438,6 @@ impl FittingProblem {
 
     /// Model voltage and its forward sensitivities to the fitted parameters.
     pub fn simulate_with_sensitivities(&self, x: &[f64]) -> Result<Simulated, Error> {
-        if self.temperature_input.is_some() {
-            // The perturbed copies would follow their own heat balance, not the recording.
-            return Err(Error::InvalidSetting {
-                field: "data.temperature".into(),
-                reason: "forward sensitivities do not follow a recorded temperature yet: fit with a derivative-free optimiser".into(),
-            });
-        }
         self.run(x, true)
     }
 

@@ -199,6 +199,11 @@ impl Model for Sensitivities<'_> {
     fn temperature(&self, z: &[f64]) -> f64 {
         self.base.temperature(&z[..self.n()])
     }
+    /// The base model's temperature follows the recording; its sensitivities decay to zero.
+    fn temperature_rows(&self) -> Vec<(usize, f64)> {
+        let n = self.n();
+        self.base.temperature_state().map_or_else(Vec::new, |k| (0..=self.perturbed.len()).map(|b| (b * n + k, if b == 0 { 1.0 } else { 0.0 })).collect())
+    }
     fn solid_lithium(&self, z: &[f64]) -> f64 {
         self.base.solid_lithium(&z[..self.n()])
     }

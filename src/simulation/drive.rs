@@ -81,8 +81,9 @@ pub(crate) struct UnderCurrent<'a, F> {
     pub model: &'a dyn Model,
     pub current: F,
     pub kinks: Vec<f64>,
-    /// The temperature state's index and a recorded temperature (times s, K) it follows.
-    pub temperature: Option<(usize, &'a [f64], &'a [f64])>,
+    /// The rows that follow a recorded temperature ([`Model::temperature_rows`]) and the
+    /// recording (times s, K).
+    pub temperature: Option<(Vec<(usize, f64)>, &'a [f64], &'a [f64])>,
 }
 
 /// Time constant (s) with which a model's temperature follows a recorded one.
@@ -106,8 +107,11 @@ impl<F: Fn(f64, &[f64]) -> f64> Dae for UnderCurrent<'_, F> {
     }
     fn rhs(&self, t: f64, y: &[f64], out: &mut [f64]) {
         self.model.rhs(y, (self.current)(t, y), out);
-        if let Some((k, times, temps)) = self.temperature {
-            out[k] = (crate::params::function::interpolate(times, temps, t) - y[k]) / TEMPERATURE_LAG;
+        if let Some((rows, times, temps)) = &self.temperature {
+            let recorded = crate::params::function::interpolate(times, temps, t);
+            for &(k, w) in rows {
+                out[k] = (w * recorded - y[k]) / TEMPERATURE_LAG;
+            }
         }
     }
     fn breakpoints(&self) -> &[f64] {

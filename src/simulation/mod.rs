@@ -310,7 +310,7 @@ pub fn simulate_observed(
         let ends_early = step.has_cutoffs() || matches!(step, Step::Hold { until_current: Some(_), .. });
         let event: Option<&dyn Fn(f64, &[f64]) -> f64> = if ends_early { Some(&event_fn) } else { None };
         let kinks = step.kinks().iter().map(|k| t0 + k).collect();
-        let temperature = opts.temperature_input.as_deref().zip(model.temperature_state()).map(|((t, v), k)| (k, t.as_slice(), v.as_slice()));
+        let temperature = opts.temperature_input.as_deref().map(|(t, v)| (model.temperature_rows(), t.as_slice(), v.as_slice())).filter(|(rows, ..)| !rows.is_empty());
         let dae = UnderCurrent { model, current: |t: f64, y: &[f64]| drive.current(t, y), kinks, temperature };
         let mut observer = |t_old: f64, dense: &DenseOutput| {
             let t_new = dense.t_end();

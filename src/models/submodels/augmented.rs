@@ -201,6 +201,9 @@ impl Model for Augmented {
     fn temperature(&self, y: &[f64]) -> f64 {
         self.base.temperature(&y[..self.n_base])
     }
+    fn temperature_state(&self) -> Option<usize> {
+        self.base.temperature_state()
+    }
 
     fn solid_lithium(&self, y: &[f64]) -> f64 {
         self.base.solid_lithium(&y[..self.n_base])
