@@ -12,7 +12,7 @@
 //! were.
 
 use super::locate::ResidualAnalysis;
-use super::refit_candidate::refit_candidate;
+use super::refit_candidate::{own_values, refit_candidate};
 use super::{CandidateOutcome, Round, select};
 use crate::problem::fitting::FitParameter;
 
@@ -45,7 +45,7 @@ pub(super) fn refine(named: &mut CandidateOutcome, after: &ResidualAnalysis, rou
     let nested = select::compare(fit, &refined, n_train);
     let on_bound = refined.names.iter().zip(&refined.on_bound).any(|(n, b)| *b && secondary.iter().any(|s| s.0 == n));
     // The candidate's own values must stay plausible with the secondary ones free.
-    let (names, values): (Vec<String>, Vec<f64>) = refined.names.iter().zip(&refined.values).filter(|(n, _)| !round.baseline.names.contains(n)).map(|(n, v)| (n.clone(), *v)).unzip();
+    let (names, values) = own_values(&refined, round.baseline);
     let implausible = c.implausible(&names, &values, round.base, &round.load);
     let kept = nested.delta_bic > round.options.margins.min_delta_bic && nested.ln_bayes_factor > 0.0 && nested.holdout_gain > 0.0 && !on_bound && implausible.is_none() && refined.converged;
     let record = format!(

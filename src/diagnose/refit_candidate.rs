@@ -176,7 +176,7 @@ pub(super) fn assess(c: Candidate, aug: Result<candidates::Augmentation, String>
     let Some(f) = fit else { return out };
     (out.comparison, out.clears_margins) = standard(&f);
     // Plausibility of the candidate's own values, not the baseline's.
-    let (names, values): (Vec<String>, Vec<f64>) = f.names.iter().zip(&f.values).filter(|(n, _)| !baseline.names.contains(n)).map(|(n, v)| (n.clone(), *v)).unzip();
+    let (names, values) = own_values(&f, baseline);
     // A candidate that makes another's structural change and keeps the set's values is that
     // other candidate: not named twice.
     let alias = c.structural_alias(options.spec.kind).filter(|_| keeps_set_values(&f, &names, base));
@@ -188,4 +188,10 @@ pub(super) fn assess(c: Candidate, aug: Result<candidates::Augmentation, String>
     out.name = c.named_by_values(&f.names, &f.values, base, &round.load);
     out.fit = Some(f);
     out
+}
+
+/// The candidate's own fitted parameters in `f` (names, values): those the user's model
+/// `baseline` does not fit.
+pub(super) fn own_values(f: &FitOutcome, baseline: &FitOutcome) -> (Vec<String>, Vec<f64>) {
+    f.names.iter().zip(&f.values).filter(|(n, _)| !baseline.names.contains(n)).map(|(n, v)| (n.clone(), *v)).unzip()
 }

@@ -283,7 +283,7 @@ impl Model for Ecm {
     }
 
     fn temperature(&self, y: &[f64]) -> f64 {
-        if self.params.thermal.is_some() { y[y.len() - 1] } else { self.params.ambient_temperature }
+        self.temperature_state().map_or(self.params.ambient_temperature, |k| y[k])
     }
 
     /// Charge-equivalent lithium `SOC Q 3600 / F` (mol): the cyclable lithium still to move

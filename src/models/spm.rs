@@ -213,11 +213,7 @@ impl Model for Spm {
     }
 
     fn temperature(&self, y: &[f64]) -> f64 {
-        if self.ec.submodels.thermal {
-            y[y.len() - 1]
-        } else {
-            self.ec.params.thermal.ambient_temperature
-        }
+        self.temperature_state().map_or(self.ec.params.thermal.ambient_temperature, |k| y[k])
     }
 
     fn solid_lithium(&self, y: &[f64]) -> f64 {

@@ -175,7 +175,7 @@ impl Spme {
     }
 
     fn temp(&self, y: &[f64]) -> f64 {
-        if self.ec.submodels.thermal { y[y.len() - 1] } else { self.ec.params.thermal.ambient_temperature }
+        self.temperature_state().map_or(self.ec.params.thermal.ambient_temperature, |k| y[k])
     }
 
     /// Volumetric reaction current `a j` (A/m^3) in each x volume, uniform in each electrode,

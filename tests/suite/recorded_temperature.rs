@@ -13,20 +13,30 @@ use cellstudio::problem::fitting::{FitParameter, FittingProblem, INITIAL_SOC, Mo
 
 const CASE: &str = "tests/data/diagnosis-extra/aj5_ambient_change_wheelchair_outing_in_frost_21C_to_minus4C_recorded_10s_dfn/recording.csv";
 
-/// RMSE (V) of the replay at initial state of charge 0.9, points at a repeated time left out.
-fn replay_rmse(thermal: bool, follow: bool) -> f64 {
+/// The aj5 recording, and a fit of its initial state of charge with `kind` (thermal or not),
+/// at the case's ambient and recorded first temperature, following the recorded temperature
+/// when `follow`.
+fn problem(kind: ModelKind, thermal: bool, follow: bool) -> (Recording, FittingProblem) {
     let rec = Recording::from_csv(Path::new(CASE)).unwrap();
     let mut base = chen2020();
     base.thermal.ambient_temperature = 294.15;
     base.thermal.initial_temperature = rec.temperature.as_ref().unwrap()[0];
-    let spec = ModelSpec { kind: ModelKind::Dfn, submodels: Submodels { thermal, ..Submodels::default() }, mesh: Default::default() };
-    let mut problem = FittingProblem::new(spec, base, vec![FitParameter::linear(INITIAL_SOC, 0.9, 0.3, 1.0)], rec.clone()).unwrap();
-    if follow {
-        problem = problem.following_recorded_temperature().unwrap();
-    }
+    let spec = ModelSpec { kind, submodels: Submodels { thermal, ..Submodels::default() }, mesh: Default::default() };
+    let problem = FittingProblem::new(spec, base, vec![FitParameter::linear(INITIAL_SOC, 0.9, 0.3, 1.0)], rec.clone()).unwrap();
+    (rec, if follow { problem.following_recorded_temperature().unwrap() } else { problem })
+}
+
+/// Points not at a repeated time (either side of a current step), as fits count them.
+fn counted(rec: &Recording) -> Vec<usize> {
+    (0..rec.time.len()).filter(|&k| !rec.is_repeated(k)).collect()
+}
+
+/// RMSE (V) of the DFN's replay at initial state of charge 0.9.
+fn replay_rmse(thermal: bool, follow: bool) -> f64 {
+    let (rec, problem) = problem(ModelKind::Dfn, thermal, follow);
     let v = problem.simulate(&[0.9]).unwrap();
-    let sq: Vec<f64> = (0..v.len()).filter(|&k| !rec.is_repeated(k)).map(|k| (rec.voltage[k] - v[k]).powi(2)).collect();
-    (sq.iter().sum::<f64>() / sq.len() as f64).sqrt()
+    let points = counted(&rec);
+    (points.iter().map(|&k| (rec.voltage[k] - v[k]).powi(2)).sum::<f64>() / points.len() as f64).sqrt()
 }
 
 #[test]
@@ -40,16 +50,14 @@ fn a_dfn_following_the_recorded_temperature_replays_a_cell_taken_into_the_cold()
 
 #[test]
 fn following_a_temperature_needs_one_recorded_and_a_thermal_model() {
-    let rec = Recording::from_csv(Path::new(CASE)).unwrap();
-    let problem = |thermal: bool, rec: Recording| {
-        let spec = ModelSpec { kind: ModelKind::Spm, submodels: Submodels { thermal, ..Submodels::default() }, mesh: Default::default() };
-        FittingProblem::new(spec, chen2020(), vec![FitParameter::linear(INITIAL_SOC, 0.9, 0.3, 1.0)], rec).unwrap()
-    };
-    let why = problem(false, rec.clone()).following_recorded_temperature().err().unwrap().to_string();
+    let (rec, isothermal) = problem(ModelKind::Spm, false, false);
+    let why = isothermal.following_recorded_temperature().err().unwrap().to_string();
     assert!(why.contains("model.submodels.thermal"), "{why}");
-    let mut without = rec.clone();
+    let mut without = rec;
     without.temperature = None;
-    let why = problem(true, without).following_recorded_temperature().err().unwrap().to_string();
+    let spec = ModelSpec { kind: ModelKind::Spm, submodels: Submodels { thermal: true, ..Submodels::default() }, mesh: Default::default() };
+    let unrecorded = FittingProblem::new(spec, chen2020(), vec![FitParameter::linear(INITIAL_SOC, 0.9, 0.3, 1.0)], without).unwrap();
+    let why = unrecorded.following_recorded_temperature().err().unwrap().to_string();
     assert!(why.contains("data.temperature"), "{why}");
 }
 
@@ -67,24 +75,16 @@ fn sensitivities_follow_the_recorded_temperature() {
 }
 
 /// RMS difference of dV/dSOC from forward sensitivities and from a central difference of two
-/// replays, relative to the latter's RMS.
+/// replays, relative to the latter's RMS (thermal SPMe).
 fn sensitivity_error(follow: bool) -> f64 {
-    let rec = Recording::from_csv(Path::new(CASE)).unwrap();
-    let mut base = chen2020();
-    base.thermal.ambient_temperature = 294.15;
-    base.thermal.initial_temperature = rec.temperature.as_ref().unwrap()[0];
-    let spec = ModelSpec { kind: ModelKind::Spme, submodels: Submodels { thermal: true, ..Submodels::default() }, mesh: Default::default() };
-    let mut problem = FittingProblem::new(spec, base, vec![FitParameter::linear(INITIAL_SOC, 0.9, 0.3, 1.0)], rec.clone()).unwrap();
-    if follow {
-        problem = problem.following_recorded_temperature().unwrap();
-    }
+    let (rec, problem) = problem(ModelKind::Spme, true, follow);
     let with = problem.simulate_with_sensitivities(&[0.9]).unwrap();
     let h = 1e-3;
     let (up, down) = (problem.simulate(&[0.9 + h]).unwrap(), problem.simulate(&[0.9 - h]).unwrap());
     let rows: Vec<f64> = with.sensitivity_rows().map(|r| r[0]).collect();
-    let keep: Vec<usize> = (0..rows.len()).filter(|&k| !rec.is_repeated(k)).collect();
-    let difference: Vec<f64> = keep.iter().map(|&k| (up[k] - down[k]) / (2.0 * h)).collect();
+    let points = counted(&rec);
+    let difference: Vec<f64> = points.iter().map(|&k| (up[k] - down[k]) / (2.0 * h)).collect();
     let scale = (difference.iter().map(|d| d * d).sum::<f64>() / difference.len() as f64).sqrt();
-    let error = (keep.iter().zip(&difference).map(|(&k, d)| (rows[k] - d).powi(2)).sum::<f64>() / difference.len() as f64).sqrt();
+    let error = (points.iter().zip(&difference).map(|(&k, d)| (rows[k] - d).powi(2)).sum::<f64>() / difference.len() as f64).sqrt();
     error / scale
 }
