@@ -22,11 +22,8 @@ fn main() {
     base.thermal.ambient_temperature = ambient;
     base.thermal.initial_temperature = rec.temperature.as_ref().map_or(ambient, |t| t[0]);
     for (label, thermal, follow) in [("isothermal", false, false), ("self-heating, constant ambient", true, false), ("temperature as recorded", true, true)] {
-        let spec = ModelSpec { kind, submodels: Submodels { thermal, ..Submodels::default() }, mesh: Default::default() };
-        let mut p = FittingProblem::new(spec, base.clone(), vec![FitParameter::linear(INITIAL_SOC, 0.9, 0.3, 1.0)], rec.clone()).expect("problem");
-        if follow {
-            p = p.following_recorded_temperature().expect("follow");
-        }
+        let spec = ModelSpec { kind, submodels: Submodels { thermal, ..Submodels::default() }, mesh: Default::default(), recorded_temperature: follow };
+        let p = FittingProblem::new(spec, base.clone(), vec![FitParameter::linear(INITIAL_SOC, 0.9, 0.3, 1.0)], rec.clone()).expect("problem");
         let start = std::time::Instant::now();
         let rmse = |soc: f64| {
             // A replay that breaks down (the cell emptied early) scores infinitely badly.

@@ -52,7 +52,7 @@ pub fn superseded(rounds: &[Diagnosis], model: &FinalModel, options: &DiagnoseOp
         if replaced || d.spec.kind != after.spec.kind {
             continue;
         }
-        let spec = reverted(model.spec, d.spec.submodels, after.spec.submodels);
+        let spec = reverted(model.spec, &d.spec, &after.spec);
         let whole = take_out(model, spec, &added, &c.name, i, last, options);
         if whole.is_some() || c.partner.is_none() {
             out.extend(whole);
@@ -67,7 +67,7 @@ pub fn superseded(rounds: &[Diagnosis], model: &FinalModel, options: &DiagnoseOp
                 return None;
             }
             let own: Vec<&String> = added.iter().copied().filter(|p| aug.extra.iter().any(|e| &e.path == *p)).collect();
-            let spec = reverted(model.spec, d.spec.submodels, aug.spec.submodels);
+            let spec = reverted(model.spec, &d.spec, &aug.spec);
             let mut s = take_out(model, spec, &own, &member.named_by_values(&f.names, &f.values, model.base, &load), i, last, options)?;
             s.kept = other.map(|o| own_name(c, o, model.base, &load));
             Some(s)
@@ -78,8 +78,13 @@ pub fn superseded(rounds: &[Diagnosis], model: &FinalModel, options: &DiagnoseOp
     out
 }
 
-/// `spec` with the submodels that `after` turned on over `before` turned off again.
-fn reverted(mut spec: ModelSpec, before: crate::models::Submodels, after: crate::models::Submodels) -> ModelSpec {
+/// `spec` with the submodels (and the recorded temperature's use) that `after` turned on over
+/// `before` turned off again.
+fn reverted(mut spec: ModelSpec, before: &ModelSpec, after: &ModelSpec) -> ModelSpec {
+    if before.recorded_temperature != after.recorded_temperature {
+        spec.recorded_temperature = before.recorded_temperature;
+    }
+    let (before, after) = (before.submodels, after.submodels);
     if before.contact_resistance != after.contact_resistance {
         spec.submodels.contact_resistance = before.contact_resistance;
     }

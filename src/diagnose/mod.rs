@@ -23,6 +23,7 @@ mod ageing;
 pub mod backward;
 mod baseline;
 mod breakdown;
+mod heat_balance;
 pub use baseline::Breakdown;
 pub mod candidates;
 pub mod features;
@@ -196,6 +197,9 @@ pub fn describe(spec: &ModelSpec) -> String {
             out.push_str(name);
         }
     }
+    if spec.recorded_temperature {
+        out.push_str(" (temperature as recorded)");
+    }
     out
 }
 
@@ -325,6 +329,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
         })
         .collect();
     progress.finish_and_clear();
+    heat_balance::read_only_if_unpredicted(&mut outcomes, &baseline, &data);
     // Named candidates first, compared with one another at common effective points; the
     // others by their gain over the user's model.
     let n_common = select::common_effective_points(outcomes.iter().filter(|c| c.named).map(|c| &c.comparison));

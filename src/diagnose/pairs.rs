@@ -274,6 +274,7 @@ fn one_physics(a: Candidate, b: Candidate) -> bool {
         ActiveMaterialGrowth | ActiveMaterialThroughput => Some(2),
         SeiGrowth | SeiGrowthSeries => Some(3),
         VoltageOffset | VoltageGain => Some(4),
+        Thermal | RecordedTemperature => Some(5),
         _ => None,
     };
     family(a).is_some() && family(a) == family(b)
@@ -290,6 +291,7 @@ mod tests {
         assert!(one_physics(Electrolyte, ElectrolyteTransport));
         assert!(one_physics(SeiGrowth, SeiGrowthSeries));
         assert!(one_physics(VoltageOffset, VoltageGain));
+        assert!(one_physics(Thermal, RecordedTemperature));
         assert!(!one_physics(LithiumPlating, SeiGrowth));
         assert!(!one_physics(SeriesResistance, LithiumInventory));
     }

@@ -239,6 +239,10 @@ pub struct FitOutcome {
     pub rmse_train: f64,
     pub rmse_holdout: f64,
     pub rmse_all: f64,
+    /// RMS residual (K) of the recorded temperature over all usable points, when a heat
+    /// balance was fitted to it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub temperature_rmse: Option<f64>,
     /// Lag-1 autocorrelation of the training residual (-).
     pub lag1: f64,
     /// Gaussian log-likelihood of the training points (white noise, `σ` at its maximum).
@@ -297,7 +301,10 @@ pub fn fit_and_score(
     if settings.start_at_rest {
         problem = problem.starting_at_rest()?;
     }
-    if let Some(w) = temperature_weight(data).filter(|_| problem.spec.submodels.thermal) {
+    // A heat balance is fitted to the recorded temperature too; a model that reads it has
+    // nothing to fit there.
+    let temperature_fitted = problem.spec.submodels.thermal && !problem.spec.recorded_temperature;
+    if let Some(w) = temperature_weight(data).filter(|_| temperature_fitted) {
         problem = problem.fitting_temperature(w)?;
     }
     let mut points = if starts.points.is_empty() { vec![problem.initial()] } else { starts.points.clone() };
@@ -353,6 +360,15 @@ pub fn fit_and_score(
         (None, None) => unreachable!("at least one start"),
     };
     let r: Vec<f64> = data.voltage.iter().zip(&fit.voltage).map(|(d, m)| m - d).collect();
+    let all_points = indicator(r.len(), |i| split.holdout[i] || split.train[i] > 0.0);
+    let temperature_rmse = match (&data.temperature, temperature_fitted) {
+        (Some(recorded), true) => {
+            let modelled = problem.simulate_outputs(&fit.x)?.temperature;
+            let dt: Vec<f64> = modelled.iter().zip(recorded).map(|(m, d)| m - d).collect();
+            Some(weighted_rms(&dt, &all_points))
+        }
+        _ => None,
+    };
     let n = split.train_points() as f64;
     let sse: f64 = r.iter().zip(&split.train).map(|(r, w)| w * r * r).sum();
     let sigma2 = (sse / n).max(f64::MIN_POSITIVE);
@@ -374,7 +390,8 @@ pub fn fit_and_score(
         parameters: k + structural,
         rmse_train: sigma2.sqrt(),
         rmse_holdout: weighted_rms(&r, &indicator(r.len(), |i| split.holdout[i])),
-        rmse_all: weighted_rms(&r, &indicator(r.len(), |i| split.holdout[i] || split.train[i] > 0.0)),
+        rmse_all: weighted_rms(&r, &all_points),
+        temperature_rmse,
         lag1: lag1(&r, &split.train),
         log_likelihood: -0.5 * n * ((2.0 * std::f64::consts::PI * sigma2).ln() + 1.0),
         ln_det_information: fit.ln_det_information,

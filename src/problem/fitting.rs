@@ -29,11 +29,16 @@ pub struct ModelSpec {
     pub submodels: Submodels,
     #[serde(default)]
     pub mesh: MeshSizes,
+    /// The thermal submodel's temperature follows the recording's instead of its heat
+    /// balance ([`FittingProblem::following_recorded_temperature`]): needs `submodels.thermal`
+    /// and a recorded temperature.
+    #[serde(default)]
+    pub recorded_temperature: bool,
 }
 
 impl ModelSpec {
     pub fn new(kind: ModelKind, submodels: Submodels) -> Self {
-        Self { kind, submodels, mesh: MeshSizes::default() }
+        Self { kind, submodels, mesh: MeshSizes::default(), recorded_temperature: false }
     }
 
     fn builder(&self) -> ModelBuilder {
@@ -223,7 +228,7 @@ impl FittingProblem {
         let weights = (0..n).map(|k| if data.is_repeated(k) { 0.0 } else { 1.0 }).collect();
         let protocol = data.protocol();
         protocol.validate()?;
-        Ok(Self {
+        let problem = Self {
             spec,
             base,
             parameters,
@@ -239,7 +244,11 @@ impl FittingProblem {
             t_eval,
             output_of_point,
             pool: Mutex::new(Vec::new()),
-        })
+        };
+        match spec.recorded_temperature {
+            true => problem.following_recorded_temperature(),
+            false => Ok(problem),
+        }
     }
 
     /// The same problem with fitted parameter `k` held at `value` (parameter units) and the

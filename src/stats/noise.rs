@@ -42,8 +42,13 @@ const TEMPERATURE_RESOLUTION: f64 = 0.1;
 /// does. `None` when the voltage shows no noise.
 pub fn temperature_weight(voltage: &[f64], temperature: &[f64], t: &[f64]) -> Option<f64> {
     let noise_v = noise_from_dense_differences(voltage, t);
-    let noise_t = noise_from_dense_differences(temperature, t).max(TEMPERATURE_RESOLUTION);
-    (noise_v > 0.0).then(|| noise_v / noise_t)
+    (noise_v > 0.0).then(|| noise_v / temperature_noise(temperature, t))
+}
+
+/// Noise (K) of a recorded temperature at times `t` (s): [`noise_from_dense_differences`],
+/// at least [`TEMPERATURE_RESOLUTION`].
+pub fn temperature_noise(temperature: &[f64], t: &[f64]) -> f64 {
+    noise_from_dense_differences(temperature, t).max(TEMPERATURE_RESOLUTION)
 }
 
 #[cfg(test)]

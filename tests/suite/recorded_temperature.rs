@@ -1,4 +1,4 @@
-//! A model whose temperature follows a recorded one (`FittingProblem::following_recorded_temperature`),
+//! A model whose temperature follows a recorded one (`ModelSpec::recorded_temperature`),
 //! proven on a PyBaMM-made recording (blind batch aj5): a wheelchair's cell taken from 21 degC
 //! indoors to -4 degC outside and back, its temperature recorded. The isothermal DFN at 21 degC
 //! misses it by about 14 mV; following the recorded temperature, the DFN at the case's true
@@ -21,9 +21,9 @@ fn problem(kind: ModelKind, thermal: bool, follow: bool) -> (Recording, FittingP
     let mut base = chen2020();
     base.thermal.ambient_temperature = 294.15;
     base.thermal.initial_temperature = rec.temperature.as_ref().unwrap()[0];
-    let spec = ModelSpec { kind, submodels: Submodels { thermal, ..Submodels::default() }, mesh: Default::default() };
+    let spec = ModelSpec { kind, submodels: Submodels { thermal, ..Submodels::default() }, mesh: Default::default(), recorded_temperature: follow };
     let problem = FittingProblem::new(spec, base, vec![FitParameter::linear(INITIAL_SOC, 0.9, 0.3, 1.0)], rec.clone()).unwrap();
-    (rec, if follow { problem.following_recorded_temperature().unwrap() } else { problem })
+    (rec, problem)
 }
 
 /// Points not at a repeated time (either side of a current step), as fits count them.
@@ -50,14 +50,16 @@ fn a_dfn_following_the_recorded_temperature_replays_a_cell_taken_into_the_cold()
 
 #[test]
 fn following_a_temperature_needs_one_recorded_and_a_thermal_model() {
-    let (rec, isothermal) = problem(ModelKind::Spm, false, false);
-    let why = isothermal.following_recorded_temperature().err().unwrap().to_string();
+    let rec = Recording::from_csv(Path::new(CASE)).unwrap();
+    let follow = |thermal: bool, rec: Recording| {
+        let spec = ModelSpec { kind: ModelKind::Spm, submodels: Submodels { thermal, ..Submodels::default() }, mesh: Default::default(), recorded_temperature: true };
+        FittingProblem::new(spec, chen2020(), vec![FitParameter::linear(INITIAL_SOC, 0.9, 0.3, 1.0)], rec).err().expect("refused").to_string()
+    };
+    let why = follow(false, rec.clone());
     assert!(why.contains("model.submodels.thermal"), "{why}");
     let mut without = rec;
     without.temperature = None;
-    let spec = ModelSpec { kind: ModelKind::Spm, submodels: Submodels { thermal: true, ..Submodels::default() }, mesh: Default::default() };
-    let unrecorded = FittingProblem::new(spec, chen2020(), vec![FitParameter::linear(INITIAL_SOC, 0.9, 0.3, 1.0)], without).unwrap();
-    let why = unrecorded.following_recorded_temperature().err().unwrap().to_string();
+    let why = follow(true, without);
     assert!(why.contains("data.temperature"), "{why}");
 }
 

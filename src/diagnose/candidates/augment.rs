@@ -126,6 +126,21 @@ impl Candidate {
                 };
                 (extra, change.into())
             }
+            Candidate::RecordedTemperature => {
+                if spec.recorded_temperature {
+                    return None;
+                }
+                spec.submodels.thermal = true;
+                spec.recorded_temperature = true;
+                // The set's temperature dependences enter as fixed values; a heat balance the
+                // user's model fitted is read from the recording instead.
+                structural_parameters = temperature_dependences(&p);
+                if structural_parameters == 0 {
+                    return None;
+                }
+                replaces.extend(fitted.iter().filter(|f| f.starts_with("thermal.")).cloned());
+                (Vec::new(), "lumped thermal submodel on, its temperature read from the recording in place of its heat balance".into())
+            }
             Candidate::EntropicChange => {
                 // Offered where the OCPs' temperature term is seen: the model away from their
                 // reference temperature, or heating itself. Each electrode keeps the set's
@@ -247,4 +262,12 @@ impl Candidate {
         let screened = self.is_ageing();
         Some(Augmentation { spec, base: p, extra, replaces, structural_parameters, change, screened })
     }
+}
+
+/// The temperature dependences of set `p`: its non-zero activation energies (particle
+/// diffusivities, reaction rates, electrolyte, SEI) and entropic changes of the OCPs.
+fn temperature_dependences(p: &ParameterSet) -> usize {
+    let electrodes = [&p.negative, &p.positive];
+    let energies = electrodes.iter().flat_map(|e| [e.diffusivity_activation_energy, e.rate_activation_energy]).chain([p.electrolyte.activation_energy, p.sei.activation_energy]);
+    energies.filter(|e| *e != 0.0).count() + electrodes.iter().filter(|e| !e.ocp_entropic_change.is_zero()).count()
 }

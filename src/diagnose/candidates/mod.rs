@@ -36,6 +36,7 @@ pub enum Candidate {
     LithiumInventory,
     ActiveMaterial,
     Thermal,
+    RecordedTemperature,
     RcDynamics,
     Hysteresis,
     EntropicChange,
@@ -174,7 +175,7 @@ fn too_narrow(f: &Features, q_nominal: f64) -> Option<String> {
 }
 
 impl Candidate {
-    pub const ALL: [Candidate; 26] = [
+    pub const ALL: [Candidate; 27] = [
         Candidate::SeriesResistance,
         Candidate::Electrolyte,
         Candidate::ElectrolyteComposite,
@@ -185,6 +186,7 @@ impl Candidate {
         Candidate::LithiumInventory,
         Candidate::ActiveMaterial,
         Candidate::Thermal,
+        Candidate::RecordedTemperature,
         Candidate::RcDynamics,
         Candidate::Hysteresis,
         Candidate::EntropicChange,
@@ -239,6 +241,7 @@ impl Candidate {
             Candidate::LithiumInventory => "loss of lithium inventory (stoichiometry offset)",
             Candidate::ActiveMaterial => "loss of active material (electrode capacity)",
             Candidate::Thermal => "thermal (self-heating, temperature dependence)",
+            Candidate::RecordedTemperature => "temperature dependence at the recorded temperature (the cell's temperature set from outside, e.g. by an ambient that changed, not by its own heat alone)",
             Candidate::RcDynamics => "RC / double-layer dynamics",
             Candidate::Hysteresis => "OCV hysteresis",
             Candidate::EntropicChange => "temperature dependence of the open-circuit potentials (their entropic change dU/dT)",
@@ -264,6 +267,7 @@ impl Candidate {
             | Candidate::Electrolyte
             | Candidate::ElectrolyteComposite
             | Candidate::Thermal
+            | Candidate::RecordedTemperature
             | Candidate::RcDynamics
             | Candidate::Hysteresis
             | Candidate::EntropicChange
@@ -299,6 +303,7 @@ impl Candidate {
             Candidate::LithiumInventory => "the end of discharge (the knee) arrives earlier or later and the OCV is shifted along the capacity axis; persists at rest",
             Candidate::ActiveMaterial => "one electrode's OCV features are compressed along the capacity axis (less capacity), with a shifted knee; persists at rest",
             Candidate::Thermal => "losses that fall as the cell warms under load (correlated with the recorded temperature rise or with the accumulated I²)",
+            Candidate::RecordedTemperature => "losses that follow the recorded temperature rather than the load: larger wherever the cell was colder, whatever the current did before",
             Candidate::RcDynamics => "transients of seconds after current steps that settle to an offset under load and decay in rests",
             Candidate::Hysteresis => "an offset at rest whose sign follows the direction of the last current (charge vs discharge), not its size",
             Candidate::SecondMaterialNegative | Candidate::SecondMaterialPositive => "capacity on a slope or step of the open-circuit voltage where the set's electrode has none (a tail at one end, or a step inside the window), the same at rest and under load, which no shift or stretch of the stoichiometry axis reproduces",
@@ -321,7 +326,7 @@ impl Candidate {
     pub fn plausible_range(self) -> &'static str {
         match self {
             Candidate::SeriesResistance => "0.1 to 100 mOhm",
-            Candidate::Electrolyte | Candidate::ElectrolyteComposite => "no fitted parameters",
+            Candidate::Electrolyte | Candidate::ElectrolyteComposite | Candidate::RecordedTemperature => "no fitted parameters",
             Candidate::ElectrolyteTransport | Candidate::Kinetics | Candidate::SolidDiffusion => "0.05 to 20 times the set's value, not on a search bound",
             Candidate::SizeDistribution => "relative standard deviation of the radii up to 0.8 in each electrode (the mean radius the set's)",
             Candidate::LithiumInventory => "up to 40 % of the cyclable lithium lost (or gained)",
@@ -373,6 +378,15 @@ impl Candidate {
             Candidate::Thermal if rec.temperature.is_none() && f.distinct_rates < 2 => {
                 Some("needs a recorded temperature or loads at two or more rates".into())
             }
+            // Read at its first value, the recorded temperature is where the model already runs.
+            Candidate::RecordedTemperature => match &rec.temperature {
+                None => Some("needs a recorded temperature".into()),
+                Some(t) => {
+                    let noise = crate::stats::noise::temperature_noise(t, &rec.time);
+                    let span = t.iter().map(|v| (v - t[0]).abs()).fold(0.0, f64::max);
+                    (span <= 2.0 * noise).then(|| format!("the recorded temperature stays within {span:.2} K of its first value (noise {noise:.2} K), where the model already runs"))
+                }
+            },
             // An overpotential is told from the open-circuit voltage by how the voltage moves
             // with the current at one state of charge: steps, or a load whose level changes
             // (e.g. the falling current of a constant-voltage hold).

@@ -96,7 +96,7 @@ impl Candidate {
                 let tau = get(VOLTAGE_DELAY)?;
                 (tau.abs() > VOLTAGE_DELAY_PLAUSIBLE_S).then(|| format!("a delay of {tau:.2} s exceeds 5 s"))
             }
-            Candidate::Electrolyte | Candidate::ElectrolyteComposite | Candidate::UnrelaxedStart => None,
+            Candidate::Electrolyte | Candidate::ElectrolyteComposite | Candidate::UnrelaxedStart | Candidate::RecordedTemperature => None,
         }
     }
 
