@@ -31,3 +31,61 @@ pub(super) fn read_only_if_unpredicted(outcomes: &mut [CandidateOutcome], baseli
         c.note = Some(format!("not named: a heat balance predicts the recorded temperature ({best:.3} K RMS, noise {noise:.3} K), so reading it adds no effect beyond self-heating"));
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::diagnose::candidates::Class;
+    use crate::diagnose::select::Comparison;
+
+    /// A named candidate whose fit leaves `temperature_rmse` (K) on the recorded temperature.
+    fn outcome(candidate: Candidate, temperature_rmse: Option<f64>) -> CandidateOutcome {
+        CandidateOutcome {
+            candidate,
+            partner: None,
+            name: candidate.name().into(),
+            class: Class::MissingPhysics,
+            signature: String::new(),
+            plausible_range: String::new(),
+            change: String::new(),
+            fit: Some(FitOutcome { temperature_rmse, ..FitOutcome::default() }),
+            note: None,
+            comparison: Comparison::default(),
+            clears_margins: true,
+            implausible: None,
+            named: true,
+            next: None,
+        }
+    }
+
+    /// A temperature recorded every 10 s rising from 298 to 308 K, within its 0.1 K resolution
+    /// (its noise is credited at the resolution: 0.2 K is twice it).
+    fn warming() -> Recording {
+        let time: Vec<f64> = (0..200).map(|k| 10.0 * k as f64).collect();
+        let temperature = Some(time.iter().map(|t| 298.0 + t / 200.0).collect());
+        Recording { current: vec![1.0; time.len()], voltage: vec![3.7; time.len()], time, temperature }
+    }
+
+    fn read(outcomes: &[CandidateOutcome]) -> &CandidateOutcome {
+        outcomes.iter().find(|c| c.candidate == Candidate::RecordedTemperature).unwrap()
+    }
+
+    #[test]
+    fn a_read_temperature_is_named_only_where_no_heat_balance_predicts_it() {
+        let isothermal = FitOutcome::default();
+        // Self-heating reproduces the temperature within twice its noise: reading it names nothing.
+        let mut predicted = vec![outcome(Candidate::Thermal, Some(0.15)), outcome(Candidate::RecordedTemperature, None)];
+        read_only_if_unpredicted(&mut predicted, &isothermal, &warming());
+        let r = read(&predicted);
+        assert!(!r.named && r.note.as_deref().is_some_and(|n| n.contains("0.150 K RMS, noise 0.100 K")), "{:?}", r.note);
+        // It misses by more (an ambient that changed): the read temperature stays named.
+        let mut missed = vec![outcome(Candidate::Thermal, Some(0.25)), outcome(Candidate::RecordedTemperature, None)];
+        read_only_if_unpredicted(&mut missed, &isothermal, &warming());
+        assert!(read(&missed).named && read(&missed).note.is_none());
+        // A thermal user model's own heat balance counts as well.
+        let thermal_user = FitOutcome { temperature_rmse: Some(0.1), ..FitOutcome::default() };
+        let mut alone = vec![outcome(Candidate::RecordedTemperature, None)];
+        read_only_if_unpredicted(&mut alone, &thermal_user, &warming());
+        assert!(!read(&alone).named);
+    }
+}

@@ -219,7 +219,7 @@ fn settled(fits: &[Result<LeastSquaresFit, Error>], sse_tolerance: f64) -> bool 
 }
 
 /// One fitted model, scored.
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug, Default, Serialize)]
 pub struct FitOutcome {
     /// What was fitted, e.g. "SPM as given" or "SPM + contact resistance".
     pub model: String,
