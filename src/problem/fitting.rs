@@ -342,6 +342,9 @@ impl FittingProblem {
         if !self.spec.submodels.thermal {
             return Err(Error::InvalidSetting { field: "model.submodels.thermal".into(), reason: "only a thermal model predicts the temperature".into() });
         }
+        if self.temperature_input.is_some() {
+            return Err(Error::InvalidSetting { field: "model.recorded_temperature".into(), reason: "the model's temperature follows the recording: there is no temperature to fit".into() });
+        }
         if !(weight > 0.0 && weight.is_finite()) {
             return Err(Error::invalid("temperature_weight", weight, "must be positive and finite"));
         }
