@@ -8,7 +8,7 @@
 
 use serde::Serialize;
 
-use super::{CandidateOutcome, Diagnosis, DiagnoseOptions, FitOutcome, describe, refit, select};
+use super::{CandidateOutcome, Diagnosis, DiagnoseOptions, FitOutcome, refit, select};
 use crate::params::ParameterSet;
 use crate::problem::fitting::{FitParameter, ModelSpec};
 
@@ -122,7 +122,7 @@ fn take_out(model: &FinalModel, spec: ModelSpec, paths: &[&String], name: &str, 
     let fitted: Vec<FitParameter> = model.fitted.iter().filter(|p| !paths.contains(&&p.path)).cloned().collect();
     let start: Vec<f64> = fitted.iter().map(|p| p.initial).collect();
     let structural = model.fit.parameters - model.fit.names.len();
-    let label = format!("{} without {name}", describe(&model.spec));
+    let label = format!("{} without {name}", model.spec);
     let reduced = refit::fit_and_score(label, spec, model.base.clone(), fitted, structural, &refit::Starts::at(vec![start]), &last.data, &last.split, &options.fit).ok()?;
     let cmp = select::compare(&reduced, model.fit, last.train_points);
     (cmp.delta_bic <= options.margins.min_delta_bic || cmp.ln_bayes_factor <= 0.0).then(|| Superseded {

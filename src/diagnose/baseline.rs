@@ -3,7 +3,7 @@
 
 use serde::Serialize;
 
-use super::{DiagnoseOptions, FitOutcome, Features, Split, describe, refit};
+use super::{DiagnoseOptions, FitOutcome, Features, Split, refit};
 use crate::data::Recording;
 use crate::error::Error;
 use crate::params::{ParameterSet, stoichiometry_window};
@@ -72,7 +72,7 @@ pub(super) fn fit_baseline(data: &mut Recording, base: &ParameterSet, options: &
                 reason: format!("too few points: {} training, {} held out", split.train_points(), split.holdout_points()),
             });
         }
-        let label = format!("{} as given", describe(&options.spec));
+        let label = format!("{} as given", options.spec);
         match refit::fit_and_score(label, options.spec, base.clone(), fitted.clone(), 0, &refit::Starts::at(starts.clone()), data, &split, &options.fit) {
             Ok(fit) => {
                 let starts = if starts.is_empty() { vec![fitted.iter().map(|p| p.initial).collect()] } else { starts };

@@ -187,22 +187,6 @@ pub struct NextModel {
     pub fitted: Vec<FitParameter>,
 }
 
-/// The model in words, e.g. "SPM + contact resistance + RC".
-pub fn describe(spec: &ModelSpec) -> String {
-    let s = spec.submodels;
-    let mut out = spec.kind.to_string();
-    for (on, name) in [(s.contact_resistance, "contact resistance"), (s.thermal, "thermal"), (s.rc, "RC"), (s.hysteresis, "hysteresis"), (s.ocv_correction, "OCV correction")] {
-        if on {
-            out.push_str(" + ");
-            out.push_str(name);
-        }
-    }
-    if spec.recorded_temperature {
-        out.push_str(" (temperature as recorded)");
-    }
-    out
-}
-
 /// The outcome of a diagnosis.
 #[derive(Clone, Debug, Serialize)]
 pub struct Diagnosis {
@@ -319,7 +303,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
         .collect();
     let round = Round { options, base, data: &data, split: &split, baseline: &baseline, fitted_paths: &fitted_paths, warm: &warm, restarts: &restarts, noise, load };
     let progress = crate::progress::bar("diagnose", plan.len() as u64, "{msg} {bar:30} {pos}/{len} [{elapsed}]");
-    progress.set_message(format!("refitting candidates on {}", describe(&options.spec)));
+    progress.set_message(format!("refitting candidates on {}", options.spec));
     let mut outcomes: Vec<CandidateOutcome> = plan
         .into_par_iter()
         .map(|(c, aug)| {
@@ -410,7 +394,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
         notes.push(format!("The model runs at (or starts from) the recording's first temperature, {:.2} K.", base.thermal.ambient_temperature));
     }
     let mut diagnosis = Diagnosis {
-        model: describe(&options.spec),
+        model: options.spec.to_string(),
         spec: options.spec,
         points: features.valid.iter().filter(|v| **v).count(),
         train_points: n_train,

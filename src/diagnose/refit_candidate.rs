@@ -1,7 +1,7 @@
 //! Fitting one candidate on top of the previous model: where its fits start, and how it
 //! stands against the user's model.
 
-use super::{Candidate, CandidateOutcome, Comparison, DiagnoseOptions, NextModel, Round, candidates, describe, keeps_set_values, refit, select};
+use super::{Candidate, CandidateOutcome, Comparison, DiagnoseOptions, NextModel, Round, candidates, keeps_set_values, refit, select};
 use crate::data::Recording;
 use crate::params::{ParameterSet, set_initial_soc};
 use crate::problem::fitting::{FitParameter, INITIAL_SOC};
@@ -106,7 +106,7 @@ pub(super) fn refit_candidate(
         }
     };
     let starts = refit::Starts { points: starts, runs_at: Some(runs_at), screen, staged };
-    match refit::fit_and_score(describe(&aug.spec), aug.spec, aug.base.clone(), params.clone(), aug.structural_parameters, &starts, data, split, &options.fit) {
+    match refit::fit_and_score(aug.spec.to_string(), aug.spec, aug.base.clone(), params.clone(), aug.structural_parameters, &starts, data, split, &options.fit) {
         Ok(f) => {
             let fitted = params
                 .into_iter()

@@ -46,6 +46,23 @@ impl ModelSpec {
     }
 }
 
+/// The model in words, e.g. "DFN + thermal (temperature as recorded)".
+impl std::fmt::Display for ModelSpec {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let s = self.submodels;
+        write!(f, "{}", self.kind)?;
+        for (on, name) in [(s.contact_resistance, "contact resistance"), (s.thermal, "thermal"), (s.rc, "RC"), (s.hysteresis, "hysteresis"), (s.ocv_correction, "OCV correction")] {
+            if on {
+                write!(f, " + {name}")?;
+            }
+        }
+        if self.recorded_temperature {
+            f.write_str(" (temperature as recorded)")?;
+        }
+        Ok(())
+    }
+}
+
 /// The path of the initial state of charge (-, 0 at the lower cut-off, 1 at the upper), a
 /// fit parameter that is not a field of the set: it places the initial particle
 /// concentrations on the set's lithium line ([`crate::params::set_initial_soc`]) after the

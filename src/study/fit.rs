@@ -416,7 +416,7 @@ fn report(study: &FitStudy, problem: &FittingProblem, r: &FitResult, initial_rms
         "Fitted {} parameter(s) of the {} model to {} recorded points by {} with the {} optimiser: \
          RMSE {:.3} mV (initial {:.3} mV), {} evaluations and {} gradients in {:.2} s, stop: {:?}.\n",
         problem.dim(),
-        problem.spec.kind,
+        problem.spec,
         problem.weights.iter().filter(|w| **w > 0.0).count(),
         study.cost.name(),
         study.optimiser().map(|o| o.0).unwrap_or_default(),
