@@ -13,23 +13,30 @@ use crate::stats::noise::temperature_noise;
 /// recorded temperature (as a voltage residual within twice the noise is no structure).
 const PREDICTED_WITHIN_NOISE: f64 = 2.0;
 
-/// Takes the recorded-temperature candidate out of the naming (and of pairs and later rounds)
-/// when a heat balance, the self-heating candidate's or the user's thermal model `baseline`,
-/// reproduces the recorded temperature of `data` within [`PREDICTED_WITHIN_NOISE`] times its
-/// noise; says so in its note.
-pub(super) fn read_only_if_unpredicted(outcomes: &mut [CandidateOutcome], baseline: &FitOutcome, data: &Recording) {
+/// Takes every outcome that reads the recorded temperature (alone or in a pair) out of the
+/// naming, and out of pairs and later rounds, when a heat balance reproduces the recorded
+/// temperature of `data` within [`PREDICTED_WITHIN_NOISE`] times its noise: the fit of an
+/// outcome in `outcomes` or `others` with the self-heating candidate (alone or in a pair), or
+/// the user's thermal model `baseline`. Says so in their notes.
+pub(super) fn read_only_if_unpredicted(outcomes: &mut [CandidateOutcome], others: &[CandidateOutcome], baseline: &FitOutcome, data: &Recording) {
     let Some(recorded) = &data.temperature else { return };
     let noise = temperature_noise(recorded, &data.time);
-    let self_heating = outcomes.iter().find(|c| c.candidate == Candidate::Thermal).and_then(|c| c.fit.as_ref()).and_then(|f| f.temperature_rmse);
-    let Some(best) = [self_heating, baseline.temperature_rmse].into_iter().flatten().min_by(f64::total_cmp) else { return };
+    let heats = |c: &&CandidateOutcome| involves(c, Candidate::Thermal);
+    let balances = outcomes.iter().chain(others).filter(heats).filter_map(|c| c.fit.as_ref());
+    let Some(best) = balances.chain([baseline]).filter_map(|f| f.temperature_rmse).min_by(f64::total_cmp) else { return };
     if best > PREDICTED_WITHIN_NOISE * noise {
         return;
     }
-    for c in outcomes.iter_mut().filter(|c| c.candidate == Candidate::RecordedTemperature && c.fit.is_some()) {
+    for c in outcomes.iter_mut().filter(|c| involves(c, Candidate::RecordedTemperature) && c.fit.is_some()) {
         c.named = false;
         c.next = None;
         c.note = Some(format!("not named: a heat balance predicts the recorded temperature ({best:.3} K RMS, noise {noise:.3} K), so reading it adds no effect beyond self-heating"));
     }
+}
+
+/// Whether outcome `c` holds candidate `which`, alone or in a pair.
+fn involves(c: &CandidateOutcome, which: Candidate) -> bool {
+    c.candidate == which || c.partner == Some(which)
 }
 
 #[cfg(test)]
@@ -75,17 +82,25 @@ mod tests {
         let isothermal = FitOutcome::default();
         // Self-heating reproduces the temperature within twice its noise: reading it names nothing.
         let mut predicted = vec![outcome(Candidate::Thermal, Some(0.15)), outcome(Candidate::RecordedTemperature, None)];
-        read_only_if_unpredicted(&mut predicted, &isothermal, &warming());
+        read_only_if_unpredicted(&mut predicted, &[], &isothermal, &warming());
         let r = read(&predicted);
         assert!(!r.named && r.note.as_deref().is_some_and(|n| n.contains("0.150 K RMS, noise 0.100 K")), "{:?}", r.note);
         // It misses by more (an ambient that changed): the read temperature stays named.
         let mut missed = vec![outcome(Candidate::Thermal, Some(0.25)), outcome(Candidate::RecordedTemperature, None)];
-        read_only_if_unpredicted(&mut missed, &isothermal, &warming());
+        read_only_if_unpredicted(&mut missed, &[], &isothermal, &warming());
         assert!(read(&missed).named && read(&missed).note.is_none());
         // A thermal user model's own heat balance counts as well.
         let thermal_user = FitOutcome { temperature_rmse: Some(0.1), ..FitOutcome::default() };
         let mut alone = vec![outcome(Candidate::RecordedTemperature, None)];
-        read_only_if_unpredicted(&mut alone, &thermal_user, &warming());
+        read_only_if_unpredicted(&mut alone, &[], &thermal_user, &warming());
         assert!(!read(&alone).named);
+        // A pair that reads the temperature beside a resistance gives way where the
+        // resistance paired with self-heating predicts it (the resistance's heat was missing
+        // from self-heating alone).
+        let paired = |c: Candidate, rmse: Option<f64>| CandidateOutcome { partner: Some(Candidate::SeriesResistance), ..outcome(c, rmse) };
+        let singles = vec![outcome(Candidate::Thermal, Some(0.33))];
+        let mut pairs = vec![paired(Candidate::Thermal, Some(0.06)), paired(Candidate::RecordedTemperature, None)];
+        read_only_if_unpredicted(&mut pairs, &singles, &isothermal, &warming());
+        assert!(pairs[0].named && !pairs[1].named, "{:?}", pairs[1].note);
     }
 }

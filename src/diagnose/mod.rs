@@ -313,7 +313,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
         })
         .collect();
     progress.finish_and_clear();
-    heat_balance::read_only_if_unpredicted(&mut outcomes, &baseline, &data);
+    heat_balance::read_only_if_unpredicted(&mut outcomes, &[], &baseline, &data);
     // Named candidates first, compared with one another at common effective points; the
     // others by their gain over the user's model.
     let n_common = select::common_effective_points(outcomes.iter().filter(|c| c.named).map(|c| &c.comparison));
@@ -344,7 +344,8 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
         // Pairs that fit alike are a tie, as singles are: one pair's parameter may stand in
         // for the other's (in the SPMe a conductivity factor acts as a series resistance).
         let mut named = pairs::named_pairs(&outcomes, &round);
-        named.retain(beats_single);
+        heat_balance::read_only_if_unpredicted(&mut named, &outcomes, &baseline, &data);
+        named.retain(|pair| pair.named && beats_single(pair));
         if !named.is_empty() {
             let n_pairs = select::common_effective_points(named.iter().map(|c| &c.comparison));
             named.sort_by(|a, b| a.comparison.bic_at(n_pairs).total_cmp(&b.comparison.bic_at(n_pairs)));
