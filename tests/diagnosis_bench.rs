@@ -1294,3 +1294,54 @@ fn aj7_aged_electrolyte_on_an_electric_outboard_trip_dfn() {
 fn aj8_self_heating_with_slow_positive_diffusion_in_a_cordless_vacuum_spme() {
     run_case("diagnosis-extra/aj8_thermal_h5_recorded_and_diffusivity_positive_x0p5_cordless_vacuum_30C_3s_3mV_spme");
 }
+
+// Blind batch ak (twenty-eighth session, judged once on the binary of 38e7b5a: 7 of 8 as
+// judged, 6 on substance).
+
+#[test]
+fn ak1_negative_control_on_a_telescope_mount_at_minus_10_degc_spm() {
+    run_case("diagnosis-extra/ak1_control_telescope_mount_imaging_night_minus10C_60s_0p5mV_spm");
+}
+
+#[test]
+#[ignore = "slow (blind batch ak): CI skips it; run with --include-ignored"]
+fn ak2_negative_diffusivity_under_concert_lighting_spme() {
+    run_case("diagnosis-extra/ak2_diffusivity_negative_x0p35_stage_lighting_concert_26C_3s_0p5mV_spme");
+}
+
+#[test]
+fn ak3_lithium_inventory_over_a_miner_cap_lamp_shift_spm() {
+    run_case("diagnosis-extra/ak3_inventory_9pct_miner_cap_lamp_shift_33C_cycler_spm");
+}
+
+#[test]
+#[ignore = "slow (blind batch ak): CI skips it; run with --include-ignored"]
+fn ak4_positive_lam_in_a_drone_light_show_spme() {
+    run_case("diagnosis-extra/ak4_lam_positive_12pct_drone_swarm_light_show_12C_1s_2mV_spme");
+}
+
+#[test]
+#[ignore = "slow (blind batch ak): CI skips it; run with --include-ignored"]
+fn ak5_positive_kinetics_over_ventilator_breaths_dfn() {
+    run_case("diagnosis-extra/ak5_kinetics_positive_x0p3_ventilator_mains_failure_breaths_18C_1s_1p5mV_dfn");
+}
+
+#[test]
+#[ignore = "slow (blind batch ak): CI skips it; run with --include-ignored"]
+fn ak6_self_heating_of_an_ice_resurfacer_dfn() {
+    let rounds = run_case("diagnosis-extra/ak6_thermal_h7_recorded_ice_resurfacer_rink_5C_5s_0p8mV_dfn");
+    // The heat balance predicts the recorded temperature: self-heating, not a read temperature.
+    assert_eq!(rounds[0].best().map(|c| c.candidate), Some(Candidate::Thermal), "{}", rounds[0].summary);
+}
+
+#[test]
+#[ignore = "fails (open): the negative electrode's charge-transfer coefficient is 0.4, not 0.5 (asymmetric Butler-Volmer), which no candidate refits; kinetics with electrolyte factors stands in (9.27 -> 2.71 mV), round 2 names self-heating at h = 82 without a recorded temperature, round 3 ends unexplained at 2.04 mV (noise 1.07): a 4.5x cut against the 5x goal"]
+fn ak7_asymmetric_negative_charge_transfer_on_a_paraglider_winch_spme() {
+    run_case("diagnosis-extra/ak7_asymmetric_charge_transfer_negative_alpha0p4_paraglider_tow_winch_2C_10s_spme");
+}
+
+#[test]
+#[ignore = "fails (open): a 6 mV voltage offset beside 6 % lithium lost at 3 mV noise; the lithium loss is named (tied with a second negative material) and absorbs most of the offset, leaving 3.36 mV against 3.04 mV noise, below what a second effect must remove; the first judging passed it only because the accept word 'offset' matched 'stoichiometry offset' (now 'voltage offset')"]
+fn ak8_voltage_offset_and_lithium_loss_on_a_street_food_cart_spme() {
+    run_case("diagnosis-extra/ak8_voltage_offset_6mV_high_and_inventory_6pct_street_food_cart_45C_15s_3mV_spme");
+}
