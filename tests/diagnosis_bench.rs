@@ -123,12 +123,17 @@ fn first_sentence(text: &str) -> &str {
 /// A case's truth and its diagnosis (up to 3 rounds) on Chen 2020 at the case's ambient,
 /// unjudged.
 fn diagnose_case(name: &str) -> (Truth, Vec<Diagnosis>) {
+    diagnose_case_with(name, Submodels::default())
+}
+
+/// As [`diagnose_case`], the user's model with `submodels`.
+fn diagnose_case_with(name: &str, submodels: Submodels) -> (Truth, Vec<Diagnosis>) {
     let t = truth(name);
     let rec = Recording::from_csv(&case_dir(name).join("recording.csv")).unwrap();
     let mut p = chen2020();
     p.thermal.ambient_temperature = t.ambient;
     p.thermal.initial_temperature = t.ambient;
-    let options = DiagnoseOptions::new(ModelSpec::new(t.model, Submodels::default()));
+    let options = DiagnoseOptions::new(ModelSpec::new(t.model, submodels));
     let start = std::time::Instant::now();
     let rounds = diagnose_rounds(&rec, &p, &options, 3).unwrap();
     println!("{name}: {:.1} s", start.elapsed().as_secs_f64());
@@ -192,6 +197,19 @@ fn b4_self_heating_dfn() {
     // The heat balance predicts the recorded temperature: reading it names nothing more.
     let read = rounds[0].candidates.iter().find(|c| c.candidate == Candidate::RecordedTemperature).expect("the recorded temperature is a candidate");
     assert!(!read.named && read.note.as_deref().is_some_and(|n| n.contains("a heat balance predicts the recorded temperature")), "{:?}", read.note);
+}
+
+/// The user's model already heats itself, at the set's h = 10 W/(m^2 K) against PyBaMM's 20:
+/// its heat balance is refitted (a parameter mismatch), which then predicts the recorded
+/// temperature, so reading that temperature is not named.
+#[test]
+fn b4_a_thermal_model_with_another_heat_transfer_coefficient_dfn() {
+    let (_, rounds) = diagnose_case_with("diagnosis-bench/b4_selfheating_2C", Submodels { thermal: true, ..Submodels::default() });
+    assert_eq!(rounds[0].best().map(|c| c.candidate), Some(Candidate::HeatBalance), "{}", rounds[0].summary);
+    let h = first_fitted(&rounds, "thermal.heat_transfer_coefficient");
+    assert!((h / 20.0 - 1.0).abs() < 2e-3, "heat-transfer coefficient {h} W/(m^2 K)");
+    let read = rounds[0].candidates.iter().find(|c| c.candidate == Candidate::RecordedTemperature).expect("the recorded temperature is a candidate");
+    assert!(!read.named, "{:?}", read.note);
 }
 
 #[test]

@@ -16,12 +16,12 @@ const PREDICTED_WITHIN_NOISE: f64 = 2.0;
 /// Takes every outcome that reads the recorded temperature (alone or in a pair) out of the
 /// naming, and out of pairs and later rounds, when a heat balance reproduces the recorded
 /// temperature of `data` within [`PREDICTED_WITHIN_NOISE`] times its noise: the fit of an
-/// outcome in `outcomes` or `others` with the self-heating candidate (alone or in a pair), or
-/// the user's thermal model `baseline`. Says so in their notes.
+/// outcome in `outcomes` or `others` with the self-heating or heat-balance candidate (alone or
+/// in a pair), or the user's thermal model `baseline`. Says so in their notes.
 pub(super) fn read_only_if_unpredicted(outcomes: &mut [CandidateOutcome], others: &[CandidateOutcome], baseline: &FitOutcome, data: &Recording) {
     let Some(recorded) = &data.temperature else { return };
     let noise = temperature_noise(recorded, &data.time);
-    let heats = |c: &&CandidateOutcome| involves(c, Candidate::Thermal);
+    let heats = |c: &&CandidateOutcome| involves(c, Candidate::Thermal) || involves(c, Candidate::HeatBalance);
     let balances = outcomes.iter().chain(others).filter(heats).filter_map(|c| c.fit.as_ref());
     let Some(best) = balances.chain([baseline]).filter_map(|f| f.temperature_rmse).min_by(f64::total_cmp) else { return };
     if best > PREDICTED_WITHIN_NOISE * noise {

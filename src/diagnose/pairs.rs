@@ -23,7 +23,7 @@ use crate::problem::least_squares::LmSettings;
 pub(super) fn named_pairs(singles: &[CandidateOutcome], round: &Round) -> Vec<CandidateOutcome> {
     // A thermal candidate fitted to a recorded temperature has evidence of its own even
     // when alone it does not lower the voltage's error (a second effect may hide it).
-    let own_evidence = |c: &CandidateOutcome| c.candidate == Candidate::Thermal && round.data.temperature.is_some();
+    let own_evidence = |c: &CandidateOutcome| matches!(c.candidate, Candidate::Thermal | Candidate::HeatBalance) && round.data.temperature.is_some();
     let useful: Vec<&CandidateOutcome> = singles
         .iter()
         .filter(|c| c.next.is_some() && c.fit.as_ref().is_some_and(|f| f.rmse_train < round.baseline.rmse_train || own_evidence(c)))
@@ -274,7 +274,7 @@ fn one_physics(a: Candidate, b: Candidate) -> bool {
         ActiveMaterialGrowth | ActiveMaterialThroughput => Some(2),
         SeiGrowth | SeiGrowthSeries => Some(3),
         VoltageOffset | VoltageGain => Some(4),
-        Thermal | RecordedTemperature => Some(5),
+        Thermal | HeatBalance | RecordedTemperature => Some(5),
         _ => None,
     };
     family(a).is_some() && family(a) == family(b)

@@ -116,15 +116,15 @@ impl Candidate {
                 spec.submodels.thermal = true;
                 // Heat capacity, cooling area and the activation energies enter as fixed values.
                 structural_parameters = 3;
-                let mut extra = vec![FitParameter::log("thermal.heat_transfer_coefficient", 10.0, 0.1, 1000.0)];
-                let change = match load.start_temperature {
-                    Some(t0) => {
-                        extra.push(FitParameter::linear("thermal.ambient_temperature", t0, t0 - AMBIENT_RANGE_K, t0 + AMBIENT_RANGE_K));
-                        "lumped thermal submodel on, ambient fitted to the recorded temperature"
-                    }
-                    None => "lumped thermal submodel on",
-                };
-                (extra, change.into())
+                let (extra, ambient) = heat_balance(10.0, load);
+                (extra, format!("lumped thermal submodel on{ambient}"))
+            }
+            Candidate::HeatBalance => {
+                if !spec.submodels.thermal || spec.recorded_temperature {
+                    return None;
+                }
+                let (extra, ambient) = heat_balance(p.thermal.heat_transfer_coefficient.clamp(0.1, 1000.0), load);
+                (extra, format!("the thermal model's heat-transfer coefficient refitted{ambient}"))
             }
             Candidate::RecordedTemperature => {
                 if spec.recorded_temperature {
@@ -270,4 +270,15 @@ fn temperature_dependences(p: &ParameterSet) -> usize {
     let electrodes = [&p.negative, &p.positive];
     let energies = electrodes.iter().flat_map(|e| [e.diffusivity_activation_energy, e.rate_activation_energy]).chain([p.electrolyte.activation_energy, p.sei.activation_energy]);
     energies.filter(|e| *e != 0.0).count() + electrodes.iter().filter(|e| !e.ocp_entropic_change.is_zero()).count()
+}
+
+/// The heat balance's fitted parameters: the heat-transfer coefficient (from `h0`, W/(m^2 K))
+/// and, with a recorded first temperature in `load`, the ambient (a cell need not start at the
+/// temperature of its room); with the words for the latter.
+fn heat_balance(h0: f64, load: &Load) -> (Vec<FitParameter>, &'static str) {
+    let h = FitParameter::log("thermal.heat_transfer_coefficient", h0, 0.1, 1000.0);
+    match load.start_temperature {
+        Some(t0) => (vec![h, FitParameter::linear("thermal.ambient_temperature", t0, t0 - AMBIENT_RANGE_K, t0 + AMBIENT_RANGE_K)], ", ambient fitted to the recorded temperature"),
+        None => (vec![h], ""),
+    }
 }

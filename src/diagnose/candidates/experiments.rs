@@ -46,7 +46,7 @@ impl Candidate {
             (SecondMaterialNegative | SecondMaterialPositive, _) | (_, SecondMaterialNegative | SecondMaterialPositive) => "a slow (C/20) charge and discharge over the full window read by differential voltage analysis (dV/dQ): a second material adds a peak of its own, a shifted or stretched stoichiometry moves the existing ones; or half-cells of each electrode".into(),
             (EntropicChange, _) | (_, EntropicChange) => "the open-circuit voltage at rest at three temperatures (say 15, 25 and 35 degC, an hour at each) at several states of charge: the entropic change is the slope of the OCV against temperature, and vanishes at the OCPs' 25 degC reference".into(),
             (RecordedTemperature, _) | (_, RecordedTemperature) => "the same protocol in a climate chamber held at one temperature, with the cell temperature recorded (a cell heated by its own losses departs from the chamber's temperature only under load, and returns to it at rest)".into(),
-            (Thermal, _) | (_, Thermal) => "the same protocol at a second ambient temperature, with the cell temperature recorded".into(),
+            (Thermal | HeatBalance, _) | (_, Thermal | HeatBalance) => "the same protocol at a second ambient temperature, with the cell temperature recorded".into(),
             _ if has_rates => format!(
                 "the same cell at a rate well above this recording's highest (its {} load levels did not separate them), with a rest after charge and after discharge",
                 f.distinct_rates

@@ -36,6 +36,7 @@ pub enum Candidate {
     LithiumInventory,
     ActiveMaterial,
     Thermal,
+    HeatBalance,
     RecordedTemperature,
     RcDynamics,
     Hysteresis,
@@ -175,7 +176,7 @@ fn too_narrow(f: &Features, q_nominal: f64) -> Option<String> {
 }
 
 impl Candidate {
-    pub const ALL: [Candidate; 27] = [
+    pub const ALL: [Candidate; 28] = [
         Candidate::SeriesResistance,
         Candidate::Electrolyte,
         Candidate::ElectrolyteComposite,
@@ -186,6 +187,7 @@ impl Candidate {
         Candidate::LithiumInventory,
         Candidate::ActiveMaterial,
         Candidate::Thermal,
+        Candidate::HeatBalance,
         Candidate::RecordedTemperature,
         Candidate::RcDynamics,
         Candidate::Hysteresis,
@@ -241,6 +243,7 @@ impl Candidate {
             Candidate::LithiumInventory => "loss of lithium inventory (stoichiometry offset)",
             Candidate::ActiveMaterial => "loss of active material (electrode capacity)",
             Candidate::Thermal => "thermal (self-heating, temperature dependence)",
+            Candidate::HeatBalance => "the thermal model's heat balance (self-heating with another heat-transfer coefficient or ambient)",
             Candidate::RecordedTemperature => "temperature dependence at the recorded temperature (the cell's temperature set from outside, e.g. by an ambient that changed, not by its own heat alone)",
             Candidate::RcDynamics => "RC / double-layer dynamics",
             Candidate::Hysteresis => "OCV hysteresis",
@@ -303,6 +306,7 @@ impl Candidate {
             Candidate::LithiumInventory => "the end of discharge (the knee) arrives earlier or later and the OCV is shifted along the capacity axis; persists at rest",
             Candidate::ActiveMaterial => "one electrode's OCV features are compressed along the capacity axis (less capacity), with a shifted knee; persists at rest",
             Candidate::Thermal => "losses that fall as the cell warms under load (correlated with the recorded temperature rise or with the accumulated I²)",
+            Candidate::HeatBalance => "as self-heating, with the thermal model already there: the cell warms faster or slower under load than the model does (the recorded temperature rises above or below the model's), and its losses follow",
             Candidate::RecordedTemperature => "losses that follow the recorded temperature rather than the load: larger wherever the cell was colder, whatever the current did before",
             Candidate::RcDynamics => "transients of seconds after current steps that settle to an offset under load and decay in rests",
             Candidate::Hysteresis => "an offset at rest whose sign follows the direction of the last current (charge vs discharge), not its size",
@@ -331,7 +335,7 @@ impl Candidate {
             Candidate::SizeDistribution => "relative standard deviation of the radii up to 0.8 in each electrode (the mean radius the set's)",
             Candidate::LithiumInventory => "up to 40 % of the cyclable lithium lost (or gained)",
             Candidate::ActiveMaterial => "up to 50 % of an electrode's active material lost",
-            Candidate::Thermal => "heat-transfer coefficient 1 to 500 W/(m^2 K)",
+            Candidate::Thermal | Candidate::HeatBalance => "heat-transfer coefficient 1 to 500 W/(m^2 K)",
             Candidate::RcDynamics => "time constant R C of 1 ms to 30 s (longer is transport, not an interface)",
             Candidate::Hysteresis => "half-width up to 50 mV",
             Candidate::SecondMaterialNegative | Candidate::SecondMaterialPositive => "0.5 to 40 % of the electrode's sites, filling over 5 to 500 mV, no value on a search bound",
@@ -375,7 +379,7 @@ impl Candidate {
                     )
                 })
             }
-            Candidate::Thermal if rec.temperature.is_none() && f.distinct_rates < 2 => {
+            Candidate::Thermal | Candidate::HeatBalance if rec.temperature.is_none() && f.distinct_rates < 2 => {
                 Some("needs a recorded temperature or loads at two or more rates".into())
             }
             // Read at its first value, the recorded temperature is where the model already runs.
@@ -413,6 +417,7 @@ impl Candidate {
             Candidate::Kinetics => &["negative.rate_constant", "positive.rate_constant"],
             Candidate::SolidDiffusion => &["negative.diffusivity", "positive.diffusivity"],
             Candidate::ActiveMaterial => &["negative.active_fraction", "positive.active_fraction"],
+            Candidate::HeatBalance => &["thermal.heat_transfer_coefficient", "thermal.ambient_temperature"],
             Candidate::LithiumInventory => &["negative.initial_concentration", "positive.initial_concentration"],
             _ => &[],
         }

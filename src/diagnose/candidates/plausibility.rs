@@ -43,7 +43,7 @@ impl Candidate {
                 let loss = 1.0 - v / base.get(n).ok()?;
                 (loss > 0.5).then(|| format!("{n} lost {:.0} %, more than 50 %", 100.0 * loss))
             }),
-            Candidate::Thermal => {
+            Candidate::Thermal | Candidate::HeatBalance => {
                 let h = get("thermal.heat_transfer_coefficient")?;
                 (!(1.0..=500.0).contains(&h)).then(|| format!("heat-transfer coefficient {h:.3} W/(m^2 K) is outside 1 to 500"))
             }
