@@ -10,8 +10,9 @@ use crate::data::Recording;
 use crate::stats::noise::temperature_noise;
 
 /// How many times its noise a heat balance's temperature residual may be and still predict the
-/// recorded temperature (as a voltage residual within twice the noise is no structure).
-const PREDICTED_WITHIN_NOISE: f64 = 2.0;
+/// recorded temperature (as a voltage residual within twice the noise is no structure); a
+/// recorded temperature that stays this close to its first value is where the model already runs.
+pub(super) const PREDICTED_WITHIN_NOISE: f64 = 2.0;
 
 /// Takes every outcome that reads the recorded temperature (alone or in a pair) out of the
 /// naming, and out of pairs and later rounds, when a heat balance reproduces the recorded

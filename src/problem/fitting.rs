@@ -30,8 +30,9 @@ pub struct ModelSpec {
     #[serde(default)]
     pub mesh: MeshSizes,
     /// The thermal submodel's temperature follows the recording's instead of its heat
-    /// balance ([`FittingProblem::following_recorded_temperature`]): needs `submodels.thermal`
-    /// and a recorded temperature.
+    /// balance (`dT/dt = (T_rec(t) - T) / simulation::TEMPERATURE_LAG`): needs
+    /// `submodels.thermal` and a recorded temperature ([`FittingProblem::new`] refuses it
+    /// without them).
     #[serde(default)]
     pub recorded_temperature: bool,
 }
@@ -373,7 +374,7 @@ impl FittingProblem {
     /// recording's (`simulation::TEMPERATURE_LAG`) in place of its heat balance, so every
     /// temperature dependence of the set sees the cell's measured temperature. Needs a recorded
     /// temperature and a thermal model (which supplies the temperature state).
-    pub fn following_recorded_temperature(mut self) -> Result<Self, Error> {
+    fn following_recorded_temperature(mut self) -> Result<Self, Error> {
         let Some(temps) = self.data.temperature.clone() else {
             return Err(Error::InvalidSetting { field: "data.temperature".into(), reason: "no temperature recorded to follow".into() });
         };

@@ -388,7 +388,7 @@ impl Candidate {
                 Some(t) => {
                     let noise = crate::stats::noise::temperature_noise(t, &rec.time);
                     let span = t.iter().map(|v| (v - t[0]).abs()).fold(0.0, f64::max);
-                    (span <= 2.0 * noise).then(|| format!("the recorded temperature stays within {span:.2} K of its first value (noise {noise:.2} K), where the model already runs"))
+                    (span <= super::heat_balance::PREDICTED_WITHIN_NOISE * noise).then(|| format!("the recorded temperature stays within {span:.2} K of its first value (noise {noise:.2} K), where the model already runs"))
                 }
             },
             // An overpotential is told from the open-circuit voltage by how the voltage moves
