@@ -37,6 +37,7 @@ _PYBAMM_NAMES = {
     **{f"{side.title()} electrode Bruggeman coefficient (electrolyte)": f"{side}.bruggeman_electrolyte" for side in ("negative", "positive")},
     **{f"{side.title()} electrode Bruggeman coefficient (electrode)": f"{side}.bruggeman_solid" for side in ("negative", "positive")},
     **{f"{side.title()} electrode conductivity [S.m-1]": f"{side}.conductivity" for side in ("negative", "positive")},
+    **{f"{side.title()} electrode Butler-Volmer transfer coefficient": f"{side}.charge_transfer_coefficient" for side in ("negative", "positive")},
     "Separator Bruggeman coefficient (electrolyte)": "separator.bruggeman",
     "Separator porosity": "separator.porosity",
     "Separator thickness [m]": "separator.thickness",

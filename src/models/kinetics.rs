@@ -43,22 +43,72 @@ fn reg_sqrt(x: f64, d: f64) -> f64 {
     x / (x * x + d * d).sqrt().sqrt()
 }
 
-/// Symmetric Butler-Volmer interfacial current density `2 j0 sinh(alpha F eta / (R T))`
-/// (A/m^2) for overpotential `eta` (V).
+/// Butler-Volmer interfacial current density (A/m^2) for overpotential `eta` (V), PyBaMM's
+/// asymmetric form `j0 (exp(alpha F eta / R T) - exp(-(1 - alpha) F eta / R T))` with the
+/// anodic charge-transfer coefficient `alpha` (-). At `alpha` = 0.5 (the default) it is the
+/// symmetric `2 j0 sinh(F eta / 2 R T)`, evaluated as such (PyBaMM's symmetric Butler-Volmer).
 pub fn butler_volmer(j0: f64, eta: f64, alpha: f64, t: f64) -> f64 {
-    2.0 * j0 * sinh(alpha * FARADAY * eta / (GAS_CONSTANT * t))
+    if alpha == 0.5 {
+        return 2.0 * j0 * sinh(alpha * FARADAY * eta / (GAS_CONSTANT * t));
+    }
+    let f = FARADAY / (GAS_CONSTANT * t);
+    // expm1: no cancellation at small overpotentials
+    j0 * ((alpha * f * eta).exp_m1() - (-(1.0 - alpha) * f * eta).exp_m1())
 }
 
 /// Overpotential (V) that drives interfacial current density `j` (A/m^2): the inverse of
-/// [`butler_volmer`].
+/// [`butler_volmer`], in closed form (`asinh`) at `alpha` = 0.5, else by
+/// [`asymmetric_inverse`].
 pub fn overpotential(j: f64, j0: f64, alpha: f64, t: f64) -> f64 {
-    GAS_CONSTANT * t / (alpha * FARADAY) * asinh(j / (2.0 * j0))
+    if alpha == 0.5 {
+        return GAS_CONSTANT * t / (alpha * FARADAY) * asinh(j / (2.0 * j0));
+    }
+    // A cathodic current is the anodic one with the coefficients swapped.
+    let x = if j >= 0.0 { asymmetric_inverse(j / j0, alpha) } else { -asymmetric_inverse(-j / j0, 1.0 - alpha) };
+    GAS_CONSTANT * t / FARADAY * x
+}
+
+/// The `x >= 0` (-) at which `exp(a x) - exp(-(1 - a) x) = r` for `r >= 0` and `0 < a < 1`:
+/// Newton's method kept inside the bracket `[0, ln(1 + r) / a]`, to round-off, on that
+/// equation written with `expm1` below `r = 1` (no cancellation at small currents) and on its
+/// logarithm `a x - ln(r + exp(-(1 - a) x)) = 0` above (slope within `[a, 1]`). NaN for a NaN
+/// `r`, infinite for an infinite one.
+fn asymmetric_inverse(r: f64, a: f64) -> f64 {
+    if r == 0.0 || !r.is_finite() {
+        return if r.is_nan() { f64::NAN } else if r == 0.0 { 0.0 } else { f64::INFINITY };
+    }
+    let b = 1.0 - a;
+    let residual = |x: f64| -> (f64, f64) {
+        if r < 1.0 {
+            ((a * x).exp_m1() - (-b * x).exp_m1() - r, a * (a * x).exp() + b * (-b * x).exp())
+        } else {
+            let e = (-b * x).exp();
+            (a * x - (r + e).ln(), a + b * e / (r + e))
+        }
+    };
+    let (mut lo, mut hi) = (0.0, r.ln_1p() / a);
+    // The symmetric inverse as the first guess.
+    let mut x = (2.0 * asinh(0.5 * r)).clamp(lo, hi);
+    for _ in 0..100 {
+        let (h, slope) = residual(x);
+        if h > 0.0 { hi = x } else { lo = x }
+        let mut next = x - h / slope;
+        if !(next > lo && next < hi) {
+            next = 0.5 * (lo + hi);
+        }
+        let step = (next - x).abs();
+        x = next;
+        if step <= 1e-15 * x || hi - lo <= 1e-15 * x {
+            break;
+        }
+    }
+    x
 }
 
 /// The potential difference `delta = phi_s - phi_e` (V) shared by parallel particle classes
 /// with fractions `weights` (-, summing to 1), exchange-current densities `j0` (A/m^2) and
 /// open-circuit potentials `ocp` (V) such that their weighted Butler-Volmer currents
-/// `j_i = 2 j0_i sinh(alpha F (delta - U_i) / (R T))` add up to `j` (A/m^2):
+/// `j_i` = [`butler_volmer`]`(j0_i, delta - U_i, alpha, T)` add up to `j` (A/m^2):
 /// `sum w_i j_i = j`. Writes each `j_i` into `currents`.
 ///
 /// Newton's method kept inside a bracket: with `jbar0 = sum w_i j0_i` and `eta0` the
@@ -66,7 +116,7 @@ pub fn overpotential(j: f64, j0: f64, alpha: f64, t: f64) -> f64 {
 /// `max U_i + eta0` (every term increases with `delta`). It iterates to round-off, so that
 /// finite differences of the result are clean. NaN when every `j0` is zero.
 pub fn shared_potential(weights: &[f64], j0: &[f64], ocp: &[f64], j: f64, alpha: f64, t: f64, currents: &mut [f64]) -> f64 {
-    let k = alpha * FARADAY / (GAS_CONSTANT * t);
+    let (ka, kc) = (alpha * FARADAY / (GAS_CONSTANT * t), (1.0 - alpha) * FARADAY / (GAS_CONSTANT * t));
     let jbar0: f64 = weights.iter().zip(j0).map(|(w, j0)| w * j0).sum();
     let eta0 = overpotential(j, jbar0, alpha, t);
     let (u_min, u_max) = ocp.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &u| (a.min(u), b.max(u)));
@@ -79,9 +129,15 @@ pub fn shared_potential(weights: &[f64], j0: &[f64], ocp: &[f64], j: f64, alpha:
     for _ in 0..200 {
         let (mut g, mut dg) = (-j, 0.0);
         for ((w, j0), u) in weights.iter().zip(j0).zip(ocp) {
-            let e = (k * (delta - u)).exp();
-            g += w * j0 * (e - 1.0 / e);
-            dg += w * j0 * k * (e + 1.0 / e);
+            let e = (ka * (delta - u)).exp();
+            if alpha == 0.5 {
+                g += w * j0 * (e - 1.0 / e);
+                dg += w * j0 * ka * (e + 1.0 / e);
+            } else {
+                let c = (-kc * (delta - u)).exp();
+                g += w * j0 * (e - c);
+                dg += w * j0 * (ka * e + kc * c);
+            }
         }
         if g > 0.0 { hi = delta } else { lo = delta }
         let mut next = delta - g / dg;
@@ -106,9 +162,14 @@ pub fn shared_potential(weights: &[f64], j0: &[f64], ocp: &[f64], j: f64, alpha:
 /// concentrations in mol/m^3). All terms share the sign of `j`, and with `A = |j| / (2
 /// j0_particle)` and the factor's square `f_k^2 = c_k^2 / sqrt(c_k^2 + d^2)` each
 /// `asinh(|j| / 2 j0_k)` is `ln(A + sqrt(A^2 + f_k^2)) - ln(f_k^2) / 2`: two square roots and
-/// a division per volume, in four SIMD lanes, and two logarithms per call.
+/// a division per volume, in four SIMD lanes, and two logarithms per call (at `alpha` = 0.5;
+/// otherwise the mean of the inverses one by one).
 pub fn mean_overpotential(j: f64, j0_particle: f64, c_e: &[f64], c_e_ref: f64, alpha: f64, t: f64) -> f64 {
     use wide::f64x4;
+    if alpha != 0.5 {
+        // No closed form: the mean of the inverses, term by term.
+        return c_e.iter().map(|&c| overpotential(j, j0_particle * electrolyte_factor(c, c_e_ref), alpha, t)).sum::<f64>() / c_e.len() as f64;
+    }
     let a = j.abs() / (2.0 * j0_particle);
     let d = SQRT_REGULARISATION * c_e_ref;
     let (av, a2, d2) = (f64x4::splat(a), f64x4::splat(a * a), f64x4::splat(d * d));
@@ -252,6 +313,37 @@ mod tests {
         let mut j = [0.0; 2];
         let delta = super::shared_potential(&[0.5, 0.5], &[0.3, 0.3], &[0.1, 0.1], 2.0, 0.5, 298.15, &mut j);
         assert!((delta - 0.1 - super::overpotential(2.0, 0.3, 0.5, 298.15)).abs() < 1e-15, "{delta}");
+    }
+
+    #[test]
+    fn asymmetric_butler_volmer_inverts_and_has_its_limits() {
+        use crate::params::{FARADAY, GAS_CONSTANT};
+        let (j0, t) = (0.3, 275.15);
+        let f = FARADAY / (GAS_CONSTANT * t);
+        for alpha in [0.2, 0.4, 0.5, 0.6, 0.8] {
+            for j in [-2e4, -30.0, -0.7, -1e-9, 0.0, 1e-9, 0.05, 3.0, 2e4] {
+                let eta = super::overpotential(j, j0, alpha, t);
+                let back = super::butler_volmer(j0, eta, alpha, t);
+                assert!((back - j).abs() <= 1e-12 * j.abs(), "alpha {alpha}, j {j}: {back}");
+            }
+            // the small-signal conductance j0 F / R T whatever alpha (one charge-transfer resistance)
+            let eta = 1e-7;
+            let slope = (super::butler_volmer(j0, eta, alpha, t) - super::butler_volmer(j0, -eta, alpha, t)) / (2.0 * eta);
+            assert!((slope / (j0 * f) - 1.0).abs() < 1e-9, "alpha {alpha}: {slope}");
+            // Tafel lines: anodic slope alpha F / R T, cathodic (1 - alpha) F / R T
+            let tafel = |e: f64| super::butler_volmer(j0, e, alpha, t).abs().ln();
+            assert!(((tafel(1.01) - tafel(1.0)) / 0.01 / (alpha * f) - 1.0).abs() < 1e-9);
+            assert!(((tafel(-1.01) - tafel(-1.0)) / 0.01 / ((1.0 - alpha) * f) - 1.0).abs() < 1e-9);
+        }
+        // continuous through the symmetric closed form
+        let (a, b) = (super::overpotential(5.0, j0, 0.5, t), super::overpotential(5.0, j0, 0.5 + 1e-10, t));
+        assert!((a - b).abs() < 1e-10, "{a} {b}");
+        // an asymmetric class split shares its current and reduces to one particle
+        let mut j = [0.0; 2];
+        let delta = super::shared_potential(&[0.3, 0.7], &[0.2, 0.5], &[0.1, 0.12], -4.0, 0.4, t, &mut j);
+        assert!((0.3 * j[0] + 0.7 * j[1] + 4.0).abs() < 1e-12, "{j:?}");
+        let delta_one = super::shared_potential(&[0.5, 0.5], &[0.3, 0.3], &[0.1, 0.1], -4.0, 0.4, t, &mut j);
+        assert!((delta_one - 0.1 - super::overpotential(-4.0, 0.3, 0.4, t)).abs() < 1e-14, "{delta}");
     }
 
     #[test]

@@ -54,7 +54,9 @@ pub struct Electrode {
     pub rate_constant: f64,
     /// Activation energy of the reaction rate constant (J/mol).
     pub rate_activation_energy: f64,
-    /// Charge-transfer coefficient (-).
+    /// Anodic charge-transfer coefficient `alpha` of the Butler-Volmer kinetics (-), PyBaMM's
+    /// "Butler-Volmer transfer coefficient": 0.5 is the symmetric form, any other value
+    /// PyBaMM's asymmetric one, `j0 (exp(alpha F eta / RT) - exp(-(1 - alpha) F eta / RT))`.
     pub charge_transfer_coefficient: f64,
     /// Density of the active material (kg/m^3), for the cell mass.
     pub active_density: f64,

@@ -8,6 +8,7 @@ mod cli_support;
 mod common;
 
 mod architecture;
+mod asymmetric_kinetics;
 mod bad_input;
 mod bpx;
 mod builder;

@@ -6,7 +6,7 @@
 //! - film overpotential `j_tot L_sei R_sei` (V) with the total interfacial current density
 //!   `j_tot` (an algebraic state with SEI, PyBaMM's "distributed" film) and the local SEI
 //!   thickness; zero without SEI;
-//! - intercalation `j = 2 j0 sinh(alpha F (phi_s - phi_e - U - film) / (R T))` into the
+//! - intercalation `j` = [`butler_volmer`]`(j0, phi_s - phi_e - U - film)` into the
 //!   particle (surface flux `j / F`);
 //! - SEI `j_sei` at `phi_s - phi_e` with the film carrying `j` (PyBaMM's SEI reads the
 //!   intercalation current);
