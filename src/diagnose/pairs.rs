@@ -11,6 +11,7 @@
 
 use rayon::prelude::*;
 
+use super::refit::SCREEN_ITERATIONS;
 use super::refit_candidate::at_soc;
 use super::{Candidate, CandidateOutcome, FitOutcome, Round, refit_candidate, select};
 use crate::problem::fitting::INITIAL_SOC;
@@ -92,9 +93,6 @@ pub(super) fn named_pairs(singles: &[CandidateOutcome], round: &Round) -> Vec<Ca
     }
     named
 }
-
-/// Levenberg-Marquardt iterations of every pair's screening fit.
-const SCREEN_ITERATIONS: usize = 4;
 
 /// Screened pairs, the best by training error first, that continue to convergence.
 const CONTINUED_PAIRS: usize = 3;

@@ -101,6 +101,10 @@ impl Starts {
 /// previous model.
 const HELD_NO_GAIN: f64 = 1e-3;
 
+/// Levenberg-Marquardt iterations of a screening fit: every pair's first, and each of a
+/// single's remaining starts when its first ones disagree.
+pub(super) const SCREEN_ITERATIONS: usize = 4;
+
 /// Levenberg-Marquardt from `x0`; with a parameter `staged`, first with it held at its value
 /// in `x0`, then freed from that optimum (so the refined fit ends no worse than the held
 /// model). Only when the held fit explains nothing beyond the previous model (its squared
@@ -314,12 +318,13 @@ pub fn fit_and_score(
     // A staged refinement is judged against the previous model (where the model is known to run).
     let previous = starts.staged.and(starts.runs_at.as_ref()).and_then(|r| problem.run(r).ok()).map(|run| sse(&problem.weighted_residuals(&run)));
     // A start that fails is pulled toward where the model runs and tried again.
-    let fit_from = |x0: &Vec<f64>| {
-        staged_fit(&problem, x0, starts.staged, previous, settings.lm).or_else(|e| match starts.runs_at.as_ref().and_then(|r| pulled_into_model(&problem, x0, r)) {
-            Some(x) => staged_fit(&problem, &x, starts.staged, previous, settings.lm),
+    let fit_with = |x0: &[f64], lm: LmSettings| {
+        staged_fit(&problem, x0, starts.staged, previous, lm).or_else(|e| match starts.runs_at.as_ref().and_then(|r| pulled_into_model(&problem, x0, r)) {
+            Some(x) => staged_fit(&problem, &x, starts.staged, previous, lm),
             None => Err(e),
         })
     };
+    let fit_from = |x0: &Vec<f64>| fit_with(x0, settings.lm);
     // The first start; when it fails, stops on its cap, ends on a bound or holds a parameter
     // (`converged` is false then), the second and the last as well; the rest only when those
     // do not end where the first did (a bound can be where the optimum lies: a candidate with
@@ -339,8 +344,20 @@ pub fn fit_and_score(
         let agree = fits[0].as_ref().is_ok_and(|first| first.converged && probed.iter().all(|f| f.as_ref().is_ok_and(|f| same_optimum(first, f, settings.lm.sse_tolerance))));
         fits.extend(probed);
         if !agree && !settled(&fits, settings.lm.sse_tolerance) {
+            // The rest are screened with a few iterations each and only the best is taken to
+            // convergence, as pairs are: running every start to convergence made a refit whose
+            // optimum lies on a bound (a one-electrode loss leaves the other electrode's
+            // fraction on its no-loss bound) cost most of a long DFN diagnosis.
             let rest: Vec<usize> = (lead + 1..last).collect();
-            fits.extend(rest.par_iter().map(|&i| fit_from(&points[i])).collect::<Vec<_>>());
+            let screen = LmSettings { max_iterations: SCREEN_ITERATIONS.min(settings.lm.max_iterations), ..settings.lm };
+            let screened: Vec<Result<LeastSquaresFit, Error>> = rest.par_iter().map(|&i| fit_with(&points[i], screen)).collect();
+            let screen_runs: usize = screened.iter().filter_map(|f| f.as_ref().ok()).map(|f| f.simulations).sum();
+            if let Some(b) = screened.into_iter().filter_map(Result::ok).min_by(|a, b| a.sse.total_cmp(&b.sse)) {
+                fits.push(levenberg_marquardt(&problem, &b.x, settings.lm).map(|mut f| {
+                    f.simulations += screen_runs;
+                    f
+                }));
+            }
         }
     }
     // Work of every start, not only the best one's.
