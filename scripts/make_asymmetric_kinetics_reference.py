@@ -8,7 +8,7 @@ per particle, 30 sizes for the MPM, as ours), IDAKLU at rtol = atol = 1e-8, outp
 The SPMe is left out on purpose: PyBaMM switches its SPM family to "surface form" =
 "algebraic" for any non-default kinetics, and for the SPMe that is another model, not only
 other kinetics (2C discharge, symmetric alpha = 0.5: the algebraic-surface-form SPMe is
-36 mV RMS above PyBaMM's own SPMe and 54 mV from its DFN, against 27 mV for its SPMe). The
+36 mV RMS above PyBaMM's own SPMe and 56 mV from its DFN, against 28 mV for its SPMe). The
 SPM (x-averaged, one interfacial current) is the same model either way (1.6e-5 mV RMS apart at
 2C), and so is the DFN.
 
