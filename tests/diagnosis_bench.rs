@@ -1358,15 +1358,17 @@ fn ak7_asymmetric_negative_charge_transfer_on_a_paraglider_winch_spme() {
     run_case("diagnosis-extra/ak7_asymmetric_charge_transfer_negative_alpha0p4_paraglider_tow_winch_2C_10s_spme");
 }
 
-/// ak7 remade cleanly in the DFN (not blind; see its truth.json and docs/diagnosis-cases.md).
-/// Measured on the CLI (code of ac2ef6c plus the screening of remaining starts), 21 min beside
-/// other work: kinetics paired with a 4.95 mOhm contact as a stand-in, 14.14 -> 2.22 mV
-/// (noise 1.06 mV), then unexplained. The charge-transfer coefficients as refinements of
-/// the kinetics candidate are the open step.
+/// ak7 remade cleanly in the DFN (not blind; see its truth.json and docs/diagnosis-cases.md):
+/// graphite's anodic transfer coefficient 0.4. The kinetics candidate, refined with the
+/// transfer coefficients free before any pair is tried: 0.3995 +- 0.0012 (the positive's
+/// 0.5002 +- 0.0071), 14.14 -> 0.98 mV (noise 1.06 mV), then no missing physics, in 27 s.
+/// Without the refinement: kinetics with a contact stand-in, 2.22 mV left, 21 min.
 #[test]
-#[ignore = "slow (about 20 min): ak7 remade in the DFN; kinetics named with a contact stand-in"]
 fn ak7d_asymmetric_negative_charge_transfer_in_the_dfn() {
-    run_case("diagnosis-extra/ak7d_asymmetric_charge_transfer_negative_alpha0p4_paraglider_tow_winch_2C_10s_dfn");
+    let rounds = run_case("diagnosis-extra/ak7d_asymmetric_charge_transfer_negative_alpha0p4_paraglider_tow_winch_2C_10s_dfn");
+    assert_eq!(rounds[0].best().map(|c| c.candidate), Some(Candidate::Kinetics), "{}", rounds[0].summary);
+    let alpha = first_fitted(&rounds, "negative.charge_transfer_coefficient");
+    assert!((alpha - 0.4).abs() < 0.005, "negative transfer coefficient {alpha} (truth 0.4)");
 }
 
 #[test]

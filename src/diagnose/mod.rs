@@ -329,6 +329,22 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
     let structured = (analysis.structured || baseline.rmse_all > 2.0 * noise) && !no_room;
     let separate = |a: Candidate, b: Candidate| a.separating_experiment(b, &features);
     let mut verdict = select::verdict(&standings(&outcomes), structured, options.margins.min_delta_bic, separate);
+    let after = |outcomes: &[CandidateOutcome]| {
+        outcomes.first().and_then(|c| c.fit.as_ref()).map(|f| {
+            let r: Vec<f64> = data.voltage.iter().zip(&f.voltage).map(|(d, m)| m - d).collect();
+            locate::analyse(&data, &features, &r, q)
+        })
+    };
+    // A named single whose fit still leaves structure: its secondary properties refitted
+    // before any pair is tried, so that a pair must beat the effect at its best description
+    // (an asymmetric charge transfer is the kinetics candidate with its transfer coefficients
+    // free, not kinetics plus a stand-in).
+    let structure = after(&outcomes).filter(|_| verdict.found());
+    if let (Some(structure), Some(first)) = (structure, outcomes.first_mut()) {
+        if let Some((false, record)) = refine::refine(first, &structure, &round) {
+            notes.push(format!("The named {} was {record}.", first.name));
+        }
+    }
     // No single effect: two may be hiding each other. One effect named that leaves far more
     // than the noise on held-out points may be standing in for two: a pair that beats it by
     // the same margins (against it, not the user's model) replaces it.
@@ -369,21 +385,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
     if broke_down.is_some() && matches!(verdict, Verdict::NoMissingPhysics) {
         verdict = Verdict::BrokeDown;
     }
-    let after = |outcomes: &[CandidateOutcome]| {
-        outcomes.first().and_then(|c| c.fit.as_ref()).map(|f| {
-            let r: Vec<f64> = data.voltage.iter().zip(&f.voltage).map(|(d, m)| m - d).collect();
-            locate::analyse(&data, &features, &r, q)
-        })
-    };
-    let mut residual_after = after(&outcomes);
-    // A named effect whose fit still leaves structure: its secondary properties refitted.
-    if let (Some(first), Some(structure)) = (outcomes.first_mut().filter(|_| verdict.found()), residual_after.as_ref()) {
-        match refine::refine(first, structure, &round) {
-            Some((true, _)) => residual_after = after(&outcomes),
-            Some((false, record)) => notes.push(format!("The named {} was {record}.", first.name)),
-            None => {}
-        }
-    }
+    let residual_after = after(&outcomes);
     let current_noise = data.current_noise();
     if current_noise > 0.0 {
         notes.push(format!(

@@ -426,10 +426,14 @@ impl Candidate {
     /// Secondary properties of the effect (path, lower and upper bound of a linear search)
     /// refitted beside the candidate's own parameters once it is named and its fit still leaves
     /// structure ([`crate::diagnose::refine`]): the electrolyte's transference number, the third
-    /// of its transport properties, which a diffusivity factor stands in for only in part.
+    /// of its transport properties, which a diffusivity factor stands in for only in part; the
+    /// electrodes' charge-transfer coefficients, whose asymmetry no rate constant can give.
     pub fn refinements(self) -> &'static [(&'static str, f64, f64)] {
         match self {
             Candidate::ElectrolyteTransport => &[("electrolyte.transference_number", 0.02, 0.9)],
+            // The Tafel slopes: an asymmetric charge transfer moves the voltage by different
+            // amounts on discharge and charge (PyBaMM's asymmetric Butler-Volmer).
+            Candidate::Kinetics => &[("negative.charge_transfer_coefficient", 0.2, 0.8), ("positive.charge_transfer_coefficient", 0.2, 0.8)],
             _ => &[],
         }
     }
