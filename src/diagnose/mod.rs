@@ -339,7 +339,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
     // before any pair is tried, so that a pair must beat the effect at its best description
     // (an asymmetric charge transfer is the kinetics candidate with its transfer coefficients
     // free, not kinetics plus a stand-in).
-    let structure = after(&outcomes).filter(|_| verdict.found());
+    let structure = if verdict.found() { after(&outcomes) } else { None };
     if let (Some(structure), Some(first)) = (structure, outcomes.first_mut()) {
         if let Some((false, record)) = refine::refine(first, &structure, &round) {
             notes.push(format!("The named {} was {record}.", first.name));

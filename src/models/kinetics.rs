@@ -69,7 +69,7 @@ pub fn overpotential(j: f64, j0: f64, alpha: f64, t: f64) -> f64 {
 }
 
 /// The `x >= 0` (-) at which `exp(a x) - exp(-(1 - a) x) = r` for `r >= 0` and `0 < a < 1`:
-/// Newton's method kept inside the bracket `[0, ln(1 + r) / a]`, to round-off, on that
+/// [`bracketed_newton`] inside the bracket `[0, ln(1 + r) / a]`, to round-off, on that
 /// equation written with `expm1` below `r = 1` (no cancellation at small currents) and on its
 /// logarithm `a x - ln(r + exp(-(1 - a) x)) = 0` above (slope within `[a, 1]`). NaN for a NaN
 /// `r`, infinite for an infinite one.
@@ -86,19 +86,27 @@ fn asymmetric_inverse(r: f64, a: f64) -> f64 {
             (a * x - (r + e).ln(), a + b * e / (r + e))
         }
     };
-    let (mut lo, mut hi) = (0.0, r.ln_1p() / a);
+    let hi = r.ln_1p() / a;
     // The symmetric inverse as the first guess.
-    let mut x = (2.0 * asinh(0.5 * r)).clamp(lo, hi);
-    for _ in 0..100 {
-        let (h, slope) = residual(x);
-        if h > 0.0 { hi = x } else { lo = x }
-        let mut next = x - h / slope;
+    let x = (2.0 * asinh(0.5 * r)).clamp(0.0, hi);
+    bracketed_newton(x, (0.0, hi), 100, residual, |step, width, x| step <= 1e-15 * x || width <= 1e-15 * x)
+}
+
+/// Newton's method from `x` on `f` (the residual and its slope at a point; increasing in `x`),
+/// kept inside `bracket`, which holds the root: a step that would leave the bracket, narrowed
+/// at each iterate by the residual's sign, bisects it instead. Stops after `iterations` or
+/// once `done(step, bracket width, new iterate)`.
+fn bracketed_newton(mut x: f64, (mut lo, mut hi): (f64, f64), iterations: usize, f: impl Fn(f64) -> (f64, f64), done: impl Fn(f64, f64, f64) -> bool) -> f64 {
+    for _ in 0..iterations {
+        let (g, slope) = f(x);
+        if g > 0.0 { hi = x } else { lo = x }
+        let mut next = x - g / slope;
         if !(next > lo && next < hi) {
             next = 0.5 * (lo + hi);
         }
         let step = (next - x).abs();
         x = next;
-        if step <= 1e-15 * x || hi - lo <= 1e-15 * x {
+        if done(step, hi - lo, x) {
             break;
         }
     }
@@ -111,7 +119,7 @@ fn asymmetric_inverse(r: f64, a: f64) -> f64 {
 /// `j_i` = [`butler_volmer`]`(j0_i, delta - U_i, alpha, T)` add up to `j` (A/m^2):
 /// `sum w_i j_i = j`. Writes each `j_i` into `currents`.
 ///
-/// Newton's method kept inside a bracket: with `jbar0 = sum w_i j0_i` and `eta0` the
+/// Newton's method kept inside a bracket ([`bracketed_newton`]): with `jbar0 = sum w_i j0_i` and `eta0` the
 /// overpotential that drives `j` through `jbar0`, the root lies between `min U_i + eta0` and
 /// `max U_i + eta0` (every term increases with `delta`). It iterates to round-off, so that
 /// finite differences of the result are clean. NaN when every `j0` is zero.
@@ -120,13 +128,13 @@ pub fn shared_potential(weights: &[f64], j0: &[f64], ocp: &[f64], j: f64, alpha:
     let jbar0: f64 = weights.iter().zip(j0).map(|(w, j0)| w * j0).sum();
     let eta0 = overpotential(j, jbar0, alpha, t);
     let (u_min, u_max) = ocp.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &u| (a.min(u), b.max(u)));
-    let (mut lo, mut hi) = (u_min + eta0, u_max + eta0);
-    let mut delta = weights.iter().zip(j0).zip(ocp).map(|((w, j0), u)| w * j0 * u).sum::<f64>() / jbar0 + eta0;
+    let bracket = (u_min + eta0, u_max + eta0);
+    let delta = weights.iter().zip(j0).zip(ocp).map(|((w, j0), u)| w * j0 * u).sum::<f64>() / jbar0 + eta0;
     if !delta.is_finite() {
         currents.fill(f64::NAN);
         return f64::NAN;
     }
-    for _ in 0..200 {
+    let residual = |delta: f64| {
         let (mut g, mut dg) = (-j, 0.0);
         for ((w, j0), u) in weights.iter().zip(j0).zip(ocp) {
             let e = (ka * (delta - u)).exp();
@@ -139,17 +147,9 @@ pub fn shared_potential(weights: &[f64], j0: &[f64], ocp: &[f64], j: f64, alpha:
                 dg += w * j0 * (ka * e + kc * c);
             }
         }
-        if g > 0.0 { hi = delta } else { lo = delta }
-        let mut next = delta - g / dg;
-        if !(next > lo && next < hi) {
-            next = 0.5 * (lo + hi);
-        }
-        let step = (next - delta).abs();
-        delta = next;
-        if step <= 1e-14 * delta.abs().max(1.0) || hi - lo <= 1e-15 * delta.abs().max(1.0) {
-            break;
-        }
-    }
+        (g, dg)
+    };
+    let delta = bracketed_newton(delta, bracket, 200, residual, |step, width, x| step <= 1e-14 * x.abs().max(1.0) || width <= 1e-15 * x.abs().max(1.0));
     for ((c, j0), u) in currents.iter_mut().zip(j0).zip(ocp) {
         *c = butler_volmer(*j0, delta - u, alpha, t);
     }
