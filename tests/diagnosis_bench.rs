@@ -1376,3 +1376,57 @@ fn ak7d_asymmetric_negative_charge_transfer_in_the_dfn() {
 fn ak8_voltage_offset_and_lithium_loss_on_a_street_food_cart_spme() {
     run_case("diagnosis-extra/ak8_voltage_offset_6mV_high_and_inventory_6pct_street_food_cart_45C_15s_3mV_spme");
 }
+
+// Blind batch al (thirtieth session, judged once on the binary of c79e8e9: 7 of 8; al5 missed,
+// named since the held-out blocks follow the misfit).
+
+#[test]
+fn al1_negative_control_of_a_home_stairlift_spm() {
+    run_case("diagnosis-extra/al1_control_home_stairlift_day_19C_cycler_spm");
+}
+
+#[test]
+#[ignore = "slow (blind batch al): CI skips it; run with --include-ignored"]
+fn al2_contact_resistance_of_an_e_rickshaw_at_44_degc_spm() {
+    run_case("diagnosis-extra/al2_contact_5mOhm_erickshaw_fares_midday_charge_44C_5s_2mV_spm");
+}
+
+#[test]
+#[ignore = "slow (blind batch al): CI skips it; run with --include-ignored"]
+fn al3_faster_negative_kinetics_on_a_refuse_truck_round_dfn() {
+    run_case("diagnosis-extra/al3_kinetics_negative_x1p6_faster_refuse_truck_round_13C_2s_dfn");
+}
+
+#[test]
+#[ignore = "slow (blind batch al): CI skips it; run with --include-ignored"]
+fn al4_finer_positive_particles_on_mobile_x_ray_rounds_dfn() {
+    run_case("diagnosis-extra/al4_radius_positive_x0p75_mobile_xray_ward_rounds_24C_1s_1p5mV_dfn");
+}
+
+/// The misfit lies mostly in the closing charge, which the default held-out blocks (3 and 7)
+/// miss: they held 0.72 mV against 0.52 mV of noise, and the diagnosis called a 3.73 mV misfit
+/// noise. Held-out blocks that see the misfit confirm the electrolyte at its factors.
+#[test]
+fn al5_a_better_electrolyte_in_a_camper_van_winter_night_spme() {
+    let rounds = run_case("diagnosis-extra/al5_electrolyte_conductivity_x1p8_diffusivity_x1p5_camper_van_winter_night_minus1C_10s_0p5mV_spme");
+    assert_ne!(rounds[0].holdout_phase, 2, "{}", rounds[0].summary);
+    let (d, k) = (first_fitted(&rounds, "electrolyte.diffusivity_factor"), first_fitted(&rounds, "electrolyte.conductivity_factor"));
+    assert!((d - 1.5).abs() < 0.015 && (k - 1.8).abs() < 0.03, "diffusivity x{d:.4} (truth 1.5), conductivity x{k:.4} (truth 1.8)");
+}
+
+#[test]
+fn al6_self_heating_of_a_snow_blower_at_minus_10_degc_spme() {
+    run_case("diagnosis-extra/al6_thermal_h12_recorded_snow_blower_frost_minus10C_3s_3mV_spme");
+}
+
+#[test]
+#[ignore = "slow (blind batch al): CI skips it; run with --include-ignored"]
+fn al7_negative_hysteresis_and_positive_diffusivity_on_a_scissor_lift_spm() {
+    run_case("diagnosis-extra/al7_hysteresis_negative_10mV_and_diffusivity_positive_x0p6_scissor_lift_shift_6C_20s_0p8mV_spm");
+}
+
+#[test]
+#[ignore = "slow (blind batch al): CI skips it; run with --include-ignored"]
+fn al8_positive_electrode_conductivity_and_lithium_loss_in_a_pool_robot_dfn() {
+    run_case("diagnosis-extra/al8_positive_conductivity_x0p25_and_inventory_6pct_pool_robot_32C_60s_1p5mV_dfn");
+}

@@ -65,7 +65,7 @@ pub(super) fn fit_baseline(data: &mut Recording, base: &ParameterSet, options: &
     let mut broke_down: Option<(Breakdown, Recording)> = None;
     for attempt in 0..ATTEMPTS {
         let features = Features::of(data);
-        let split = Split::blocks(&features.valid, options.blocks, options.holdout_every);
+        let split = options.split(&features.valid);
         if split.train_points() <= fitted.len() + 10 || split.holdout_points() == 0 {
             return Err(Error::InvalidSetting {
                 field: "data".into(),

@@ -11,7 +11,7 @@ use rayon::prelude::*;
 
 use super::ageing::Load;
 use super::select::{self, Comparison, Verdict};
-use super::{Candidate, CandidateOutcome, Features, Round, Split, refit_candidate, standings};
+use super::{Candidate, CandidateOutcome, Features, Round, refit_candidate, standings};
 use crate::data::Recording;
 
 /// The candidates refitted on the whole recording, best first, and the verdict they support
@@ -26,7 +26,7 @@ pub(super) struct Followers {
 pub(super) fn followers(whole: &Recording, round: &Round, at_s: f64) -> Followers {
     let options = round.options;
     let features = Features::of(whole);
-    let split = Split::blocks(&features.valid, options.blocks, options.holdout_every);
+    let split = options.split(&features.valid);
     let n_train = split.train_points();
     let q = round.base.cell.nominal_capacity;
     let whole_round = Round { data: whole, split: &split, load: Load::of(whole), ..*round };

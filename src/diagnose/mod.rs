@@ -24,6 +24,7 @@ pub mod backward;
 mod baseline;
 mod breakdown;
 mod heat_balance;
+mod holdout;
 pub use baseline::Breakdown;
 pub mod candidates;
 pub mod features;
@@ -75,8 +76,11 @@ pub struct DiagnoseOptions {
     pub estimate_initial_soc: bool,
     /// The recording is cut into this many blocks of consecutive points, equal in number ...
     pub blocks: usize,
-    /// ... of which every `holdout_every`-th is held out for validation.
+    /// ... of which every `holdout_every`-th is held out for validation, ...
     pub holdout_every: usize,
+    /// ... starting at this block (0-based; `None`: `holdout_every / 2`, or another when
+    /// those blocks miss the misfit: [`holdout::representative_phase`]).
+    pub holdout_phase: Option<usize>,
     /// Candidates refitted at most (all identifiable ones by default).
     pub max_refits: usize,
     pub margins: Margins,
@@ -106,6 +110,7 @@ impl DiagnoseOptions {
             estimate_initial_soc: true,
             blocks: 8,
             holdout_every: 4,
+            holdout_phase: None,
             max_refits: Candidate::ALL.len(),
             margins: Margins::default(),
             fit: FitSettings::default(),
@@ -114,6 +119,16 @@ impl DiagnoseOptions {
             time_budget: None,
             broke_down: None,
         }
+    }
+
+    /// The first held-out block (0-based).
+    fn phase(&self) -> usize {
+        self.holdout_phase.unwrap_or(self.holdout_every.max(2) / 2)
+    }
+
+    /// The training and held-out points of a recording whose usable points are `valid`.
+    fn split(&self, valid: &[bool]) -> Split {
+        Split::blocks(valid, self.blocks, self.holdout_every, self.phase())
     }
 
     fn validate(&self) -> Result<(), Error> {
@@ -200,6 +215,8 @@ pub struct Diagnosis {
     /// Time blocks of the recording, and every how many one is held out.
     pub blocks: usize,
     pub holdout_every: usize,
+    /// The first held-out block (0-based).
+    pub holdout_phase: usize,
     pub margins: Margins,
     /// Noise level of the recording (V), from first differences of the user's residual.
     pub noise: f64,
@@ -248,6 +265,7 @@ impl Diagnosis {
 pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions) -> Result<Diagnosis, Error> {
     let start = std::time::Instant::now();
     options.validate()?;
+    let (data_given, base_given) = (data, base);
     let mut notes = Vec::new();
     notes.extend(data.refuse_unit_errors("the recording", base)?);
     let mut data = data.clone();
@@ -262,7 +280,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
     let (baseline, split, warm, restarts, cut_here) = match &options.fitted_baseline {
         Some(b) if b.voltage.len() == data.time.len() && b.names.len() == options.fitted.len() => {
             let features = Features::of(&data);
-            (b.clone(), Split::blocks(&features.valid, options.blocks, options.holdout_every), options.fitted.clone(), Vec::new(), None)
+            (b.clone(), options.split(&features.valid), options.fitted.clone(), Vec::new(), None)
         }
         _ => {
             let b = baseline::fit_baseline(&mut data, base, options, &mut notes)?;
@@ -288,6 +306,15 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
     // the size floor, nothing can be named and no candidate is refitted.
     let room = (baseline.rmse_holdout.powi(2) - noise * noise).max(0.0).sqrt();
     let no_room = room < options.margins.size_floor(noise);
+    if no_room && options.fitted_baseline.is_none() && options.holdout_phase.is_none() {
+        if let Some((phase, why)) = holdout::representative_phase(options, &features.valid, &residual, noise, options.margins.size_floor(noise)) {
+            let mut d = diagnose(data_given, base_given, &DiagnoseOptions { holdout_phase: Some(phase), ..options.clone() })?;
+            d.notes.insert(0, why);
+            d.summary = report::plain_words(&d);
+            d.seconds = start.elapsed().as_secs_f64();
+            return Ok(d);
+        }
+    }
     let plan: Vec<(Candidate, Result<candidates::Augmentation, String>)> = Candidate::ALL
         .iter()
         .take(options.max_refits)
@@ -404,6 +431,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
         holdout_points: split.holdout_points(),
         blocks: options.blocks,
         holdout_every: options.holdout_every,
+        holdout_phase: options.phase(),
         margins: options.margins,
         noise,
         baseline,
@@ -481,6 +509,7 @@ pub fn diagnose_rounds_with(data: &Recording, base: &ParameterSet, options: &Dia
         options.spec = next.spec;
         options.fitted = next.fitted;
         options.fitted_baseline = Some(fit);
+        options.holdout_phase = Some(rounds[0].holdout_phase);
         options.broke_down = if rescued { None } else { rounds[0].broke_down.clone() };
         options.pairs = false;
     }

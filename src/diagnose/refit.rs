@@ -23,20 +23,22 @@ pub struct Split {
 
 impl Split {
     /// Cuts the recording into `blocks` blocks of consecutive points, equal in number, and
-    /// holds out every block `b` with `b % every == every / 2` (e.g. blocks 2 and 6 of 8 for
-    /// `every = 4`), so hold-out points lie early and late in the recording. Blocks of points,
+    /// holds out every block `b` with `b % every == phase % every` (e.g. blocks 2 and 6 of 8
+    /// for `every = 4`, `phase = 2`, the default), so hold-out points lie early and late in
+    /// the recording. Blocks of points,
     /// not of time: a recording logged sparsely through a long rest (a storage period, a
     /// cycler that logs on voltage change) would otherwise hold out only the rest.
     /// `valid` marks usable points.
-    pub fn blocks(valid: &[bool], blocks: usize, every: usize) -> Self {
+    pub fn blocks(valid: &[bool], blocks: usize, every: usize, phase: usize) -> Self {
         let n = valid.len().max(1);
         let every = every.max(2);
+        let phase = phase % every;
         let holdout: Vec<bool> = valid
             .iter()
             .enumerate()
             .map(|(k, v)| {
                 let b = (k * blocks / n).min(blocks - 1);
-                *v && b % every == every / 2
+                *v && b % every == phase
             })
             .collect();
         let train = holdout.iter().zip(valid).map(|(h, v)| if *v && !*h { 1.0 } else { 0.0 }).collect();
@@ -430,7 +432,7 @@ mod tests {
     fn blocks_hold_out_early_and_late_points() {
         let mut valid = vec![true; 80];
         valid[21] = false;
-        let s = Split::blocks(&valid, 8, 4);
+        let s = Split::blocks(&valid, 8, 4, 2);
         // Blocks of 10 points; blocks 2 and 6 are held out.
         assert!(s.holdout[20] && s.holdout[29] && s.holdout[60] && !s.holdout[19] && !s.holdout[30]);
         assert!(!s.holdout[21] && s.train[21] == 0.0);

@@ -498,11 +498,11 @@ pub fn markdown(d: &Diagnosis, plots: &[(String, String)]) -> String {
     let _ = writeln!(s, "## Fits\n");
     let _ = writeln!(
         s,
-        "{} usable points: {} for training, {} held out (every {}th of {} blocks of consecutive points). The user's model: {} fitted parameter(s), RMSE {:.2} mV (training {:.2}, hold-out {:.2}).{}\n",
+        "{} usable points: {} for training, {} held out (blocks {} of {} blocks of consecutive points). The user's model: {} fitted parameter(s), RMSE {:.2} mV (training {:.2}, hold-out {:.2}).{}\n",
         d.points,
         d.train_points,
         d.holdout_points,
-        d.holdout_every,
+        super::holdout::blocks_in_words(d.blocks, d.holdout_every, d.holdout_phase),
         d.blocks,
         b.names.len(),
         b.rmse_all * 1e3,
