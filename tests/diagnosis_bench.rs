@@ -1430,3 +1430,52 @@ fn al7_negative_hysteresis_and_positive_diffusivity_on_a_scissor_lift_spm() {
 fn al8_positive_electrode_conductivity_and_lithium_loss_in_a_pool_robot_dfn() {
     run_case("diagnosis-extra/al8_positive_conductivity_x0p25_and_inventory_6pct_pool_robot_32C_60s_1p5mV_dfn");
 }
+
+// Blind batch am (thirtieth session, judged once on the binary of ccc3273 under a load of 5-6
+// on 2 cores; see docs/diagnosis-cases.md).
+
+#[test]
+fn am1_negative_control_of_an_ice_fishing_auger_at_minus_15_degc_spme() {
+    run_case("diagnosis-extra/am1_control_ice_fishing_auger_day_minus15C_cycler_spme");
+}
+
+#[test]
+fn am2_faster_positive_kinetics_in_a_barn_feed_pusher_spm() {
+    run_case("diagnosis-extra/am2_kinetics_positive_x1p8_faster_barn_feed_pusher_robot_minus8C_1s_0p5mV_spm");
+}
+
+#[test]
+#[ignore = "fails (open): the negative particle radius x2 changes the diffusion length and the surface area at once, which no single candidate refits; kinetics (with asymmetric transfer coefficients as stand-ins) is named first and the diffusivity in round 2 (6.06 -> 1.54 mV); a particle-radius candidate is the general fix"]
+fn am3_coarser_negative_particles_in_a_patient_hoist_dfn() {
+    run_case("diagnosis-extra/am3_radius_negative_x2_care_home_patient_hoist_28C_5s_1p5mV_dfn");
+}
+
+#[test]
+#[ignore = "fails (open): a positive electrode 8 % thicker (more capacity and more lithium) is a gain the active-material candidate cannot fit (it only loses material); a leak current with the particle diffusivities stands in (12.09 -> 5.48 mV), then unexplained structure"]
+fn am4_a_heavier_positive_coating_on_a_harvest_trolley_spme() {
+    run_case("diagnosis-extra/am4_thickness_positive_x1p08_greenhouse_harvest_trolley_36C_30s_2mV_spme");
+}
+
+#[test]
+#[ignore = "slow (blind batch am): no verdict within the judge's 900 s under a load of 5-6; not yet run alone"]
+fn am5_a_more_tortuous_negative_under_a_mini_excavator_dfn() {
+    run_case("diagnosis-extra/am5_tortuosity_negative_bruggeman1p8_mini_excavator_trench_10C_2s_1mV_dfn");
+}
+
+#[test]
+#[ignore = "slow (blind batch am): CI skips it; run with --include-ignored"]
+fn am6_lithium_inventory_in_a_solar_vaccine_fridge_at_45_degc_spm() {
+    run_case("diagnosis-extra/am6_inventory_6pct_solar_vaccine_fridge_night_45C_60s_3mV_spm");
+}
+
+#[test]
+#[ignore = "fails (open): the positive electrode's conductivity x0.4 beside self-heating (h = 10, recorded) at 2 degC; round 1 named kinetics with thermal (the electrode's ohmic drop read as kinetics), and the judge's 900 s ran out under a load of 5-6 before a later round"]
+fn am7_positive_electrode_conductivity_and_self_heating_in_a_sheep_shearing_handpiece_dfn() {
+    run_case("diagnosis-extra/am7_positive_conductivity_x0p4_and_thermal_h10_recorded_sheep_shearing_2C_10s_0p8mV_dfn");
+}
+
+#[test]
+#[ignore = "fails (open): 30 % less salt in the electrolyte beside 6 % lithium lost; the lithium loss is named with kinetics standing in for the salt (the exchange current goes as the square root of the salt concentration), tied with a series resistance, to the noise (1.23 mV against 1.19): no candidate refits the electrolyte's initial concentration"]
+fn am8_less_salt_and_lithium_loss_in_a_floor_scrubber_spme() {
+    run_case("diagnosis-extra/am8_electrolyte_salt_x0p7_and_inventory_6pct_floor_scrubber_20C_15s_1p2mV_spme");
+}
