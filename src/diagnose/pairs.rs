@@ -267,7 +267,7 @@ fn pair_class(a: super::Class, b: super::Class) -> super::Class {
 fn one_physics(a: Candidate, b: Candidate) -> bool {
     use Candidate::*;
     let family = |c: Candidate| match c {
-        Electrolyte | ElectrolyteComposite | ElectrolyteTransport => Some(0),
+        Electrolyte | ElectrolyteComposite | ElectrolyteTransport | ElectrolyteConcentration => Some(0),
         LithiumPlating | LithiumPlatingPartial => Some(1),
         ActiveMaterialGrowth | ActiveMaterialThroughput => Some(2),
         SeiGrowth | SeiGrowthSeries => Some(3),
@@ -291,6 +291,7 @@ mod tests {
         assert!(one_physics(VoltageOffset, VoltageGain));
         assert!(one_physics(Thermal, RecordedTemperature));
         assert!(!one_physics(LithiumPlating, SeiGrowth));
+        assert!(one_physics(ElectrolyteConcentration, ElectrolyteTransport));
         assert!(!one_physics(SeriesResistance, LithiumInventory));
     }
 }

@@ -14,10 +14,12 @@ impl Candidate {
         let mut spec = *spec;
         let mut p = base.clone();
         let mut aged = None;
-        let around = |path: &str| {
+        // A parameter of the set refitted within `range` times its value either way (log).
+        let around = |path: &str, range: f64| {
             let v = p.get(path).ok().filter(|v| *v > 0.0)?;
-            Some(FitParameter::log(path, v, v / MISMATCH_RANGE, v * MISMATCH_RANGE))
+            Some(FitParameter::log(path, v, v / range, v * range))
         };
+        let refitted = |c: Candidate, range: f64| c.refitted_paths().iter().map(|path| around(path, range)).collect::<Option<Vec<_>>>();
         let mut replaces = Vec::new();
         let mut structural_parameters = 0;
         let (extra, change): (Vec<FitParameter>, String) = match self {
@@ -47,17 +49,23 @@ impl Candidate {
                 structural_parameters = 7;
                 (Vec::new(), "SPM -> SPMe".into())
             }
-            Candidate::ElectrolyteTransport => {
-                let factors = self.refitted_paths().iter().map(|p| around(p)).collect::<Option<_>>()?;
-                // An SPM has no electrolyte whose properties could be off: the electrolyte
-                // comes in (SPM -> DFN, its 9 fixed parameters counted) with its properties
-                // refitted, one effect (an electrolyte that is not the set's, e.g. salt lost).
+            // The electrolyte's transport properties, or its salt (one parameter for its
+            // transport and both electrodes' exchange currents). An SPM has no electrolyte
+            // whose properties could be off: the electrolyte comes in (SPM -> DFN, its 9 fixed
+            // parameters counted) with them refitted, one effect (an electrolyte that is not
+            // the set's, e.g. salt lost).
+            Candidate::ElectrolyteTransport | Candidate::ElectrolyteConcentration => {
+                let (range, what) = match self {
+                    Candidate::ElectrolyteTransport => (MISMATCH_RANGE, "electrolyte diffusivity and conductivity factors"),
+                    _ => (SALT_SEARCH, "electrolyte salt concentration"),
+                };
+                let fitted = refitted(self, range)?;
                 if spec.kind == ModelKind::Spm {
                     structural_parameters = SPM_TO_DFN_FIXED;
                     spec.kind = ModelKind::Dfn;
-                    (factors, "SPM -> DFN, electrolyte diffusivity and conductivity factors refitted".into())
+                    (fitted, format!("SPM -> DFN, {what} refitted"))
                 } else {
-                    (factors, "electrolyte diffusivity and conductivity factors refitted".into())
+                    (fitted, format!("{what} refitted"))
                 }
             }
             Candidate::SeiGrowth | Candidate::SeiGrowthSeries | Candidate::LithiumPlating | Candidate::LithiumPlatingPartial | Candidate::ActiveMaterialGrowth | Candidate::ActiveMaterialThroughput => {
@@ -65,8 +73,8 @@ impl Candidate {
                 (structural_parameters, aged) = (fixed, changed_base);
                 (extra, change)
             }
-            Candidate::Kinetics => (self.refitted_paths().iter().map(|p| around(p)).collect::<Option<_>>()?, "reaction rate constants of both electrodes refitted".into()),
-            Candidate::SolidDiffusion => (self.refitted_paths().iter().map(|p| around(p)).collect::<Option<_>>()?, "particle diffusivities refitted".into()),
+            Candidate::Kinetics => (refitted(self, MISMATCH_RANGE)?, "reaction rate constants of both electrodes refitted".into()),
+            Candidate::SolidDiffusion => (refitted(self, MISMATCH_RANGE)?, "particle diffusivities refitted".into()),
             Candidate::SizeDistribution => {
                 // Built on the SPM only (PyBaMM's MPM), without the ageing submodels: what
                 // `check_for` refuses is not offered.

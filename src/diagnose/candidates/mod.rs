@@ -8,6 +8,7 @@
 mod augment;
 mod experiments;
 mod plausibility;
+mod ranges;
 
 use serde::Serialize;
 
@@ -21,6 +22,7 @@ use crate::problem::fitting::{FitParameter, INITIAL_SOC, ModelSpec};
 use crate::problem::delay::VOLTAGE_DELAY;
 use crate::problem::history::{HISTORY_CURRENT, HISTORY_DURATION};
 use crate::problem::lost_lithium::{LOSS_SOC, loss_soc_range, lost_stoichiometries};
+use ranges::*;
 
 /// A candidate explanation.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
@@ -30,6 +32,7 @@ pub enum Candidate {
     Electrolyte,
     ElectrolyteComposite,
     ElectrolyteTransport,
+    ElectrolyteConcentration,
     Kinetics,
     SolidDiffusion,
     SizeDistribution,
@@ -85,83 +88,6 @@ pub struct Augmentation {
     pub screened: bool,
 }
 
-/// Multiplicative range (-) over which a parameter that the model already has is refitted.
-const MISMATCH_RANGE: f64 = 30.0;
-
-/// How far (K) the fitted ambient may lie from a recording's first temperature.
-const AMBIENT_RANGE_K: f64 = 30.0;
-
-/// Fixed parameters the DFN brings to an SPM: the electrolyte's diffusivity, conductivity,
-/// transference number, thermodynamic factor, initial concentration, porosities and
-/// tortuosity (7), and the two solid conductivities (2); to an SPMe, the latter two.
-const SPM_TO_DFN_FIXED: usize = 9;
-const SPME_TO_DFN_FIXED: usize = 2;
-
-/// The leak candidate's search range and plausible size, as C-rates (1/h): a sensor offset
-/// or a soft short beyond C/100 would be seen on any cycler.
-const LEAK_SEARCH_C_RATE: f64 = 0.02;
-const LEAK_PLAUSIBLE_C_RATE: f64 = 0.01;
-
-/// The unrelaxed-start candidate's search: a load of up to 3C either way (1/h), held for 10 s
-/// to 2 h (from 10 min) before the first recorded point.
-const HISTORY_C_RATE: f64 = 3.0;
-const HISTORY_START_S: f64 = 600.0;
-const HISTORY_RANGE_S: (f64, f64) = (10.0, 7200.0);
-
-/// The lithium-inventory candidate searches each electrode's initial stoichiometry within
-/// this much of its ends (-); a fit that ends there has run out of the OCP curve.
-const INVENTORY_EDGE: f64 = 0.01;
-
-/// The size-distribution candidate's starting and largest plausible relative standard
-/// deviation of the particle radii (-); PyBaMM's default spread is the start.
-const SIZE_SPREAD_START: f64 = 0.3;
-const SIZE_SPREAD_PLAUSIBLE: f64 = 0.8;
-
-/// Size classes per electrode of the size-distribution candidate (PyBaMM's 30 by default):
-/// at spreads of 0.4, 15 classes lie 0.06 mV RMS from 30 over a 1C discharge and over pulses
-/// with rests, at a third of the time (`examples/bench_psd`); 10 lie 0.26 mV away.
-const SIZE_CLASSES: usize = 15;
-
-/// The entropic-change candidate is offered when the model's temperature lies at least this
-/// far (K) from the OCPs' reference temperature (closer, the term is below the noise: 0.1 mV/K
-/// of a graphite's dU/dT over 5 K is 0.5 mV), or when the model heats itself.
-const ENTROPIC_MIN_OFFSET_K: f64 = 5.0;
-
-/// The entropic-change candidate's factors on the chemistry's published dU/dT (-): searched
-/// over this range, plausible within [`ENTROPIC_PLAUSIBLE`] (the same chemistry from another
-/// maker or batch; the sign of an entropy does not turn).
-const ENTROPIC_SEARCH: (f64, f64) = (-2.0, 4.0);
-const ENTROPIC_PLAUSIBLE: (f64, f64) = (0.0, 3.0);
-
-/// The second-material candidates' searches: the share of the electrode's sites (-), where
-/// the material fills (V vs Li, per electrode) and how broadly (V); plausible shares.
-const SECOND_SHARE: (f64, f64, f64) = (0.15, 0.0, 0.5);
-const SECOND_SHARE_PLAUSIBLE: (f64, f64) = (0.005, 0.4);
-const SECOND_POTENTIAL_NEGATIVE: (f64, f64, f64) = (0.3, 0.02, 1.2);
-const SECOND_POTENTIAL_POSITIVE: (f64, f64, f64) = (3.8, 3.0, 4.5);
-const SECOND_WIDTH: (f64, f64, f64) = (0.1, 0.005, 0.5);
-
-/// The voltage-offset candidate's search range and plausible size (V).
-const VOLTAGE_OFFSET_SEARCH: f64 = 0.05;
-const VOLTAGE_OFFSET_PLAUSIBLE: f64 = 0.02;
-
-/// The voltage-delay candidate's search range and plausible size (s).
-const VOLTAGE_DELAY_SEARCH_S: f64 = 10.0;
-const VOLTAGE_DELAY_PLAUSIBLE_S: f64 = 5.0;
-
-/// The voltage-gain candidate's search range and plausible size (-): 0.5 % reads 21 mV off
-/// at 4.2 V, as far as the offset's plausible 20 mV.
-const VOLTAGE_GAIN_SEARCH: f64 = 0.02;
-const VOLTAGE_GAIN_PLAUSIBLE: f64 = 0.005;
-
-/// The hysteresis candidate's starting decay rate (-): the state moves `1 - e^-1` of the way
-/// to a branch per tenth of the capacity passed.
-const HYSTERESIS_START_RATE: f64 = 10.0;
-
-/// How far into each branch (of ±1) a load must drive the unit hysteresis state for the
-/// recording to show hysteresis without rests after both directions.
-const HYSTERESIS_BRANCH: f64 = 0.5;
-
 /// The least window of charge (a share of the nominal capacity) over which an electrode's
 /// capacity is read from the open-circuit voltage's shape: a second active material is told
 /// from a shifted or stretched stoichiometry by a step or tail across a window, and a
@@ -176,11 +102,12 @@ fn too_narrow(f: &Features, q_nominal: f64) -> Option<String> {
 }
 
 impl Candidate {
-    pub const ALL: [Candidate; 28] = [
+    pub const ALL: [Candidate; 29] = [
         Candidate::SeriesResistance,
         Candidate::Electrolyte,
         Candidate::ElectrolyteComposite,
         Candidate::ElectrolyteTransport,
+        Candidate::ElectrolyteConcentration,
         Candidate::Kinetics,
         Candidate::SolidDiffusion,
         Candidate::SizeDistribution,
@@ -237,6 +164,7 @@ impl Candidate {
             Candidate::Electrolyte => "electrolyte transport",
             Candidate::ElectrolyteComposite => "electrolyte transport (composite SPMe)",
             Candidate::ElectrolyteTransport => "electrolyte transport properties (diffusivity, conductivity)",
+            Candidate::ElectrolyteConcentration => "electrolyte salt concentration (salt consumed or a different fill: the conductivity, the diffusion and the exchange currents together)",
             Candidate::Kinetics => "charge-transfer kinetics (exchange-current density)",
             Candidate::SolidDiffusion => "solid (particle) diffusivity",
             Candidate::SizeDistribution => "particle-size distribution (a spread of particle radii in each electrode)",
@@ -300,6 +228,7 @@ impl Candidate {
             Candidate::Electrolyte => "polarisation that grows with rate and relaxes over tens of seconds to minutes in rests (an SPM or SPMe used where the DFN's electrolyte is needed)",
             Candidate::ElectrolyteComposite => "as electrolyte transport, with the SPMe's composite (first-order) electrolyte instead of the DFN's",
             Candidate::ElectrolyteTransport => "rate-dependent polarisation that builds over the first minutes of a load and relaxes in rests, with the electrolyte model already present",
+            Candidate::ElectrolyteConcentration => "as the electrolyte's transport properties (rate-dependent polarisation that builds over minutes and relaxes in rests) together with a reaction overpotential at current steps in both electrodes: the salt sets the conductivity and diffusivity through their concentration dependence and the exchange currents as its square root",
             Candidate::Kinetics => "an instantaneous overpotential at current steps that is not proportional to the current (asinh) and grows towards the ends of the stoichiometry range",
             Candidate::SolidDiffusion => "an extra drop late in a high-rate discharge and slow (many minutes) relaxation in rests",
             Candidate::SizeDistribution => "relaxation in rests stretched over a range of times that no single diffusion time fits (small particles settle in minutes, large ones over hours), with an extra drop late in a load as the small particles run out first",
@@ -332,6 +261,7 @@ impl Candidate {
             Candidate::SeriesResistance => "0.1 to 100 mOhm",
             Candidate::Electrolyte | Candidate::ElectrolyteComposite | Candidate::RecordedTemperature => "no fitted parameters",
             Candidate::ElectrolyteTransport | Candidate::Kinetics | Candidate::SolidDiffusion => "0.05 to 20 times the set's value, not on a search bound",
+            Candidate::ElectrolyteConcentration => "0.3 to 2 times the set's salt concentration, not on a search bound",
             Candidate::SizeDistribution => "relative standard deviation of the radii up to 0.8 in each electrode (the mean radius the set's)",
             Candidate::LithiumInventory => "up to 40 % of the cyclable lithium lost (or gained)",
             Candidate::ActiveMaterial => "up to 50 % of an electrode's active material lost",
@@ -357,7 +287,7 @@ impl Candidate {
     /// The candidate that makes this one's structural change with no fitted parameters, on
     /// a model of `kind`: this one at the set's values is that one.
     pub fn structural_alias(self, kind: ModelKind) -> Option<Candidate> {
-        (self == Candidate::ElectrolyteTransport && kind == ModelKind::Spm).then_some(Candidate::Electrolyte)
+        (matches!(self, Candidate::ElectrolyteTransport | Candidate::ElectrolyteConcentration) && kind == ModelKind::Spm).then_some(Candidate::Electrolyte)
     }
 
     /// Why the recording cannot identify this candidate, or `None` when it can; `q_nominal`
@@ -414,6 +344,7 @@ impl Candidate {
     pub fn refitted_paths(self) -> &'static [&'static str] {
         match self {
             Candidate::ElectrolyteTransport => &["electrolyte.diffusivity_factor", "electrolyte.conductivity_factor"],
+            Candidate::ElectrolyteConcentration => &["electrolyte.initial_concentration"],
             Candidate::Kinetics => &["negative.rate_constant", "positive.rate_constant"],
             Candidate::SolidDiffusion => &["negative.diffusivity", "positive.diffusivity"],
             Candidate::ActiveMaterial => &["negative.active_fraction", "positive.active_fraction"],

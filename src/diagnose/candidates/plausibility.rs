@@ -10,6 +10,14 @@ impl Candidate {
         names.iter().zip(values).filter(move |(n, _)| self.refitted_paths().contains(&n.as_str()))
     }
 
+    /// Which of this candidate's own fitted values lies outside `range` times the set's value.
+    fn factor_outside(self, names: &[String], values: &[f64], base: &ParameterSet, range: (f64, f64)) -> Option<String> {
+        self.own(names, values).find_map(|(n, v)| {
+            let ratio = v / base.get(n).ok()?;
+            (!(range.0..=range.1).contains(&ratio)).then(|| format!("{n} at {ratio:.3} times the set's value is outside {} to {}", range.0, range.1))
+        })
+    }
+
     /// Why fitted `values` of `names` (parameter units) are implausible for this candidate,
     /// relative to the user's set `base`; `None` when they are plausible.
     pub fn implausible(self, names: &[String], values: &[f64], base: &ParameterSet, load: &Load) -> Option<String> {
@@ -19,11 +27,8 @@ impl Candidate {
                 let r = get("cell.contact_resistance")?;
                 (!(1e-4..=0.1).contains(&r)).then(|| format!("contact resistance {:.3} mOhm is outside 0.1 to 100 mOhm", r * 1e3))
             }
-            Candidate::ElectrolyteTransport | Candidate::Kinetics | Candidate::SolidDiffusion => self.own(names, values).find_map(|(n, v)| {
-                let v0 = base.get(n).ok()?;
-                let ratio = v / v0;
-                (!(0.05..=20.0).contains(&ratio)).then(|| format!("{n} at {ratio:.3} times the set's value is outside 0.05 to 20"))
-            }),
+            Candidate::ElectrolyteTransport | Candidate::Kinetics | Candidate::SolidDiffusion => self.factor_outside(names, values, base, MISMATCH_PLAUSIBLE),
+            Candidate::ElectrolyteConcentration => self.factor_outside(names, values, base, SALT_PLAUSIBLE),
             Candidate::LithiumInventory => {
                 let (cn, cp) = (get("negative.initial_concentration")?, get("positive.initial_concentration")?);
                 let lithium = |a: f64, b: f64| base.negative.active_fraction * base.negative.thickness * a + base.positive.active_fraction * base.positive.thickness * b;
