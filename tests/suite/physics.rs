@@ -171,7 +171,7 @@ fn a_particle_radius_is_a_diffusivity_and_a_rate_constant_together() {
             let (gap, effect) = (rms(&a, &b), rms(&a, &set));
             println!("{kind} {side} radius x{f}: {:.2e} mV from D/f^2 and k/f (round-off: the same discretisation), the radius itself moves it {:.2} mV", gap * 1e3, effect * 1e3);
             assert!(effect > 1e-3, "{kind} {side}: the radius moved the voltage only {effect:e} V");
-            assert!(gap < 1e-12, "{kind} {side}: {gap:e} V apart");
+            assert!(gap < 1e-13, "{kind} {side}: {gap:e} V apart");
         }
     }
 }

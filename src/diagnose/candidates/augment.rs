@@ -19,7 +19,7 @@ impl Candidate {
             let v = p.get(path).ok().filter(|v| *v > 0.0)?;
             Some(FitParameter::log(path, v, v / range, v * range))
         };
-        let refitted = |c: Candidate, range: f64| c.refitted_paths().iter().map(|path| around(path, range)).collect::<Option<Vec<_>>>();
+        let refitted = |range: f64| self.refitted_paths().iter().map(|path| around(path, range)).collect::<Option<Vec<_>>>();
         let mut replaces = Vec::new();
         let mut structural_parameters = 0;
         let (extra, change): (Vec<FitParameter>, String) = match self {
@@ -59,7 +59,7 @@ impl Candidate {
                     Candidate::ElectrolyteTransport => (MISMATCH_RANGE, "electrolyte diffusivity and conductivity factors"),
                     _ => (SALT_SEARCH, "electrolyte salt concentration"),
                 };
-                let fitted = refitted(self, range)?;
+                let fitted = refitted(range)?;
                 if spec.kind == ModelKind::Spm {
                     structural_parameters = SPM_TO_DFN_FIXED;
                     spec.kind = ModelKind::Dfn;
@@ -73,8 +73,8 @@ impl Candidate {
                 (structural_parameters, aged) = (fixed, changed_base);
                 (extra, change)
             }
-            Candidate::Kinetics => (refitted(self, MISMATCH_RANGE)?, "reaction rate constants of both electrodes refitted".into()),
-            Candidate::SolidDiffusion => (refitted(self, MISMATCH_RANGE)?, "particle diffusivities refitted".into()),
+            Candidate::Kinetics => (refitted(MISMATCH_RANGE)?, "reaction rate constants of both electrodes refitted".into()),
+            Candidate::SolidDiffusion => (refitted(MISMATCH_RANGE)?, "particle diffusivities refitted".into()),
             Candidate::SizeDistribution => {
                 // Built on the SPM only (PyBaMM's MPM), without the ageing submodels: what
                 // `check_for` refuses is not offered.
