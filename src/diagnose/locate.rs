@@ -209,7 +209,6 @@ pub fn analyse(rec: &Recording, features: &Features, residual: &[f64], nominal_c
         }
     }
 
-    let rest: Vec<f64> = (0..n).filter(|&k| current[k] == 0.0).map(|k| r[k]).collect();
     // Sign of the last non-zero current before each point.
     let last_sign: Vec<f64> = current
         .iter()
@@ -224,7 +223,7 @@ pub fn analyse(rec: &Recording, features: &Features, residual: &[f64], nominal_c
         let sel: Vec<f64> = (0..n).filter(|&k| current[k] == 0.0 && last_sign[k] == sign).map(|k| r[k]).collect();
         if sel.is_empty() { f64::NAN } else { sel.iter().sum::<f64>() / sel.len() as f64 }
     };
-    let load: Vec<f64> = (0..n).filter(|&k| current[k] != 0.0).map(|k| r[k]).collect();
+    let (rest_rms, load_rms) = super::at_rest::rest_and_load_rms(rec, residual);
     let abs_i: Vec<f64> = current.iter().map(|v| v.abs()).collect();
     let i_max = abs_i.iter().fold(0.0f64, |m, v| m.max(*v));
     let mut current_edges = vec![0.0, 1e-9 * i_max.max(1e-12)];
@@ -253,10 +252,10 @@ pub fn analyse(rec: &Recording, features: &Features, residual: &[f64], nominal_c
             regress(&heating, &r)
         }),
         step_response: StepResponse { steps: di.len(), instantaneous_resistance, r2: step_r2, windows },
-        rest_rms: rms(&rest),
+        rest_rms,
         rest_after_discharge: rest_mean(1.0),
         rest_after_charge: rest_mean(-1.0),
-        load_rms: rms(&load),
+        load_rms,
         current_bands: bands(&abs_i, &r, &current_edges),
         soc_bands: if s1 > s0 { bands(&soc, &r, &soc_edges) } else { Vec::new() },
         segments: segments(&time, &current, &r, noise.max(0.0) * 3.0),

@@ -20,6 +20,7 @@
 //! [`diagnose_rounds`] repeats the diagnosis on the augmented model to find a second effect.
 
 mod ageing;
+pub mod at_rest;
 pub mod backward;
 mod baseline;
 mod breakdown;

@@ -228,6 +228,7 @@ fn fit_pair(a: &CandidateOutcome, b: &CandidateOutcome, round: &Round, start: Pa
     let implausible = [a.candidate, b.candidate]
         .iter()
         .find_map(|c| c.implausible(&names, &values, round.base, &round.load).or_else(|| c.unresolved(&names, &values, round.data)))
+        .or_else(|| super::at_rest::stands_in_for_the_ocv(&[a.candidate, b.candidate], &fit, round))
         .or_else(|| undetermined.into_iter().next())
         .or_else(|| unchanged.then(|| format!("{} keeps the set's values: it adds nothing", b.candidate.name())));
     // Named by the pair's own values (e.g. the share of capacity lost).
@@ -262,10 +263,16 @@ fn pair_class(a: super::Class, b: super::Class) -> super::Class {
 }
 
 /// Whether two candidates describe one physics (the electrolyte model and its properties, two
-/// laws of SEI growth, of lithium plating or of progressive loss of active material, or the
-/// voltage channel's offset and gain): a pair of them is one effect, not two.
+/// laws of SEI growth, of lithium plating or of progressive loss of active material, the
+/// voltage channel's offset and gain, or a particle radius and what it sets: the particles'
+/// diffusion, their surface's kinetics, their sizes): a pair of them is one effect, not two.
 fn one_physics(a: Candidate, b: Candidate) -> bool {
     use Candidate::*;
+    let radius = |c: Candidate| matches!(c, RadiusNegative | RadiusPositive);
+    let set_by_radius = |c: Candidate| matches!(c, Kinetics | SolidDiffusion | SizeDistribution);
+    if (radius(a) && set_by_radius(b)) || (radius(b) && set_by_radius(a)) {
+        return true;
+    }
     let family = |c: Candidate| match c {
         Electrolyte | ElectrolyteComposite | ElectrolyteTransport | ElectrolyteConcentration => Some(0),
         LithiumPlating | LithiumPlatingPartial => Some(1),
@@ -292,6 +299,8 @@ mod tests {
         assert!(one_physics(Thermal, RecordedTemperature));
         assert!(!one_physics(LithiumPlating, SeiGrowth));
         assert!(one_physics(ElectrolyteConcentration, ElectrolyteTransport));
+        assert!(one_physics(RadiusNegative, Kinetics) && one_physics(SolidDiffusion, RadiusPositive));
+        assert!(!one_physics(Kinetics, SolidDiffusion) && !one_physics(RadiusNegative, RadiusPositive));
         assert!(!one_physics(SeriesResistance, LithiumInventory));
     }
 }

@@ -183,6 +183,7 @@ pub(super) fn assess(c: Candidate, aug: Result<candidates::Augmentation, String>
     out.implausible = c
         .implausible(&names, &values, base, &round.load)
         .or_else(|| c.unresolved(&names, &values, round.data))
+        .or_else(|| super::at_rest::stands_in_for_the_ocv(&[c], &f, round))
         .or_else(|| alias.map(|a| format!("its values are the set's: it is {} alone", a.name())));
     out.named = out.clears_margins && out.implausible.is_none();
     out.name = c.named_by_values(&f.names, &f.values, base, &round.load);

@@ -187,10 +187,6 @@ fn truncated(f: &FitOutcome) -> &'static str {
     if f.converged { "" } else { " (its search stopped on the iteration cap, not on convergence)" }
 }
 
-/// Share of the RMS residual under load that the RMS residual at rest must reach for an
-/// unexplained verdict to point at the open-circuit voltage (a dynamic effect relaxes at rest).
-const OCV_AT_REST: f64 = 0.5;
-
 /// Share of the squared residual that a stretch at the very start of the recording must hold,
 /// and the least time (s) it must last, for an unexplained verdict to point at an unrelaxed
 /// start: the particles relax over minutes (a shorter stretch is the first step's fast
@@ -326,7 +322,7 @@ pub fn verdict_in_words(d: &Diagnosis) -> String {
             // A cell whose own open-circuit voltage differs from the set's is off at rest as
             // much as under load, which no dynamic candidate changes.
             let r = &d.residual;
-            let ocv = (r.rest_rms >= OCV_AT_REST * r.load_rms && r.rest_rms > 10.0 * d.noise).then(|| {
+            let ocv = super::at_rest::off_at_rest(r.rest_rms, r.load_rms, d.noise).then(|| {
                 format!(
                     " At rest the model is off by {} RMS (under load {}): the cell's open-circuit voltage differs from the set's (its electrodes' OCP curves or their balance); a pseudo-OCV at C/20 both ways and `cellstudio parameterise` fit that before a diagnosis.",
                     mv(r.rest_rms),

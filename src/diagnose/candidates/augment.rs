@@ -75,6 +75,9 @@ impl Candidate {
             }
             Candidate::Kinetics => (refitted(MISMATCH_RANGE)?, "reaction rate constants of both electrodes refitted".into()),
             Candidate::SolidDiffusion => (refitted(MISMATCH_RANGE)?, "particle diffusivities refitted".into()),
+            // One parameter for two effects of an electrode (the diffusion time R^2/D and the
+            // surface per volume 3 eps/R); geometric, so every evaluation rebuilds the mesh.
+            Candidate::RadiusNegative | Candidate::RadiusPositive => (refitted(RADIUS_SEARCH)?, "particle radius refitted".into()),
             Candidate::SizeDistribution => {
                 // Built on the SPM only (PyBaMM's MPM), without the ageing submodels: what
                 // `check_for` refuses is not offered.

@@ -35,6 +35,8 @@ pub enum Candidate {
     ElectrolyteConcentration,
     Kinetics,
     SolidDiffusion,
+    RadiusNegative,
+    RadiusPositive,
     SizeDistribution,
     LithiumInventory,
     ActiveMaterial,
@@ -102,7 +104,7 @@ fn too_narrow(f: &Features, q_nominal: f64) -> Option<String> {
 }
 
 impl Candidate {
-    pub const ALL: [Candidate; 29] = [
+    pub const ALL: [Candidate; 31] = [
         Candidate::SeriesResistance,
         Candidate::Electrolyte,
         Candidate::ElectrolyteComposite,
@@ -110,6 +112,8 @@ impl Candidate {
         Candidate::ElectrolyteConcentration,
         Candidate::Kinetics,
         Candidate::SolidDiffusion,
+        Candidate::RadiusNegative,
+        Candidate::RadiusPositive,
         Candidate::SizeDistribution,
         Candidate::LithiumInventory,
         Candidate::ActiveMaterial,
@@ -167,6 +171,8 @@ impl Candidate {
             Candidate::ElectrolyteConcentration => "electrolyte salt concentration (salt consumed or a different fill: the conductivity, the diffusion and the exchange currents together)",
             Candidate::Kinetics => "charge-transfer kinetics (exchange-current density)",
             Candidate::SolidDiffusion => "solid (particle) diffusivity",
+            Candidate::RadiusNegative => "particle radius of the negative electrode (its solid diffusion length and surface area per volume together)",
+            Candidate::RadiusPositive => "particle radius of the positive electrode (its solid diffusion length and surface area per volume together)",
             Candidate::SizeDistribution => "particle-size distribution (a spread of particle radii in each electrode)",
             Candidate::LithiumInventory => "loss of lithium inventory (stoichiometry offset)",
             Candidate::ActiveMaterial => "loss of active material (electrode capacity)",
@@ -221,6 +227,29 @@ impl Candidate {
         }
     }
 
+    /// Whether this effect relaxes when the current stops (it shapes the voltage under load
+    /// and the relaxation after it, never the relaxed voltage): it cannot explain a model
+    /// that is off at rest as much as under load ([`super::at_rest`]).
+    pub fn relaxes_at_rest(self) -> bool {
+        use Candidate::*;
+        matches!(
+            self,
+            SeriesResistance
+                | Electrolyte
+                | ElectrolyteComposite
+                | ElectrolyteTransport
+                | ElectrolyteConcentration
+                | Kinetics
+                | SolidDiffusion
+                | RadiusNegative
+                | RadiusPositive
+                | SizeDistribution
+                | Thermal
+                | RcDynamics
+                | VoltageDelay
+        )
+    }
+
     /// The residual signature this effect leaves when it is missing or mis-set.
     pub fn signature(self) -> &'static str {
         match self {
@@ -231,6 +260,7 @@ impl Candidate {
             Candidate::ElectrolyteConcentration => "as the electrolyte's transport properties (rate-dependent polarisation that builds over minutes and relaxes in rests) together with a reaction overpotential at current steps in both electrodes: the salt sets the conductivity and diffusivity through their concentration dependence and the exchange currents as its square root",
             Candidate::Kinetics => "an instantaneous overpotential at current steps that is not proportional to the current (asinh) and grows towards the ends of the stoichiometry range",
             Candidate::SolidDiffusion => "an extra drop late in a high-rate discharge and slow (many minutes) relaxation in rests",
+            Candidate::RadiusNegative | Candidate::RadiusPositive => "as one electrode's solid diffusivity (an extra drop late in a load, slow relaxation in rests) together with its reaction overpotential at current steps: a radius R sets both, the diffusion time as R^2/D and the surface per volume as 3 eps/R",
             Candidate::SizeDistribution => "relaxation in rests stretched over a range of times that no single diffusion time fits (small particles settle in minutes, large ones over hours), with an extra drop late in a load as the small particles run out first",
             Candidate::LithiumInventory => "the end of discharge (the knee) arrives earlier or later and the OCV is shifted along the capacity axis; persists at rest",
             Candidate::ActiveMaterial => "one electrode's OCV features are compressed along the capacity axis (less capacity), with a shifted knee; persists at rest",
@@ -262,6 +292,7 @@ impl Candidate {
             Candidate::Electrolyte | Candidate::ElectrolyteComposite | Candidate::RecordedTemperature => "no fitted parameters",
             Candidate::ElectrolyteTransport | Candidate::Kinetics | Candidate::SolidDiffusion => "0.05 to 20 times the set's value, not on a search bound",
             Candidate::ElectrolyteConcentration => "0.3 to 2 times the set's salt concentration, not on a search bound",
+            Candidate::RadiusNegative | Candidate::RadiusPositive => "0.2 to 5 times the set's radius, not on a search bound",
             Candidate::SizeDistribution => "relative standard deviation of the radii up to 0.8 in each electrode (the mean radius the set's)",
             Candidate::LithiumInventory => "up to 40 % of the cyclable lithium lost (or gained)",
             Candidate::ActiveMaterial => "up to 50 % of an electrode's active material lost",
@@ -347,6 +378,8 @@ impl Candidate {
             Candidate::ElectrolyteConcentration => &["electrolyte.initial_concentration"],
             Candidate::Kinetics => &["negative.rate_constant", "positive.rate_constant"],
             Candidate::SolidDiffusion => &["negative.diffusivity", "positive.diffusivity"],
+            Candidate::RadiusNegative => &["negative.particle_radius"],
+            Candidate::RadiusPositive => &["positive.particle_radius"],
             Candidate::ActiveMaterial => &["negative.active_fraction", "positive.active_fraction"],
             Candidate::HeatBalance => &["thermal.heat_transfer_coefficient", "thermal.ambient_temperature"],
             Candidate::LithiumInventory => &["negative.initial_concentration", "positive.initial_concentration"],

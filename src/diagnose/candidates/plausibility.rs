@@ -29,6 +29,7 @@ impl Candidate {
             }
             Candidate::ElectrolyteTransport | Candidate::Kinetics | Candidate::SolidDiffusion => self.factor_outside(names, values, base, MISMATCH_PLAUSIBLE),
             Candidate::ElectrolyteConcentration => self.factor_outside(names, values, base, SALT_PLAUSIBLE),
+            Candidate::RadiusNegative | Candidate::RadiusPositive => self.factor_outside(names, values, base, RADIUS_PLAUSIBLE),
             Candidate::LithiumInventory => {
                 let (cn, cp) = (get("negative.initial_concentration")?, get("positive.initial_concentration")?);
                 let lithium = |a: f64, b: f64| base.negative.active_fraction * base.negative.thickness * a + base.positive.active_fraction * base.positive.thickness * b;
@@ -146,6 +147,10 @@ impl Candidate {
                 });
                 format!("loss of active material, {which} electrode ({:.0} % of its capacity{held})", 100.0 * l)
             }
+            Candidate::RadiusNegative | Candidate::RadiusPositive => match self.own(names, values).next().and_then(|(n, r)| Some((r / base.get(n).ok()?, n))) {
+                Some((ratio, _)) => format!("{}, {ratio:.2} times the set's", self.name()),
+                None => self.name().to_string(),
+            },
             Candidate::ActiveMaterialGrowth | Candidate::ActiveMaterialThroughput => {
                 let (n, p) = ageing::lam_losses(get, base, load);
                 let (which, l) = if p > n { ("positive", p) } else { ("negative", n) };

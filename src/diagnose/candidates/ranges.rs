@@ -37,6 +37,11 @@ pub(super) const INVENTORY_EDGE: f64 = 0.01;
 pub(super) const SALT_SEARCH: f64 = 5.0;
 pub(super) const SALT_PLAUSIBLE: (f64, f64) = (0.3, 2.0);
 
+/// The particle-radius candidates' search (a factor either way on the set's radius) and their
+/// plausible range (-): a radius off by more than 5x is another material, not another lot.
+pub(super) const RADIUS_SEARCH: f64 = 10.0;
+pub(super) const RADIUS_PLAUSIBLE: (f64, f64) = (0.2, 5.0);
+
 /// The size-distribution candidate's starting and largest plausible relative standard
 /// deviation of the particle radii (-); PyBaMM's default spread is the start.
 pub(super) const SIZE_SPREAD_START: f64 = 0.3;
