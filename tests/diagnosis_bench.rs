@@ -1454,10 +1454,15 @@ fn am3_coarser_negative_particles_in_a_patient_hoist_dfn() {
     assert!((r - 2.0).abs() < 0.03, "negative radius x{r:.4} (truth 2)");
 }
 
+/// A positive electrode 8 % thicker is more capacity and more lithium: a gain the loss
+/// candidate cannot fit (a leak with the diffusivities stood in, 12.09 -> 5.48 mV) until a
+/// heavier coating was a candidate.
 #[test]
-#[ignore = "fails (open): a positive electrode 8 % thicker (more capacity and more lithium) is a gain the active-material candidate cannot fit (it only loses material); a leak current with the particle diffusivities stands in (12.09 -> 5.48 mV), then unexplained structure"]
 fn am4_a_heavier_positive_coating_on_a_harvest_trolley_spme() {
-    run_case("diagnosis-extra/am4_thickness_positive_x1p08_greenhouse_harvest_trolley_36C_30s_2mV_spme");
+    let rounds = run_case("diagnosis-extra/am4_thickness_positive_x1p08_greenhouse_harvest_trolley_36C_30s_2mV_spme");
+    // Achieved 81.67 um for the truth's 81.65 (2.6e-4 of the set's 75.6 um).
+    let l = first_fitted(&rounds, "positive.thickness");
+    assert!((l - 81.65e-6).abs() < 1e-3 * chen2020().positive.thickness, "positive thickness {l:.4e} m (truth 8.165e-5)");
 }
 
 #[test]

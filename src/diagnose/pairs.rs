@@ -6,7 +6,8 @@
 //! parameters and structural changes count). Every pair is screened with a few iterations
 //! from no effect (as a single starts; a second effect's ageing rates from its single fit's
 //! decade screen); the three best by training error continue to
-//! convergence from there, and the three best whose fit is doubtful are refitted from every
+//! convergence from there (and as many of the next that could be named as screened as those
+//! three hold that could not), and the three best whose fit is doubtful are refitted from every
 //! start.
 
 use rayon::prelude::*;
@@ -48,13 +49,14 @@ pub(super) fn named_pairs(singles: &[CandidateOutcome], round: &Round) -> Vec<Ca
     let unconverged_screen = |i: &usize| first[*i].1.fit.as_ref().is_some_and(|f| !f.converged);
     let top = &best_first[..CONTINUED_PAIRS.min(best_first.len())];
     let mut unconverged: Vec<usize> = top.iter().copied().filter(unconverged_screen).collect();
-    // When none of the best few could be named as screened, the best screen that could also
-    // continues: one dominant effect's pairs need not take every slot (n4: a second positive
-    // material on the edge of its range, paired with anything, took all three from positive
-    // LAM + lithium, whose screen already stood at 1 mV).
-    if top.iter().all(|i| first[*i].1.implausible.is_some()) {
-        unconverged.extend(best_first[top.len()..].iter().copied().find(|i| first[*i].1.implausible.is_none() && unconverged_screen(i)));
-    }
+    // A slot held by a screen that could not be named as screened is matched by the next
+    // best screen that could: one dominant effect's implausible pairs need not crowd out the
+    // truth (n4: a second positive material on the edge of its range, paired with anything,
+    // took all three from positive LAM + lithium, whose screen already stood at 1 mV; f5: a
+    // heavier coating beside two implausible second materials pushed negative LAM + lithium
+    // to fifth).
+    let implausible_slots = top.iter().filter(|i| first[**i].1.implausible.is_some()).count();
+    unconverged.extend(best_first[top.len()..].iter().copied().filter(|i| first[*i].1.implausible.is_none() && unconverged_screen(i)).take(implausible_slots));
     let continued: Vec<(usize, Option<CandidateOutcome>)> = unconverged
         .par_iter()
         .map(|&i| {
@@ -264,8 +266,9 @@ fn pair_class(a: super::Class, b: super::Class) -> super::Class {
 
 /// Whether two candidates describe one physics (the electrolyte model and its properties, two
 /// laws of SEI growth, of lithium plating or of progressive loss of active material, the
-/// voltage channel's offset and gain, or a particle radius and what it sets: the particles'
-/// diffusion, their surface's kinetics, their sizes): a pair of them is one effect, not two.
+/// voltage channel's offset and gain, an electrode's capacity lost or gained, or a particle
+/// radius and what it sets: the particles' diffusion, their surface's kinetics, their sizes):
+/// a pair of them is one effect, not two.
 fn one_physics(a: Candidate, b: Candidate) -> bool {
     use Candidate::*;
     let radius = |c: Candidate| matches!(c, RadiusNegative | RadiusPositive);
@@ -280,6 +283,7 @@ fn one_physics(a: Candidate, b: Candidate) -> bool {
         SeiGrowth | SeiGrowthSeries => Some(3),
         VoltageOffset | VoltageGain => Some(4),
         Thermal | HeatBalance | RecordedTemperature => Some(5),
+        ActiveMaterial | ElectrodeLoading => Some(6),
         _ => None,
     };
     family(a).is_some() && family(a) == family(b)
@@ -298,6 +302,7 @@ mod tests {
         assert!(one_physics(VoltageOffset, VoltageGain));
         assert!(one_physics(Thermal, RecordedTemperature));
         assert!(!one_physics(LithiumPlating, SeiGrowth));
+        assert!(one_physics(ActiveMaterial, ElectrodeLoading));
         assert!(one_physics(ElectrolyteConcentration, ElectrolyteTransport));
         assert!(one_physics(RadiusNegative, Kinetics) && one_physics(SolidDiffusion, RadiusPositive));
         assert!(!one_physics(Kinetics, SolidDiffusion) && !one_physics(RadiusNegative, RadiusPositive));

@@ -120,6 +120,16 @@ impl Candidate {
                 }
                 (fractions, "active-material volume fractions of both electrodes and the state of charge at which they were lost (the lithium it took) refitted".into())
             }
+            // A heavier coating: each electrode's thickness from the set's up (its porosity and
+            // particles the set's), the lithium it holds at the set's stoichiometry; geometric,
+            // so every evaluation rebuilds the mesh. Less material is the loss candidate's.
+            Candidate::ElectrodeLoading => {
+                let thicker = |path: &str| {
+                    let l = p.get(path).ok().filter(|l| *l > 0.0)?;
+                    Some(FitParameter::log(path, 1.02 * l, l, LOADING_GAIN * l))
+                };
+                (self.refitted_paths().iter().map(|path| thicker(path)).collect::<Option<_>>()?, "electrode thicknesses refitted from the set's upwards (more capacity and lithium per area)".into())
+            }
             Candidate::Thermal => {
                 if spec.submodels.thermal {
                     return None;

@@ -40,6 +40,7 @@ pub enum Candidate {
     SizeDistribution,
     LithiumInventory,
     ActiveMaterial,
+    ElectrodeLoading,
     Thermal,
     HeatBalance,
     RecordedTemperature,
@@ -104,7 +105,7 @@ fn too_narrow(f: &Features, q_nominal: f64) -> Option<String> {
 }
 
 impl Candidate {
-    pub const ALL: [Candidate; 31] = [
+    pub const ALL: [Candidate; 32] = [
         Candidate::SeriesResistance,
         Candidate::Electrolyte,
         Candidate::ElectrolyteComposite,
@@ -117,6 +118,7 @@ impl Candidate {
         Candidate::SizeDistribution,
         Candidate::LithiumInventory,
         Candidate::ActiveMaterial,
+        Candidate::ElectrodeLoading,
         Candidate::Thermal,
         Candidate::HeatBalance,
         Candidate::RecordedTemperature,
@@ -176,6 +178,7 @@ impl Candidate {
             Candidate::SizeDistribution => "particle-size distribution (a spread of particle radii in each electrode)",
             Candidate::LithiumInventory => "loss of lithium inventory (stoichiometry offset)",
             Candidate::ActiveMaterial => "loss of active material (electrode capacity)",
+            Candidate::ElectrodeLoading => "a heavier electrode coating (more active material per area than the set's: a thicker electrode with its capacity and lithium)",
             Candidate::Thermal => "thermal (self-heating, temperature dependence)",
             Candidate::HeatBalance => "the thermal model's heat balance (self-heating with another heat-transfer coefficient or ambient)",
             Candidate::RecordedTemperature => "temperature dependence at the recorded temperature (the cell's temperature set from outside, e.g. by an ambient that changed, not by its own heat alone)",
@@ -264,6 +267,7 @@ impl Candidate {
             Candidate::SizeDistribution => "relaxation in rests stretched over a range of times that no single diffusion time fits (small particles settle in minutes, large ones over hours), with an extra drop late in a load as the small particles run out first",
             Candidate::LithiumInventory => "the end of discharge (the knee) arrives earlier or later and the OCV is shifted along the capacity axis; persists at rest",
             Candidate::ActiveMaterial => "one electrode's OCV features are compressed along the capacity axis (less capacity), with a shifted knee; persists at rest",
+            Candidate::ElectrodeLoading => "one electrode's OCV features stretched along the capacity axis (more capacity than the set's), with a knee moved later and, in a model with an electrolyte, slightly more polarisation across the thicker electrode; persists at rest",
             Candidate::Thermal => "losses that fall as the cell warms under load (correlated with the recorded temperature rise or with the accumulated I²)",
             Candidate::HeatBalance => "as self-heating, with the thermal model already there: the cell warms faster or slower under load than the model does (the recorded temperature rises above or below the model's), and its losses follow",
             Candidate::RecordedTemperature => "losses that follow the recorded temperature rather than the load: larger wherever the cell was colder, whatever the current did before",
@@ -296,6 +300,7 @@ impl Candidate {
             Candidate::SizeDistribution => "relative standard deviation of the radii up to 0.8 in each electrode (the mean radius the set's)",
             Candidate::LithiumInventory => "up to 40 % of the cyclable lithium lost (or gained)",
             Candidate::ActiveMaterial => "up to 50 % of an electrode's active material lost",
+            Candidate::ElectrodeLoading => "up to 50 % more active material per area in an electrode (the search's bound)",
             Candidate::Thermal | Candidate::HeatBalance => "heat-transfer coefficient 1 to 500 W/(m^2 K)",
             Candidate::RcDynamics => "time constant R C of 1 ms to 30 s (longer is transport, not an interface)",
             Candidate::Hysteresis => "half-width up to 50 mV",
@@ -381,6 +386,7 @@ impl Candidate {
             Candidate::RadiusNegative => &["negative.particle_radius"],
             Candidate::RadiusPositive => &["positive.particle_radius"],
             Candidate::ActiveMaterial => &["negative.active_fraction", "positive.active_fraction"],
+            Candidate::ElectrodeLoading => &["negative.thickness", "positive.thickness"],
             Candidate::HeatBalance => &["thermal.heat_transfer_coefficient", "thermal.ambient_temperature"],
             Candidate::LithiumInventory => &["negative.initial_concentration", "positive.initial_concentration"],
             _ => &[],

@@ -29,6 +29,9 @@ impl Candidate {
             }
             Candidate::ElectrolyteTransport | Candidate::Kinetics | Candidate::SolidDiffusion => self.factor_outside(names, values, base, MISMATCH_PLAUSIBLE),
             Candidate::ElectrolyteConcentration => self.factor_outside(names, values, base, SALT_PLAUSIBLE),
+            // The set's own thickness is the search's lower bound (no gain): only the upper one
+            // marks a stand-in.
+            Candidate::ElectrodeLoading => self.factor_outside(names, values, base, (0.0, 0.99 * LOADING_GAIN)),
             Candidate::RadiusNegative | Candidate::RadiusPositive => self.factor_outside(names, values, base, RADIUS_PLAUSIBLE),
             Candidate::LithiumInventory => {
                 let (cn, cp) = (get("negative.initial_concentration")?, get("positive.initial_concentration")?);
@@ -146,6 +149,15 @@ impl Candidate {
                     format!(", lost at stoichiometry {:.2}", if p >= n { y } else { x })
                 });
                 format!("loss of active material, {which} electrode ({:.0} % of its capacity{held})", 100.0 * l)
+            }
+            Candidate::ElectrodeLoading => {
+                let gain = |side: &str| {
+                    let path = format!("{side}.thickness");
+                    get(&path).and_then(|l| base.get(&path).ok().map(|l0| l / l0 - 1.0)).unwrap_or(0.0)
+                };
+                let (n, p) = (gain("negative"), gain("positive"));
+                let (side, g) = if p >= n { ("positive", p) } else { ("negative", n) };
+                format!("a heavier {side} electrode coating ({:.0} % more active material per area than the set's: capacity and lithium)", 100.0 * g)
             }
             Candidate::RadiusNegative | Candidate::RadiusPositive => match self.own(names, values).next().and_then(|(n, r)| Some((r / base.get(n).ok()?, n))) {
                 Some((ratio, _)) => format!("{}, {ratio:.2} times the set's", self.name()),

@@ -37,6 +37,10 @@ pub(super) const INVENTORY_EDGE: f64 = 0.01;
 pub(super) const SALT_SEARCH: f64 = 5.0;
 pub(super) const SALT_PLAUSIBLE: (f64, f64) = (0.3, 2.0);
 
+/// The heavier-coating candidate's search: each electrode's thickness from the set's up to this
+/// factor (-). Less material than the set's is the active-material loss candidate's.
+pub(super) const LOADING_GAIN: f64 = 1.5;
+
 /// The particle-radius candidates' search (a factor either way on the set's radius) and their
 /// plausible range (-): a radius off by more than 5x is another material, not another lot.
 pub(super) const RADIUS_SEARCH: f64 = 10.0;
