@@ -10,10 +10,14 @@ impl Candidate {
         names.iter().zip(values).filter(move |(n, _)| self.refitted_paths().contains(&n.as_str()))
     }
 
+    /// This candidate's own fitted values as factors of the set's values, by path.
+    fn own_factors<'a>(self, names: &'a [String], values: &'a [f64], base: &'a ParameterSet) -> impl Iterator<Item = (&'a String, f64)> {
+        self.own(names, values).filter_map(|(n, v)| Some((n, v / base.get(n).ok()?)))
+    }
+
     /// Which of this candidate's own fitted values lies outside `range` times the set's value.
     fn factor_outside(self, names: &[String], values: &[f64], base: &ParameterSet, range: (f64, f64)) -> Option<String> {
-        self.own(names, values).find_map(|(n, v)| {
-            let ratio = v / base.get(n).ok()?;
+        self.own_factors(names, values, base).find_map(|(n, ratio)| {
             (!(range.0..=range.1).contains(&ratio)).then(|| format!("{n} at {ratio:.3} times the set's value is outside {} to {}", range.0, range.1))
         })
     }
@@ -159,8 +163,8 @@ impl Candidate {
                 let (side, g) = if p >= n { ("positive", p) } else { ("negative", n) };
                 format!("a heavier {side} electrode coating ({:.0} % more active material per area than the set's: capacity and lithium)", 100.0 * g)
             }
-            Candidate::RadiusNegative | Candidate::RadiusPositive => match self.own(names, values).next().and_then(|(n, r)| Some((r / base.get(n).ok()?, n))) {
-                Some((ratio, _)) => format!("{}, {ratio:.2} times the set's", self.name()),
+            Candidate::RadiusNegative | Candidate::RadiusPositive => match self.own_factors(names, values, base).next() {
+                Some((_, ratio)) => format!("{}, {ratio:.2} times the set's", self.name()),
                 None => self.name().to_string(),
             },
             Candidate::ActiveMaterialGrowth | Candidate::ActiveMaterialThroughput => {
