@@ -3,152 +3,19 @@
 
 use std::sync::Mutex;
 
-use serde::{Deserialize, Serialize};
-
 use super::delay::{DelayedTimes, delay_at, is_delay};
-use super::history::{history_step, is_history, state_after};
-use super::lost_lithium::{is_loss_soc, take_lost_lithium};
+use super::fit_parameter::apply;
+pub use super::fit_parameter::{FitParameter, INITIAL_SOC};
+use super::history::{history_step, state_after};
+pub use super::model_spec::ModelSpec;
 use super::sensitivity::{PARAMETER_STEP, Sensitivities};
-use crate::cost::Prior;
 use crate::data::Recording;
 use crate::error::Error;
-use crate::geometry::MeshSizes;
-use crate::models::ModelBuilder;
-use crate::models::{Model, ModelKind, Submodels};
+use crate::models::{Model, ModelBuilder};
 use crate::params::ParameterSet;
 use crate::protocol::Protocol;
 use crate::simulation::{SimOptions, Solution, simulate, simulate_observed};
 use crate::solver::{SolverOptions, Workspace};
-
-/// Which model to build.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct ModelSpec {
-    pub kind: ModelKind,
-    #[serde(default)]
-    pub submodels: Submodels,
-    #[serde(default)]
-    pub mesh: MeshSizes,
-    /// The thermal submodel's temperature follows the recording's instead of its heat
-    /// balance (`dT/dt = (T_rec(t) - T) / simulation::TEMPERATURE_LAG`): needs
-    /// `submodels.thermal` and a recorded temperature ([`FittingProblem::new`] refuses it
-    /// without them).
-    #[serde(default)]
-    pub recorded_temperature: bool,
-}
-
-impl ModelSpec {
-    pub fn new(kind: ModelKind, submodels: Submodels) -> Self {
-        Self { kind, submodels, mesh: MeshSizes::default(), recorded_temperature: false }
-    }
-
-    fn builder(&self) -> ModelBuilder {
-        ModelBuilder::new(self.kind, self.submodels, self.mesh)
-    }
-}
-
-/// The model in words, e.g. "DFN + thermal (temperature as recorded)".
-impl std::fmt::Display for ModelSpec {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        let s = self.submodels;
-        write!(f, "{}", self.kind)?;
-        for (on, name) in [(s.contact_resistance, "contact resistance"), (s.thermal, "thermal"), (s.rc, "RC"), (s.hysteresis, "hysteresis"), (s.ocv_correction, "OCV correction")] {
-            if on {
-                write!(f, " + {name}")?;
-            }
-        }
-        if self.recorded_temperature {
-            f.write_str(" (temperature as recorded)")?;
-        }
-        Ok(())
-    }
-}
-
-/// The path of the initial state of charge (-, 0 at the lower cut-off, 1 at the upper), a
-/// fit parameter that is not a field of the set: it places the initial particle
-/// concentrations on the set's lithium line ([`crate::params::set_initial_soc`]) after the
-/// other fitted values are set.
-pub const INITIAL_SOC: &str = "initial_soc";
-
-/// Sets `values` of `parameters` in `p`, the initial state of charge last (a load before the
-/// recording, [`super::history`], and a delay of its voltage channel, [`super::delay`], are
-/// not parameters of the set); the state at which active material was lost,
-/// [`super::lost_lithium`], sets the cyclable lithium from `p` as it was before.
-fn apply(p: &mut ParameterSet, parameters: &[FitParameter], values: &[f64]) -> Result<(), Error> {
-    let (mut soc, mut loss_soc) = (None, None);
-    let unaged = parameters.iter().any(|fp| is_loss_soc(&fp.path)).then(|| p.clone());
-    for (fp, &v) in parameters.iter().zip(values) {
-        if fp.path == INITIAL_SOC {
-            soc = Some(v)
-        } else if is_loss_soc(&fp.path) {
-            loss_soc = Some(v)
-        } else if !is_history(&fp.path) && !is_delay(&fp.path) {
-            p.set(&fp.path, v)?
-        }
-    }
-    if let (Some(unaged), Some(v)) = (unaged, loss_soc) {
-        take_lost_lithium(&unaged, p, v)?;
-    }
-    if let Some(v) = soc {
-        crate::params::set_initial_soc(p, v)?;
-    }
-    Ok(())
-}
-
-/// One parameter to identify, by dotted path (e.g. `negative.diffusivity`).
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct FitParameter {
-    pub path: String,
-    /// Start of the search (parameter units).
-    pub initial: f64,
-    pub lower: f64,
-    pub upper: f64,
-    /// Search (and sample) the natural logarithm; needs a positive lower bound.
-    #[serde(default)]
-    pub log: bool,
-    /// Prior for MAP costs and sampling (uniform within the bounds by default).
-    #[serde(default)]
-    pub prior: Prior,
-}
-
-impl FitParameter {
-    /// A parameter searched on a log scale between `lower` and `upper`.
-    pub fn log(path: &str, initial: f64, lower: f64, upper: f64) -> Self {
-        Self { path: path.into(), initial, lower, upper, log: true, prior: Prior::Uniform }
-    }
-
-    /// A parameter searched linearly between `lower` and `upper`.
-    pub fn linear(path: &str, initial: f64, lower: f64, upper: f64) -> Self {
-        Self { path: path.into(), initial, lower, upper, log: false, prior: Prior::Uniform }
-    }
-
-    pub(crate) fn validate(&self, base: &ParameterSet) -> Result<(), Error> {
-        if self.path != INITIAL_SOC && !is_history(&self.path) && !is_delay(&self.path) && !is_loss_soc(&self.path) {
-            base.get(&self.path)?;
-        }
-        let field = |name: &str| format!("parameters.{}.{name}", self.path);
-        for (name, v) in [("initial", self.initial), ("lower", self.lower), ("upper", self.upper)] {
-            if !v.is_finite() {
-                return Err(Error::invalid(field(name), v, "must be finite"));
-            }
-        }
-        if !(self.lower < self.upper) {
-            return Err(Error::invalid(field("upper"), self.upper, format!("must exceed lower = {}", self.lower)));
-        }
-        if !(self.initial >= self.lower && self.initial <= self.upper) {
-            return Err(Error::invalid(
-                field("initial"),
-                self.initial,
-                format!("must lie within [{}, {}]", self.lower, self.upper),
-            ));
-        }
-        if self.log && self.lower <= 0.0 {
-            return Err(Error::invalid(field("lower"), self.lower, "must be positive for a log-scaled parameter"));
-        }
-        self.prior.validate(&field("prior"))
-    }
-}
 
 /// Voltage window (V) of a replayed recording: no cell cut-off ends a replay, but a model
 /// whose voltage leaves this window has broken down.
@@ -652,6 +519,7 @@ impl FittingProblem {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::models::{ModelKind, Submodels};
 
     fn recording(temperature: Option<Vec<f64>>) -> Recording {
         let time: Vec<f64> = (0..20).map(f64::from).collect();
