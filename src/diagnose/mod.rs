@@ -37,6 +37,7 @@ pub mod refit;
 pub mod report;
 pub mod select;
 pub mod synthetic;
+pub mod tolerance;
 
 use rayon::prelude::*;
 use serde::Serialize;
@@ -221,6 +222,8 @@ pub struct Diagnosis {
     pub margins: Margins,
     /// Noise level of the recording (V), from first differences of the user's residual.
     pub noise: f64,
+    /// The solver's rtol = atol in every fit of this round ([`tolerance::choose`]).
+    pub tolerance: f64,
     /// The user's model, fitted as asked (with the nuisance initial state).
     pub baseline: FitOutcome,
     pub residual: ResidualAnalysis,
@@ -278,6 +281,16 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
         base.thermal.initial_temperature = t0;
     }
     let base = &base;
+    let chosen;
+    let options = match options.fit.tolerance {
+        Some(_) => options,
+        None => {
+            let c = tolerance::choose(&data, base, options.spec, &options.fit);
+            notes.push(format!("The fits solve at rtol = atol = {:.0e}: {}.", c.tolerance, c.reason));
+            chosen = DiagnoseOptions { fit: FitSettings { tolerance: Some(c.tolerance), ..options.fit.clone() }, ..options.clone() };
+            &chosen
+        }
+    };
     let (baseline, split, warm, restarts, cut_here) = match &options.fitted_baseline {
         Some(b) if b.voltage.len() == data.time.len() && b.names.len() == options.fitted.len() => {
             let features = Features::of(&data);
@@ -435,6 +448,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
         holdout_phase: options.phase(),
         margins: options.margins,
         noise,
+        tolerance: options.fit.tolerance.unwrap_or(tolerance::TIGHT),
         baseline,
         residual: analysis,
         candidates: outcomes,
@@ -513,6 +527,7 @@ pub fn diagnose_rounds_with(data: &Recording, base: &ParameterSet, options: &Dia
         options.holdout_phase = Some(rounds[0].holdout_phase);
         options.broke_down = if rescued { None } else { rounds[0].broke_down.clone() };
         options.pairs = false;
+        options.fit.tolerance = Some(rounds[0].tolerance);
     }
     if rounds.iter().filter(|d| d.found).count() >= 2 {
         let last = rounds.last().expect("two rounds");

@@ -62,11 +62,15 @@ pub struct FitSettings {
     /// Start every model from the rest state whose OCV is the first recorded voltage
     /// (keeping each parameter set's cyclable lithium); needs a recording that starts at rest.
     pub start_at_rest: bool,
+    /// The solver's rtol = atol in every fit; `None`: [`super::diagnose`] chooses it from the
+    /// recording's noise ([`super::tolerance::choose`]), and a fit without it uses the solver's
+    /// default.
+    pub tolerance: Option<f64>,
 }
 
 impl Default for FitSettings {
     fn default() -> Self {
-        Self { lm: LmSettings::default(), start_at_rest: false }
+        Self { lm: LmSettings::default(), start_at_rest: false, tolerance: None }
     }
 }
 
@@ -304,6 +308,9 @@ pub fn fit_and_score(
     let start = std::time::Instant::now();
     let k = parameters.len();
     let mut problem = FittingProblem::new(spec, base, parameters, data.clone())?.with_weights(split.train.clone())?;
+    if let Some(tol) = settings.tolerance {
+        (problem.solver.rtol, problem.solver.atol) = (tol, tol);
+    }
     if settings.start_at_rest {
         problem = problem.starting_at_rest()?;
     }

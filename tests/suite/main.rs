@@ -21,6 +21,7 @@ mod cycler_never_panics;
 mod design;
 mod design_study;
 mod diagnose;
+mod diagnosis_tolerance;
 mod ecm;
 mod eis;
 mod energy_quadrature;
