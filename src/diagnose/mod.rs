@@ -281,16 +281,12 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
         base.thermal.initial_temperature = t0;
     }
     let base = &base;
-    let chosen;
-    let options = match options.fit.tolerance {
-        Some(_) => options,
-        None => {
-            let c = tolerance::choose(&data, base, options.spec, &options.fit);
-            notes.push(format!("The fits solve at rtol = atol = {:.0e}: {}.", c.tolerance, c.reason));
-            chosen = DiagnoseOptions { fit: FitSettings { tolerance: Some(c.tolerance), ..options.fit.clone() }, ..options.clone() };
-            &chosen
-        }
-    };
+    let tolerance = options.fit.tolerance.unwrap_or_else(|| {
+        let c = tolerance::choose(&data, base, options.spec, &options.fit);
+        notes.push(format!("The fits solve at rtol = atol = {:.0e}: {}.", c.tolerance, c.reason));
+        c.tolerance
+    });
+    let options = &DiagnoseOptions { fit: FitSettings { tolerance: Some(tolerance), ..options.fit.clone() }, ..options.clone() };
     let (baseline, split, warm, restarts, cut_here) = match &options.fitted_baseline {
         Some(b) if b.voltage.len() == data.time.len() && b.names.len() == options.fitted.len() => {
             let features = Features::of(&data);
@@ -448,7 +444,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
         holdout_phase: options.phase(),
         margins: options.margins,
         noise,
-        tolerance: options.fit.tolerance.unwrap_or(tolerance::TIGHT),
+        tolerance,
         baseline,
         residual: analysis,
         candidates: outcomes,

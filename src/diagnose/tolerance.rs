@@ -32,16 +32,19 @@ pub struct Chosen {
 /// (the dense first differences of its residual from the set's replay) of the replay at
 /// [`TIGHT`], else [`TIGHT`] (also when either replay fails).
 pub fn choose(data: &Recording, base: &ParameterSet, spec: ModelSpec, settings: &FitSettings) -> Chosen {
-    let replay = |tol: f64| -> Option<Vec<f64>> {
+    let tight = |why: String| Chosen { tolerance: TIGHT, reason: why };
+    let replays = || -> Option<(Vec<f64>, Vec<f64>)> {
         let mut problem = FittingProblem::new(spec, base.clone(), Vec::new(), data.clone()).ok()?;
         if settings.start_at_rest {
             problem = problem.starting_at_rest().ok()?;
         }
-        (problem.solver.rtol, problem.solver.atol) = (tol, tol);
-        problem.simulate(&[]).ok()
+        let mut replay = |tol: f64| {
+            (problem.solver.rtol, problem.solver.atol) = (tol, tol);
+            problem.simulate(&[]).ok()
+        };
+        Some((replay(TIGHT)?, replay(LOOSE)?))
     };
-    let tight = |why: String| Chosen { tolerance: TIGHT, reason: why };
-    let (Some(fine), Some(coarse)) = (replay(TIGHT), replay(LOOSE)) else {
+    let Some((fine, coarse)) = replays() else {
         return tight("the set's replay did not run at both tolerances".into());
     };
     // The noise of the set's residual, as the diagnosis reads it from the user's: the
