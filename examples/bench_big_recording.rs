@@ -54,7 +54,7 @@ fn write_case(dir: &Path, rows: usize) -> PathBuf {
     let mut builder = ModelBuilder::new(ModelKind::Spm, Submodels { contact_resistance: true, ..Default::default() }, MeshSizes::default());
     let built = builder.build(&p).expect("build");
     let mut opts = SimOptions { t_eval: Some(t_eval), cutoffs: (0.0, 100.0), ..SimOptions::for_cell(&p) };
-    (opts.solver.rtol, opts.solver.atol) = (1e-8, 1e-8);
+    opts.solver.set_tolerance(1e-8);
     let sol = simulate(built.model.as_ref(), &mut built.workspace, &protocol, &opts, None).expect("truth");
     let mut rng = rand::rngs::StdRng::seed_from_u64(rows as u64);
     let (dv, di) = (Normal::new(0.0, 1e-3).unwrap(), Normal::new(0.0, 2e-3).unwrap());

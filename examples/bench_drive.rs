@@ -45,7 +45,7 @@ fn main() {
         let built = b.build(&p).expect("build");
         let opts = |tol: f64| {
             let mut o = SimOptions { t_eval: Some(t_eval.clone()), cutoffs: (0.0, 100.0), charge_at_outputs: false, ..SimOptions::for_cell(&p) };
-            (o.solver.rtol, o.solver.atol) = (tol, tol);
+            o.solver.set_tolerance(tol);
             o
         };
         let reference = simulate(built.model.as_ref(), &mut built.workspace, &protocol, &opts(1e-10), None).expect("reference");

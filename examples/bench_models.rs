@@ -23,8 +23,7 @@ fn main() {
     let protocol = Protocol::discharge(1.0);
     let mut opts = SimOptions::for_cell(&p);
     if let Some(tol) = std::env::var("BENCH_TOL").ok().and_then(|t| t.parse().ok()) {
-        opts.solver.rtol = tol;
-        opts.solver.atol = tol;
+        opts.solver.set_tolerance(tol);
     }
     println!("tolerances: rtol = {}, atol = {} (relative to each state's scale)\n", opts.solver.rtol, opts.solver.atol);
     println!("| model | states | 1C discharge (ms, median of {repeats}) | steps | Jacobians | rhs evals | build (ms) | re-use (ms) |");

@@ -42,7 +42,7 @@ fn main() {
             for (k, (name, protocol)) in protocols.iter().enumerate() {
                 let mut opts = SimOptions::for_cell(&p);
                 if let Some(t) = tol {
-                    (opts.solver.rtol, opts.solver.atol) = (t, t);
+                    opts.solver.set_tolerance(t);
                 }
                 let mut times = Vec::new();
                 let mut last = None;

@@ -23,8 +23,7 @@ fn main() {
             let built = b.build(&p).unwrap();
             let mut opts = SimOptions { t_eval: Some(rec.distinct_times()), ..SimOptions::for_cell(&p) };
             if let Some(tol) = std::env::var("BENCH_TOL").ok().and_then(|t| t.parse().ok()) {
-                opts.solver.rtol = tol;
-                opts.solver.atol = tol;
+                opts.solver.set_tolerance(tol);
             }
             let t = std::time::Instant::now();
             let sol = simulate(built.model.as_ref(), &mut built.workspace, &proto, &opts, None);

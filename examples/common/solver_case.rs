@@ -30,7 +30,7 @@ impl SolverCase {
         let p = chen2020();
         let builder = ModelBuilder::new(kind, Submodels::default(), MeshSizes::default());
         let mut options = SimOptions::for_cell(&p);
-        (options.solver.rtol, options.solver.atol) = (rtol, rtol);
+        options.solver.set_tolerance(rtol);
         Self { protocol, options, params: p, builder, repeats }
     }
 }

@@ -333,7 +333,7 @@ mod tests {
         let m = built.model.as_ref();
         let rest = crate::protocol::experiment::parse(&["Rest for 24 hours"], p.cell.nominal_capacity).unwrap();
         let mut opts = SimOptions::for_cell(&q);
-        (opts.solver.rtol, opts.solver.atol) = (1e-10, 1e-10);
+        opts.solver.set_tolerance(1e-10);
         let sol = simulate(m, &mut built.workspace, &rest, &opts, None).unwrap();
         let e = &p.negative;
         let taken = (m.sei_lithium(&sol.final_state) - m.sei_lithium(&m.initial_state())) / (e.max_concentration * e.active_fraction * e.thickness * p.cell.area());

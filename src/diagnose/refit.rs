@@ -309,7 +309,7 @@ pub fn fit_and_score(
     let k = parameters.len();
     let mut problem = FittingProblem::new(spec, base, parameters, data.clone())?.with_weights(split.train.clone())?;
     if let Some(tol) = settings.tolerance {
-        (problem.solver.rtol, problem.solver.atol) = (tol, tol);
+        problem.solver.set_tolerance(tol);
     }
     if settings.start_at_rest {
         problem = problem.starting_at_rest()?;

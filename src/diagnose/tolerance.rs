@@ -39,7 +39,7 @@ pub fn choose(data: &Recording, base: &ParameterSet, spec: ModelSpec, settings: 
             problem = problem.starting_at_rest().ok()?;
         }
         let mut replay = |tol: f64| {
-            (problem.solver.rtol, problem.solver.atol) = (tol, tol);
+            problem.solver.set_tolerance(tol);
             problem.simulate(&[]).ok()
         };
         Some((replay(TIGHT)?, replay(LOOSE)?))

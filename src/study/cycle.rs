@@ -145,7 +145,7 @@ impl CycleStudy {
         let inputs: Vec<&Path> = self.source.as_deref().into_iter().chain(self.cell.file()).chain(self.fit.as_ref().map(|f| f.data.as_path())).collect();
         let staged = crate::output::OutputDir::create(&self.output.dir, &inputs)?;
         let mut opts = SimOptions::for_cell(&p);
-        (opts.solver.rtol, opts.solver.atol) = (self.cycling.tolerance, self.cycling.tolerance);
+        opts.solver.set_tolerance(self.cycling.tolerance);
         let (p, fade) = match &self.fit {
             Some(spec) => {
                 let (fitted, outcome) = spec.fit(&p, self.model.kind, self.model.submodels, &protocol, &opts)?;

@@ -54,7 +54,7 @@ fn compare(kind: ModelKind) -> (f64, f64, f64) {
     let mut times = rec.time.clone();
     times.dedup();
     let mut opts = SimOptions { t_eval: Some(times), ..SimOptions::for_cell(&p) };
-    (opts.solver.rtol, opts.solver.atol) = (1e-8, 1e-8);
+    opts.solver.set_tolerance(1e-8);
     let sol = simulate(built.model.as_ref(), &mut built.workspace, &protocol, &opts, None).unwrap();
     // Step ends: ours are the recorded step boundaries (cut-off events and the hold's
     // limit, then the durations of the rests).

@@ -14,7 +14,7 @@ fn energy(kind: ModelKind, c_rate: f64, rtol: f64) -> f64 {
     let mut builder = ModelBuilder::new(kind, Submodels::default(), MeshSizes::default());
     let built = builder.build(&p).unwrap();
     let mut opts = SimOptions::for_cell(&p);
-    (opts.solver.rtol, opts.solver.atol) = (rtol, rtol);
+    opts.solver.set_tolerance(rtol);
     let sol = simulate(built.model.as_ref(), &mut built.workspace, &Protocol::discharge(c_rate), &opts, None).unwrap();
     *sol.energy.last().unwrap()
 }

@@ -35,7 +35,7 @@ fn margin_gap(kind: ModelKind) -> (f64, f64) {
     let mut b = ModelBuilder::new(kind, Submodels::default(), MeshSizes::default());
     let built = b.build(&p).unwrap();
     let mut opts = SimOptions { t_eval: Some(rows.iter().map(|r| r.0).collect()), keep_states: true, ..SimOptions::for_cell(&p) };
-    (opts.solver.rtol, opts.solver.atol) = (1e-8, 1e-8);
+    opts.solver.set_tolerance(1e-8);
     // PyBaMM's timed experiment step would run past the 4.2 V cut-off: so does this comparison.
     opts.cutoffs.1 = 6.0;
     let mut margins = Vec::new();

@@ -36,8 +36,7 @@ fn sensitivities_match_finite_differences() {
     // Sensitivities at the default tolerances; differences of simulations need tight ones.
     let problem = seed_problem(seed_recording(0.0, 1));
     let mut fine = seed_problem(seed_recording(0.0, 1));
-    fine.solver.rtol = 1e-10;
-    fine.solver.atol = 1e-10;
+    fine.solver.set_tolerance(1e-10);
     let x = [3.3e-14, 0.01];
     let t = std::time::Instant::now();
     let sim = problem.simulate_with_sensitivities(&x).unwrap();
@@ -87,8 +86,7 @@ fn dfn_sensitivities_hold_across_current_steps() {
     ];
     let spec = ModelSpec::new(ModelKind::Dfn, Submodels::default());
     let mut fine = FittingProblem::new(spec, chen2020(), params.clone(), rec.clone()).unwrap();
-    fine.solver.rtol = 1e-10;
-    fine.solver.atol = 1e-10;
+    fine.solver.set_tolerance(1e-10);
     let x = [3.3e-14, 3.42e-6, 1.0];
     // Steps large enough that the voltage differences stand above the tight solves' error
     // at rest; second order, one-sided inwards at the bound of the state of charge.
@@ -113,8 +111,7 @@ fn dfn_sensitivities_hold_across_current_steps() {
     for (rtol, bound) in [(None, 1.5e-3), (Some(1e-8), 3e-4)] {
         let mut problem = FittingProblem::new(spec, chen2020(), params.clone(), rec.clone()).unwrap();
         if let Some(r) = rtol {
-            problem.solver.rtol = r;
-            problem.solver.atol = r;
+            problem.solver.set_tolerance(r);
         }
         let sim = problem.simulate_with_sensitivities(&x).unwrap();
         let rows: Vec<&[f64]> = sim.sensitivity_rows().collect();
@@ -177,8 +174,7 @@ fn cost_gradient_matches_finite_differences() {
     problem.parameters[1].prior = Prior::Gaussian { mean: 0.012, sd: 0.003 };
     let mut fine = seed_problem(seed_recording(0.002, 5));
     fine.parameters = problem.parameters.clone();
-    fine.solver.rtol = 1e-10;
-    fine.solver.atol = 1e-10;
+    fine.solver.set_tolerance(1e-10);
     let cost = CostKind::Map { sigma: Some(0.002) };
     let x = [4.0e-14, 0.008];
     let (_, g) = FitObjective { problem: &problem, cost }.value_and_gradient(&x).unwrap();

@@ -29,7 +29,7 @@ fn compare(kind: ModelKind, case: &str, protocol: &Protocol, tol: Option<f64>) -
     let built = b.build(&p).expect("build");
     let mut opts = SimOptions { t_eval: Some(rec.distinct_times()), ..SimOptions::for_cell(&p) };
     if let Some(tol) = tol {
-        (opts.solver.rtol, opts.solver.atol) = (tol, tol);
+        opts.solver.set_tolerance(tol);
     }
     let sol = simulate(built.model.as_ref(), &mut built.workspace, protocol, &opts, None).expect("simulate");
     let err = rec.voltage_error(&sol.time, &sol.voltage);
@@ -96,7 +96,7 @@ fn fine_mesh_agrees_at_tight_tolerance() {
         let mut b = ModelBuilder::new(kind, Submodels::default(), mesh);
         let built = b.build(&p).expect("build");
         let mut opts = SimOptions { t_eval: Some(rec.distinct_times()), ..SimOptions::for_cell(&p) };
-        (opts.solver.rtol, opts.solver.atol) = (1e-8, 1e-8);
+        opts.solver.set_tolerance(1e-8);
         let sol = simulate(built.model.as_ref(), &mut built.workspace, &Protocol::discharge(1.0), &opts, None).expect("simulate");
         let err = rec.voltage_error(&sol.time, &sol.voltage);
         println!("{name} at rtol 1e-8: rms {:.2e} mV, max {:.2e} mV", err.rms * 1e3, err.max * 1e3);

@@ -48,7 +48,7 @@ fn rows(file: &str) -> Vec<Vec<f64>> {
 
 fn options() -> SimOptions {
     let mut opts = SimOptions::for_cell(&chen2020());
-    (opts.solver.rtol, opts.solver.atol) = (1e-8, 1e-8);
+    opts.solver.set_tolerance(1e-8);
     opts
 }
 

@@ -61,7 +61,7 @@ fn dfn_at_loose_tolerance_does_not_fail_newton_step_after_step() {
     let mut b = ModelBuilder::new(ModelKind::Dfn, Submodels::default(), MeshSizes::default());
     let built = b.build(&p).unwrap();
     let mut opts = SimOptions::for_cell(&p);
-    (opts.solver.rtol, opts.solver.atol) = (1e-3, 1e-3);
+    opts.solver.set_tolerance(1e-3);
     let sol = simulate(built.model.as_ref(), &mut built.workspace, &Protocol::discharge(1.0), &opts, None).unwrap();
     let s = sol.stats;
     println!("DFN at rtol 1e-3: {s:?}");

@@ -267,8 +267,7 @@ mod tests {
         let built = builder.build(p).unwrap();
         let mut opts = SimOptions::for_cell(p);
         opts.t_eval = Some(t_eval);
-        opts.solver.rtol = 1e-9;
-        opts.solver.atol = 1e-9;
+        opts.solver.set_tolerance(1e-9);
         simulate(built.model.as_ref(), &mut built.workspace, protocol, &opts, None).unwrap().voltage
     }
 

@@ -74,6 +74,13 @@ impl Default for SolverOptions {
     }
 }
 
+impl SolverOptions {
+    /// Sets both tolerances to `tol` (rtol = atol, the way studies and the diagnosis give one).
+    pub fn set_tolerance(&mut self, tol: f64) {
+        (self.rtol, self.atol) = (tol, tol);
+    }
+}
+
 /// Counters of the work done, for benchmarks and performance-regression tests.
 #[derive(Clone, Copy, Debug, Default, serde::Serialize)]
 pub struct SolverStats {

@@ -50,7 +50,7 @@ pub fn csv_rows(folder: &str, file: &str) -> Vec<Vec<f64>> {
 /// Options for `p` at rtol = atol = 1e-8, the tolerance of the ageing reference curves.
 pub fn tight_options(p: &ParameterSet) -> SimOptions {
     let mut opts = SimOptions::for_cell(p);
-    (opts.solver.rtol, opts.solver.atol) = (1e-8, 1e-8);
+    opts.solver.set_tolerance(1e-8);
     opts
 }
 
