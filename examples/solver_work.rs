@@ -5,8 +5,8 @@
 //!
 //! `cargo run --release --example solver_work -- MODEL CASE RTOL REPEATS [DT]`
 //! (MODEL spm|spme|dfn, CASE 0.5C|1C|2C|pulse; rtol = atol = RTOL). With DT (s), outputs
-//! every DT seconds up to 4000 s (the 1C discharge's length) without charge at the outputs,
-//! as a fit to a recording asks for them.
+//! every DT seconds up to 4000 s (the 1C discharge's length) without charge and energy, as a
+//! fit to a recording asks for them. `INTEGRALS=1` or `0` sets whether they are computed.
 
 #[path = "common/solver_case.rs"]
 mod solver_case;
@@ -26,6 +26,12 @@ fn main() {
         let end = protocol.steps.iter().map(|s| s.duration()).sum::<f64>().min(4000.0);
         opts.t_eval = Some((0..=(end / dt) as usize).map(|k| k as f64 * dt).collect());
         opts.charge_at_outputs = false;
+        // Fits read only the voltage.
+        opts.charge_and_energy = false;
+    }
+    // INTEGRALS=1 / 0 times a solve with / without the charge and energy.
+    if let Some(v) = std::env::var_os("INTEGRALS") {
+        opts.charge_and_energy = v == "1";
     }
     let rtol = opts.solver.rtol;
     let built = builder.build(&p).expect("build");

@@ -2,8 +2,10 @@
 //! solve that returns the solver's own steps (median of REPEATS after one warm-up), and the
 //! voltage error of the same solve's dense output at a reference curve's times.
 //!
-//! `cargo run --release --example work_precision -- MODEL CASE RTOL REPEATS REF_CSV`
-//! (MODEL spm|spme|dfn, CASE 0.5C|1C|2C|pulse; rtol = atol = RTOL). Prints one JSON line.
+//! `cargo run --release --example work_precision -- MODEL CASE RTOL REPEATS REF_CSV [integrals]`
+//! (MODEL spm|spme|dfn, CASE 0.5C|1C|2C|pulse; rtol = atol = RTOL). The timed solve returns
+//! the voltage, current and temperature at every step, as PyBaMM is asked for the voltage;
+//! `integrals` adds the charge and energy (their quadrature). Prints one JSON line.
 
 use std::time::Instant;
 
@@ -16,10 +18,13 @@ use solver_case::SolverCase;
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
-    let [model, case, rtol, repeats, reference] = args.as_slice() else {
-        panic!("usage: work_precision MODEL CASE RTOL REPEATS REF_CSV");
+    let (model, case, rtol, repeats, reference, integrals) = match args.as_slice() {
+        [m, c, r, n, f] => (m, c, r, n, f, false),
+        [m, c, r, n, f, i] if i == "integrals" => (m, c, r, n, f, true),
+        _ => panic!("usage: work_precision MODEL CASE RTOL REPEATS REF_CSV [integrals]"),
     };
-    let SolverCase { protocol, options: opts, params: p, mut builder, repeats } = SolverCase::new(model, case, rtol, repeats);
+    let SolverCase { protocol, options, params: p, mut builder, repeats } = SolverCase::new(model, case, rtol, repeats);
+    let opts = SimOptions { charge_and_energy: integrals, ..options };
     let rtol = opts.solver.rtol;
     let rec = Recording::from_csv(reference.as_ref()).expect("reference");
     let built = builder.build(&p).expect("build");

@@ -346,8 +346,9 @@ impl FittingProblem {
             // Recordings are replayed whole: cut-offs do not end them.
             cutoffs: REPLAY_WINDOW,
             capacity: p.cell.nominal_capacity,
-            // Only the voltage at the recorded times is compared.
+            // Only the voltage (and temperature) at the recorded times is compared.
             charge_at_outputs: false,
+            charge_and_energy: false,
             temperature_input: self.temperature_input.clone(),
         }
     }

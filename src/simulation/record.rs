@@ -86,15 +86,32 @@ impl Recorder<'_> {
     /// Records the state, current and voltage at `t` inside the step of `dense`, with the
     /// charge and energy accumulated to the step's start.
     pub fn sample(&mut self, dense: &DenseOutput, drive: &Driven, t: f64, buf: &mut [f64]) {
+        self.state_at(dense, t, buf);
+        let i = drive.current(t, buf);
+        let v = self.model.voltage(&buf[..self.model.len()], i);
+        let (q, e) = (self.q, self.e);
+        self.record(t, buf, i, v, q, e);
+    }
+
+    /// The current and voltage at a step's end `b` without the charge and energy over the
+    /// step (NaN); leaves `y(b)` in `buf` as [`Recorder::integrate_to`] does. `at_b`, when
+    /// known, is the current and voltage at `b`.
+    pub fn step_end(&self, dense: &DenseOutput, drive: &Driven, b: f64, at_b: Option<(f64, f64)>, buf: &mut [f64]) -> IntervalEnd {
+        self.state_at(dense, b, buf);
+        let (current, voltage) = at_b.unwrap_or_else(|| {
+            let i = drive.current(b, buf);
+            (i, self.model.voltage(&buf[..self.model.len()], i))
+        });
+        IntervalEnd { dq: f64::NAN, de: f64::NAN, current, voltage }
+    }
+
+    /// `y(t)` in `buf`: every state when all are kept, else the output states.
+    fn state_at(&self, dense: &DenseOutput, t: f64, buf: &mut [f64]) {
         if self.keep_states {
             dense.eval(t, buf);
         } else {
             dense.eval_ranges(t, &self.outputs, buf);
         }
-        let i = drive.current(t, buf);
-        let v = self.model.voltage(&buf[..self.model.len()], i);
-        let (q, e) = (self.q, self.e);
-        self.record(t, buf, i, v, q, e);
     }
 
     /// Charge and energy over `[a, b]`, `a` the last step end (current and power `self.i`,
@@ -138,11 +155,7 @@ impl Recorder<'_> {
         };
         // Unless only `b` was sampled, restore y(b) in `buf`.
         if from_history.is_none() || at_b.is_some() || self.keep_states {
-            if self.keep_states {
-                dense.eval(b, buf);
-            } else {
-                dense.eval_ranges(b, &self.outputs, buf);
-            }
+            self.state_at(dense, b, buf);
         }
         IntervalEnd { dq: dq / 3600.0, de: de / 3600.0, current: end.0, voltage }
     }

@@ -40,6 +40,7 @@ fn run(model: &Ecm, protocol: &Protocol, t_eval: Vec<f64>, keep_states: bool) ->
         cutoffs: (2.5, 4.3),
         capacity: model.params().capacity,
         charge_at_outputs: true,
+        charge_and_energy: true,
         temperature_input: None,
     };
     simulate(model, &mut ws, protocol, &opts, None).unwrap()

@@ -6,7 +6,7 @@
 use cellstudio::geometry::MeshSizes;
 use cellstudio::models::{ModelBuilder, ModelKind, Submodels};
 use cellstudio::params::chen2020;
-use cellstudio::protocol::Protocol;
+use cellstudio::protocol::{Protocol, experiment};
 use cellstudio::simulation::{SimOptions, simulate};
 
 fn energy(kind: ModelKind, c_rate: f64, rtol: f64) -> f64 {
@@ -28,6 +28,34 @@ fn the_energy_is_integrated_to_the_solver_tolerance() {
             let err = (loose - tight).abs() / tight;
             println!("{kind:?} {c_rate}C: {loose:.9} W h vs {tight:.9} W h, {err:.2e}");
             assert!(err < 5e-7, "{kind:?} at {c_rate}C: energy {loose} W h vs {tight} W h at rtol 1e-10 ({err:.2e})");
+        }
+    }
+}
+
+/// Without the charge and energy (as fits ask), a solve takes the same steps to the same
+/// voltages, and records the integrals it skipped as NaN, never as numbers.
+#[test]
+fn a_solve_without_the_integrals_has_the_same_voltage_and_no_charge() {
+    let p = chen2020();
+    for kind in [ModelKind::Spm, ModelKind::Spme, ModelKind::Dfn] {
+        let mut builder = ModelBuilder::new(kind, Submodels::default(), MeshSizes::default());
+        let built = builder.build(&p).unwrap();
+        let steps = ["Discharge at 1C for 10 minutes", "Rest for 5 minutes", "Charge at 0.5C for 10 minutes", "Hold at 4.1 V for 5 minutes"];
+        let protocol = experiment::parse(&steps, p.cell.nominal_capacity).unwrap();
+        let with = SimOptions::for_cell(&p);
+        let without = SimOptions { charge_and_energy: false, ..with.clone() };
+        for t_eval in [None, Some((0..2400).map(|k| k as f64 * 1.5).collect::<Vec<f64>>())] {
+            let (with, without) = (SimOptions { t_eval: t_eval.clone(), ..with.clone() }, SimOptions { t_eval, ..without.clone() });
+            let a = simulate(built.model.as_ref(), &mut built.workspace, &protocol, &with, None).unwrap();
+            let b = simulate(built.model.as_ref(), &mut built.workspace, &protocol, &without, None).unwrap();
+            assert_eq!(a.time, b.time, "{kind:?}");
+            // The integrating path reads the voltage as its power over its current: a rounding.
+            let dv = a.voltage.iter().zip(&b.voltage).map(|(x, y)| (x - y).abs()).fold(0.0, f64::max);
+            assert!(dv < 1e-14, "{kind:?}: voltages differ by {dv:e} V");
+            assert_eq!(a.current, b.current, "{kind:?}");
+            assert_eq!(a.stats.steps, b.stats.steps, "{kind:?}");
+            assert!(a.capacity.iter().chain(&a.energy).all(|v| v.is_finite()), "{kind:?}");
+            assert!(b.capacity.iter().chain(&b.energy).all(|v| v.is_nan()), "{kind:?}: {:?}", &b.capacity[..3]);
         }
     }
 }
