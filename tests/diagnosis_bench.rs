@@ -399,6 +399,7 @@ fn z3_lithium_inventory_and_diffusivity_spme() {
 }
 
 #[test]
+#[ignore = "slow for CI (43 s alone): contact resistance is named in CI by b1, p2, u5, v5, y2, z1 and the electrolyte by b2; run with --include-ignored"]
 fn z4_electrolyte_and_contact_resistance_spm() {
     run_case("diagnosis-extra/z4_electrolyte_and_contact_spm");
 }
@@ -425,6 +426,7 @@ fn q4_faster_positive_diffusion_dfn() {
 }
 
 #[test]
+#[ignore = "slow for CI (36 s alone): active-material loss (b6, q2) and self-heating (b4, v3, x5) are named in CI; run with --include-ignored"]
 fn z2_active_material_loss_and_self_heating_dfn() {
     run_case("diagnosis-extra/z2_lam_and_thermal");
 }
@@ -852,6 +854,7 @@ fn e7_irreversible_plating_over_three_cycles_in_a_narrow_window_spme() {
 }
 
 #[test]
+#[ignore = "slow for CI (31 s alone): a model breakdown is handled in CI by ab4; run with --include-ignored"]
 fn h8_positive_diffusivity_through_a_model_breakdown_spme() {
     // Blind batch h: positive particle diffusivity x0.65 under a highway drive at 10 degC;
     // the user's SPMe (the set's faster diffusivity) breaks down 1739 s in. Its first run
@@ -939,6 +942,7 @@ fn g6_an_aged_electrolyte_under_a_noisy_current_channel_dfn() {
 }
 
 #[test]
+#[ignore = "slow for CI (73 s alone): the same pair, contact resistance with lithium loss, is b8 in CI; run with --include-ignored"]
 fn g3_contact_and_lithium_loss_charging_from_empty_spme() {
     // Blind batch g: 6 mOhm contact resistance and 7 % of the negative's lithium lost, a
     // 0.5C CC-CV charge from empty at 5 degC. Its first run named the negative LAM alone and
@@ -985,6 +989,7 @@ fn a1_ec_reaction_limited_sei_is_fitted_at_its_rates_spme() {
 }
 
 #[test]
+#[ignore = "slow for CI (29 s alone): an unrelaxed start is named in CI by bb6 and d3; run with --include-ignored"]
 fn c6_an_unrelaxed_start_left_below_the_floor_is_still_pointed_at_spme() {
     // Blind batch c: a 10 mA current offset and 8 % positive LAM named in round 1, in a
     // recording exported from the end of an unrecorded CC-CV charge. What remains (2.00 mV,
@@ -1491,4 +1496,56 @@ fn am8_less_salt_and_lithium_loss_in_a_floor_scrubber_spme() {
     let rounds = run_case("diagnosis-extra/am8_electrolyte_salt_x0p7_and_inventory_6pct_floor_scrubber_20C_15s_1p2mV_spme");
     let c = first_fitted(&rounds, "electrolyte.initial_concentration") / chen2020().electrolyte.initial_concentration;
     assert!((c - 0.7).abs() < 0.015, "salt x{c:.4} (truth 0.7)");
+}
+
+// Blind batch an (thirty-fourth session, `scripts/make_unseen_cases.py` key "an", made by a
+// helper session that did not read the diagnosis code): 7 of 8 named on first sight by the
+// shared bench's judge (docs/diagnosis-cases.md).
+
+#[test]
+#[ignore = "blind batch an: CI skips it; run with --include-ignored"]
+fn an1_negative_control_of_an_airport_baggage_tug_dfn() {
+    run_case("diagnosis-extra/an1_control_airport_baggage_tug_16C_5s_dfn");
+}
+
+#[test]
+#[ignore = "blind batch an: CI skips it; run with --include-ignored"]
+fn an2_negative_active_material_loss_on_a_cargo_bike_round_spme() {
+    run_case("diagnosis-extra/an2_lam_negative_9pct_cargo_bike_parcel_round_27C_cycler_1p5mV_spme");
+}
+
+#[test]
+#[ignore = "slow (blind batch an, 6-7 min): CI skips it; run with --include-ignored"]
+fn an3_slow_negative_diffusion_in_a_chainsaw_in_the_frost_dfn() {
+    run_case("diagnosis-extra/an3_diffusivity_negative_x0p3_arborist_chainsaw_frost_minus5C_2s_0p8mV_dfn");
+}
+
+#[test]
+#[ignore = "blind batch an: CI skips it; run with --include-ignored"]
+fn an4_lithium_inventory_of_a_yacht_house_battery_at_34_degc_spm() {
+    run_case("diagnosis-extra/an4_inventory_5pct_yacht_house_battery_anchorage_34C_20s_2mV_spm");
+}
+
+#[test]
+#[ignore = "blind batch an: CI skips it; run with --include-ignored"]
+fn an5_contact_resistance_of_a_hedge_trimmer_at_4_degc_spme() {
+    run_case("diagnosis-extra/an5_contact_3mOhm_hedge_trimmer_van_charge_4C_10s_spme");
+}
+
+#[test]
+#[ignore = "slow (blind batch an, 2 min): CI skips it; run with --include-ignored"]
+fn an6_an_aged_electrolyte_in_a_power_barrow_at_40_degc_dfn() {
+    run_case("diagnosis-extra/an6_electrolyte_conductivity_x0p4_diffusivity_x0p5_power_barrow_40C_3s_1p2mV_dfn");
+}
+
+#[test]
+#[ignore = "blind batch an: CI skips it; run with --include-ignored"]
+fn an7_voltage_offset_and_self_heating_on_an_efoil_spme() {
+    run_case("diagnosis-extra/an7_voltage_offset_5mV_low_and_thermal_h15_recorded_efoil_session_18C_1s_spme");
+}
+
+#[test]
+#[ignore = "fails (open): a 60 mA internal leak (C/83) beside negative exchange current x0.35; round 1 names kinetics with positive active-material loss (18.39 -> 1.83 mV); the leak fits to 59.5 mA and the noise (0.82 mV) but is refused as implausible beyond C/100"]
+fn an8_leak_and_slow_negative_kinetics_on_a_mobility_scooter_dfn() {
+    run_case("diagnosis-extra/an8_leak_60mA_and_kinetics_negative_x0p35_mobility_scooter_outing_10C_5s_0p8mV_dfn");
 }
