@@ -1500,7 +1500,7 @@ fn am8_less_salt_and_lithium_loss_in_a_floor_scrubber_spme() {
 
 // Blind batch an (thirty-fourth session, `scripts/make_unseen_cases.py` key "an", made by a
 // helper session that did not read the diagnosis code): 7 of 8 named on first sight by the
-// shared bench's judge, 8 of 8 once a leak is plausible to C/50 (docs/diagnosis-cases.md).
+// shared bench's judge (docs/diagnosis-cases.md).
 
 #[test]
 #[ignore = "blind batch an: CI skips it; run with --include-ignored"]
@@ -1545,7 +1545,7 @@ fn an7_voltage_offset_and_self_heating_on_an_efoil_spme() {
 }
 
 #[test]
-#[ignore = "slow (blind batch an, 3-5 min): CI skips it; run with --include-ignored. Failed on first sight (the leak refused beyond C/100); named since the leak is plausible to C/50"]
+#[ignore = "fails (open): a 60 mA internal leak (C/83) beside negative exchange current x0.35; round 1 names kinetics with positive active-material loss (18.39 -> 1.83 mV); the leak fits to 59.5 mA and the noise (0.82 mV) but is refused as implausible beyond C/100"]
 fn an8_leak_and_slow_negative_kinetics_on_a_mobility_scooter_dfn() {
     run_case("diagnosis-extra/an8_leak_60mA_and_kinetics_negative_x0p35_mobility_scooter_outing_10C_5s_0p8mV_dfn");
 }

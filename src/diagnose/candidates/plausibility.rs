@@ -103,7 +103,7 @@ impl Candidate {
             Candidate::Leak => {
                 let leak = get("cell.leakage_current")?;
                 let most = LEAK_PLAUSIBLE_C_RATE * base.cell.nominal_capacity;
-                (leak.abs() > most).then(|| format!("a leak of {:.1} mA exceeds C/50 ({:.1} mA)", leak * 1e3, most * 1e3))
+                (leak.abs() > most).then(|| format!("a leak of {:.1} mA exceeds C/100 ({:.1} mA)", leak * 1e3, most * 1e3))
             }
             Candidate::VoltageDelay => {
                 let tau = get(VOLTAGE_DELAY)?;

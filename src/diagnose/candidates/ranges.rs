@@ -16,12 +16,10 @@ pub(super) const AMBIENT_RANGE_K: f64 = 30.0;
 pub(super) const SPM_TO_DFN_FIXED: usize = 9;
 pub(super) const SPME_TO_DFN_FIXED: usize = 2;
 
-/// The leak candidate's search range and plausible size, as C-rates (1/h): up to C/50, a soft
-/// short of tens of ohms or a sensor offset of 2 % of the 1C current. (Until the thirty-fourth
-/// session plausible only to C/100, on the ground that a cycler would see more; a field
-/// logger never sees an internal leak, and blind an8's 60 mA leak, C/83, was refused.)
+/// The leak candidate's search range and plausible size, as C-rates (1/h): a sensor offset
+/// or a soft short beyond C/100 would be seen on any cycler.
 pub(super) const LEAK_SEARCH_C_RATE: f64 = 0.02;
-pub(super) const LEAK_PLAUSIBLE_C_RATE: f64 = 0.02;
+pub(super) const LEAK_PLAUSIBLE_C_RATE: f64 = 0.01;
 
 /// The unrelaxed-start candidate's search: a load of up to 3C either way (1/h), held for 10 s
 /// to 2 h (from 10 min) before the first recorded point.
