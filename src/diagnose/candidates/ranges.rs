@@ -17,7 +17,11 @@ pub(super) const SPM_TO_DFN_FIXED: usize = 9;
 pub(super) const SPME_TO_DFN_FIXED: usize = 2;
 
 /// The leak candidate's search range and plausible size, as C-rates (1/h): a sensor offset
-/// or a soft short beyond C/100 would be seen on any cycler.
+/// or a soft short beyond C/100 would be seen on any cycler. Plausible to C/50 (tried in the
+/// thirty-fourth session for blind an8's 60 mA leak, which it then names), a leak with lost
+/// active material stands in for the real LG M50 files' open-circuit-voltage mismatch (C/10:
+/// 84.8 mA "charging the cell", 51.98 -> 12.65 mV): the cap stays until a leak is told apart
+/// from a capacity or OCV mismatch by what it does in the rests.
 pub(super) const LEAK_SEARCH_C_RATE: f64 = 0.02;
 pub(super) const LEAK_PLAUSIBLE_C_RATE: f64 = 0.01;
 
