@@ -1545,7 +1545,12 @@ fn an7_voltage_offset_and_self_heating_on_an_efoil_spme() {
 }
 
 #[test]
-#[ignore = "fails (open): a 60 mA internal leak (C/83) beside negative exchange current x0.35; round 1 names kinetics with positive active-material loss (18.39 -> 1.83 mV); the leak fits to 59.5 mA and the noise (0.82 mV) but is refused as implausible beyond C/100; plausible to C/50 it is named (265 s), but then a leak also stands in for the OCV mismatch of three real LG M50 files"]
+#[ignore = "slow for CI (blind batch an, 86 s): the leak is named in CI by l4; run with --include-ignored"]
 fn an8_leak_and_slow_negative_kinetics_on_a_mobility_scooter_dfn() {
-    run_case("diagnosis-extra/an8_leak_60mA_and_kinetics_negative_x0p35_mobility_scooter_outing_10C_5s_0p8mV_dfn");
+    // Missed at first sight: the leak fitted 59.5 mA to the noise but was refused beyond C/100.
+    // A leak that discharges the cell (a soft short) is now plausible to C/50, and a leak must
+    // fit the rests, which keeps it from standing in for the real LG M50 files' OCV mismatch.
+    let rounds = run_case("diagnosis-extra/an8_leak_60mA_and_kinetics_negative_x0p35_mobility_scooter_outing_10C_5s_0p8mV_dfn");
+    let leak = first_fitted(&rounds, "cell.leakage_current");
+    assert!((leak / 0.06 - 1.0).abs() < 0.02, "leak {leak} A: {}", rounds[0].summary);
 }

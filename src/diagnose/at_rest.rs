@@ -2,7 +2,8 @@
 //! relaxes when the current stops: resistance, kinetics, transport, particle size, heat)
 //! cannot explain a model that stays as far off at rest as under load: that is the cell's
 //! open-circuit voltage (its electrodes' OCP curves or their balance), and a dynamic candidate
-//! fitted to such a recording is bent to stand in for it.
+//! fitted to such a recording is bent to stand in for it. Nor can a leak, which is told by
+//! what it does in the rests.
 
 use super::{Candidate, FitOutcome, Round};
 use crate::data::Recording;
@@ -32,19 +33,22 @@ pub fn off_at_rest(rest: f64, load: f64, noise: f64) -> bool {
     rest >= OCV_AT_REST * load && rest > OCV_NOISE_MULTIPLE * noise
 }
 
-/// Why a fit of `members` is not named: one of them relaxes at rest, yet the fit leaves the
-/// model off at rest as much as under load, so that one is bent to stand in for the OCV (a
-/// partner that moves the relaxed voltage and leaves it off has not fitted the OCV either).
-/// `None` when none relaxes at rest, or the fit leaves no such mismatch.
+/// Why a fit of `members` is not named: one of them relaxes at rest, or is told by the rests
+/// (a leak), yet the fit leaves the model off at rest as much as under load, so that one is
+/// bent to stand in for the OCV (a partner that moves the relaxed voltage and leaves it off
+/// has not fitted the OCV either). `None` when none is either, or the fit leaves no such
+/// mismatch.
 pub(super) fn stands_in_for_the_ocv(members: &[Candidate], fit: &FitOutcome, round: &Round) -> Option<String> {
-    if !members.iter().any(|c| c.relaxes_at_rest()) {
+    let relaxes = members.iter().any(|c| c.relaxes_at_rest());
+    if !relaxes && !members.iter().any(|c| c.told_by_rests()) {
         return None;
     }
     let residual: Vec<f64> = round.data.voltage.iter().zip(&fit.voltage).map(|(d, m)| m - d).collect();
     let (rest, load) = rest_and_load_rms(round.data, &residual);
+    let why = if relaxes { "a dynamic effect relaxes at rest" } else { "a leak shows itself in the rests" };
     off_at_rest(rest, load, round.noise).then(|| {
         format!(
-            "with it the model is still off by {:.2} mV RMS at rest ({:.2} mV under load): a dynamic effect relaxes at rest, so that is the cell's open-circuit voltage, which a dynamic effect fitted here stands in for; fit the OCV first",
+            "with it the model is still off by {:.2} mV RMS at rest ({:.2} mV under load): {why}, so that is the cell's open-circuit voltage, which the effect fitted here stands in for; fit the OCV first",
             1e3 * rest,
             1e3 * load
         )

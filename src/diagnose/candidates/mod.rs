@@ -253,6 +253,13 @@ impl Candidate {
         )
     }
 
+    /// Whether this effect is told from others by the rests (a leak keeps the voltage sliding
+    /// through them): a fit of it that leaves the model off at rest as much as under load has
+    /// not shown it, but stands in for the open-circuit voltage ([`super::at_rest`]).
+    pub fn told_by_rests(self) -> bool {
+        matches!(self, Candidate::Leak)
+    }
+
     /// The residual signature this effect leaves when it is missing or mis-set.
     pub fn signature(self) -> &'static str {
         match self {
@@ -312,7 +319,7 @@ impl Candidate {
             Candidate::LithiumPlatingPartial => "plating rate constant 0.001 to 1000 times the set's, dead-lithium decay constant 1e-8 to 1e-2 1/s",
             Candidate::ActiveMaterialGrowth => "up to 50 % of an electrode's active material lost over the recording (steady-profile estimate)",
             Candidate::ActiveMaterialThroughput => "up to 50 % of an electrode's active material lost over the recording",
-            Candidate::Leak => "up to C/100 either way (a leak or a sensor offset of 1 % of the 1C current)",
+            Candidate::Leak => "discharging up to C/50 (a soft short of tens of ohms, or self-discharge); charging up to C/100 (only a current channel's offset can charge the cell: 1 % of the 1C current)",
             Candidate::VoltageOffset => "up to 20 mV either way",
             Candidate::VoltageGain => "up to 0.5 % either way (21 mV at 4.2 V)",
             Candidate::UnrelaxedStart => "a load of up to 3C either way, held 10 s to 2 h before the first point",
@@ -478,7 +485,8 @@ mod tests {
     }
 
     /// A leak only rescales the charge of a run in one direction; a rest or a return
-    /// charge sets it apart. Beyond C/100 it is implausible.
+    /// charge sets it apart. Discharging the cell it is plausible to C/50 (a soft short);
+    /// charging it, only a current channel's offset, to C/100.
     #[test]
     fn a_leak_needs_a_rest_or_both_directions() {
         let base = crate::params::chen2020();
@@ -495,7 +503,10 @@ mod tests {
         assert_eq!((reason(&with_rest), reason(&both_ways)), (None, None));
         let names = vec!["cell.leakage_current".to_string()];
         assert_eq!(Candidate::Leak.implausible(&names, &[0.009 * q], &base, &Load::default()), None);
-        assert!(Candidate::Leak.implausible(&names, &[-0.011 * q], &base, &Load::default()).is_some_and(|why| why.contains("C/100")));
+        assert_eq!(Candidate::Leak.implausible(&names, &[0.019 * q], &base, &Load::default()), None);
+        assert!(Candidate::Leak.implausible(&names, &[0.021 * q], &base, &Load::default()).is_some_and(|why| why.contains("C/50")));
+        assert_eq!(Candidate::Leak.implausible(&names, &[-0.009 * q], &base, &Load::default()), None);
+        assert!(Candidate::Leak.implausible(&names, &[-0.011 * q], &base, &Load::default()).is_some_and(|why| why.contains("offset") && why.contains("C/100")));
     }
 
     /// A refinement frees a parameter of the set that the candidate does not already refit,
