@@ -218,6 +218,8 @@ pub fn simulate_observed(
             return Err(Error::invalid("t_eval", w[1], "output times must increase strictly"));
         }
     }
+    // Charge and energy start at zero, or are NaN throughout when not integrated.
+    let integral = if opts.charge_and_energy { 0.0 } else { f64::NAN };
     let mut rec = Recorder {
         model,
         on_output,
@@ -225,8 +227,8 @@ pub fn simulate_observed(
         keep_states: opts.keep_states,
         rtol: opts.solver.rtol,
         sol: Solution::default(),
-        q: if opts.charge_and_energy { 0.0 } else { f64::NAN },
-        e: if opts.charge_and_energy { 0.0 } else { f64::NAN },
+        q: integral,
+        e: integral,
         i: 0.0,
         p: 0.0,
         history: Vec::new(),
