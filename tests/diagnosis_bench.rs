@@ -1554,3 +1554,59 @@ fn an8_leak_and_slow_negative_kinetics_on_a_mobility_scooter_dfn() {
     let leak = first_fitted(&rounds, "cell.leakage_current");
     assert!((leak / 0.06 - 1.0).abs() < 0.02, "leak {leak} A: {}", rounds[0].summary);
 }
+
+// Blind batch ao (thirty-fifth session, `scripts/make_unseen_cases.py` key "ao", made by a
+// helper that did not read the diagnosis code; judged once with `../shared/tools/diagnosis-bench`
+// on the binary of 776d669 before anyone read the truths: 7 of 8).
+
+#[test]
+#[ignore = "blind batch ao: CI skips it; run with --include-ignored"]
+fn ao1_negative_control_of_a_hospital_bed_backup_spm() {
+    run_case("diagnosis-extra/ao1_control_hospital_bed_backup_battery_22C_2s_0p5mV_spm");
+}
+
+#[test]
+#[ignore = "blind batch ao: CI skips it; run with --include-ignored"]
+fn ao2_positive_active_material_loss_on_an_electric_kayak_dfn() {
+    run_case("diagnosis-extra/ao2_lam_positive_10pct_electric_kayak_14C_5s_dfn");
+}
+
+#[test]
+#[ignore = "blind batch ao: CI skips it; run with --include-ignored"]
+fn ao3_a_large_leak_between_a_robot_mowers_dock_charges_spm() {
+    // A 120 mA leak (C/42): named at first sight on the search's bound then, C/50; now searched
+    // to C/20 when it discharges the cell.
+    let rounds = run_case("diagnosis-extra/ao3_leak_120mA_robot_mower_dock_charges_26C_20s_1p5mV_spm");
+    let leak = first_fitted(&rounds, "cell.leakage_current");
+    assert!((leak / 0.12 - 1.0).abs() < 0.02, "leak {leak} A: {}", rounds[0].summary);
+}
+
+#[test]
+#[ignore = "blind batch ao: CI skips it; run with --include-ignored"]
+fn ao4_slow_positive_kinetics_on_a_cable_car_recovery_at_minus_10_degc_spme() {
+    run_case("diagnosis-extra/ao4_kinetics_positive_x0p3_cable_car_recovery_drive_minus10C_1s_spme");
+}
+
+#[test]
+#[ignore = "blind batch ao: CI skips it; run with --include-ignored"]
+fn ao5_self_heating_of_a_backpack_leaf_blower_spme() {
+    run_case("diagnosis-extra/ao5_thermal_h14_recorded_backpack_leaf_blower_8C_2s_0p8mV_spme");
+}
+
+#[test]
+#[ignore = "blind batch ao: CI skips it; run with --include-ignored"]
+fn ao6_leak_and_contact_resistance_in_vaporiser_puffs_spme() {
+    run_case("diagnosis-extra/ao6_leak_80mA_and_contact_8mOhm_boxmod_vaporiser_puffs_24C_1s_0p7mV_spme");
+}
+
+#[test]
+#[ignore = "fails (open): a 6 mV voltage offset beside positive diffusivity x0.3; round 1 names the diffusivities (39.05 -> 1.46 mV, noise 1.25) and the fitted initial state of charge takes up the offset, so what is left is below what a named effect must remove"]
+fn ao7_positive_diffusivity_and_voltage_offset_on_a_catenary_free_tram_dfn() {
+    run_case("diagnosis-extra/ao7_diffusivity_positive_x0p3_and_voltage_offset_6mV_high_tram_catenary_free_20C_3s_1p2mV_dfn");
+}
+
+#[test]
+#[ignore = "blind batch ao: CI skips it; run with --include-ignored"]
+fn ao8_lithium_inventory_of_home_storage_in_a_heatwave_dfn() {
+    run_case("diagnosis-extra/ao8_inventory_7pct_home_storage_evening_peak_heatwave_45C_30s_2mV_dfn");
+}

@@ -238,8 +238,9 @@ impl Candidate {
                     return None;
                 }
                 spec.submodels.leak = true;
-                let most = LEAK_SEARCH_C_RATE * p.cell.nominal_capacity;
-                (vec![FitParameter::linear("cell.leakage_current", 0.0, -most, most)], "leak submodel on (a constant current inside the cell)".into())
+                let (charging, discharging) = LEAK_SEARCH_C_RATE;
+                let q = p.cell.nominal_capacity;
+                (vec![FitParameter::linear("cell.leakage_current", 0.0, -charging * q, discharging * q)], "leak submodel on (a constant current inside the cell)".into())
             }
             Candidate::RcDynamics => {
                 if spec.submodels.rc {

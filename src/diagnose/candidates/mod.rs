@@ -319,7 +319,7 @@ impl Candidate {
             Candidate::LithiumPlatingPartial => "plating rate constant 0.001 to 1000 times the set's, dead-lithium decay constant 1e-8 to 1e-2 1/s",
             Candidate::ActiveMaterialGrowth => "up to 50 % of an electrode's active material lost over the recording (steady-profile estimate)",
             Candidate::ActiveMaterialThroughput => "up to 50 % of an electrode's active material lost over the recording",
-            Candidate::Leak => "discharging up to C/50 (a soft short of tens of ohms, or self-discharge); charging up to C/100 (only a current channel's offset can charge the cell: 1 % of the 1C current)",
+            Candidate::Leak => "discharging up to C/20 (a soft short of 15 ohm or more in a 5 A h cell, or self-discharge); charging up to C/100 (only a current channel's offset can charge the cell: 1 % of the 1C current)",
             Candidate::VoltageOffset => "up to 20 mV either way",
             Candidate::VoltageGain => "up to 0.5 % either way (21 mV at 4.2 V)",
             Candidate::UnrelaxedStart => "a load of up to 3C either way, held 10 s to 2 h before the first point",
@@ -485,8 +485,8 @@ mod tests {
     }
 
     /// A leak only rescales the charge of a run in one direction; a rest or a return
-    /// charge sets it apart. Discharging the cell it is plausible to C/50 (a soft short);
-    /// charging it, only a current channel's offset, to C/100.
+    /// charge sets it apart. Discharging the cell (a soft short) it is plausible over its
+    /// search; charging it, only a current channel's offset, to C/100.
     #[test]
     fn a_leak_needs_a_rest_or_both_directions() {
         let base = crate::params::chen2020();
@@ -503,8 +503,7 @@ mod tests {
         assert_eq!((reason(&with_rest), reason(&both_ways)), (None, None));
         let names = vec!["cell.leakage_current".to_string()];
         assert_eq!(Candidate::Leak.implausible(&names, &[0.009 * q], &base, &Load::default()), None);
-        assert_eq!(Candidate::Leak.implausible(&names, &[0.019 * q], &base, &Load::default()), None);
-        assert!(Candidate::Leak.implausible(&names, &[0.021 * q], &base, &Load::default()).is_some_and(|why| why.contains("C/50")));
+        assert_eq!(Candidate::Leak.implausible(&names, &[0.049 * q], &base, &Load::default()), None);
         assert_eq!(Candidate::Leak.implausible(&names, &[-0.009 * q], &base, &Load::default()), None);
         assert!(Candidate::Leak.implausible(&names, &[-0.011 * q], &base, &Load::default()).is_some_and(|why| why.contains("offset") && why.contains("C/100")));
     }

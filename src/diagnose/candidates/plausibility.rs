@@ -102,13 +102,9 @@ impl Candidate {
             }
             Candidate::Leak => {
                 let leak = get("cell.leakage_current")?;
-                let q = base.cell.nominal_capacity;
-                if leak >= 0.0 {
-                    (leak > LEAK_PLAUSIBLE_C_RATE * q).then(|| format!("a leak of {:.1} mA exceeds C/50 ({:.1} mA)", leak * 1e3, LEAK_PLAUSIBLE_C_RATE * q * 1e3))
-                } else {
-                    let most = OFFSET_PLAUSIBLE_C_RATE * q;
-                    (-leak > most).then(|| format!("{:.1} mA charging the cell can only be a current channel's offset, and one beyond C/100 ({:.1} mA) would be seen", -leak * 1e3, most * 1e3))
-                }
+                // Discharging, a soft short: plausible over its whole search.
+                let most = OFFSET_PLAUSIBLE_C_RATE * base.cell.nominal_capacity;
+                (-leak > most).then(|| format!("{:.1} mA charging the cell can only be a current channel's offset, and one beyond C/100 ({:.1} mA) would be seen", -leak * 1e3, most * 1e3))
             }
             Candidate::VoltageDelay => {
                 let tau = get(VOLTAGE_DELAY)?;

@@ -16,15 +16,16 @@ pub(super) const AMBIENT_RANGE_K: f64 = 30.0;
 pub(super) const SPM_TO_DFN_FIXED: usize = 9;
 pub(super) const SPME_TO_DFN_FIXED: usize = 2;
 
-/// The leak candidate's search range and plausible sizes, as C-rates (1/h). A leak that
-/// discharges the cell (a soft short of tens of ohms, or self-discharge) is plausible over the
-/// search range, C/50. One that charges it can only be a current channel's offset, and a
-/// cycler's beyond C/100 would be seen. Both must also fit the rests ([`super::super::at_rest`]):
-/// with a symmetric C/50 (tried in the thirty-fourth session) a leak "charging the cell" with
-/// lost active material stood in for the real LG M50 files' open-circuit-voltage mismatch
-/// (C/10: 84.8 mA, 51.98 -> 12.65 mV, leaving 31 mV RMS at rest against 9 mV under load).
-pub(super) const LEAK_SEARCH_C_RATE: f64 = 0.02;
-pub(super) const LEAK_PLAUSIBLE_C_RATE: f64 = 0.02;
+/// The leak candidate's search range, as C-rates (1/h) charging and discharging the cell, and
+/// the plausible size of a leak that charges it. One that discharges it (a soft short, or
+/// self-discharge) is plausible over its whole search, to C/20: a short of about 15 ohm in a
+/// 5 A h cell (blind ao3's 120 mA leak ended on C/50, the bound before). One that charges it
+/// can only be a current channel's offset, and a cycler's beyond C/100 would be seen. Both
+/// must also fit the rests ([`super::super::at_rest`]): with a symmetric C/50 (tried in the
+/// thirty-fourth session) a leak "charging the cell" with lost active material stood in for
+/// the real LG M50 files' open-circuit-voltage mismatch (C/10: 84.8 mA, 51.98 -> 12.65 mV,
+/// leaving 31 mV RMS at rest against 9 mV under load).
+pub(super) const LEAK_SEARCH_C_RATE: (f64, f64) = (0.02, 0.05);
 pub(super) const OFFSET_PLAUSIBLE_C_RATE: f64 = 0.01;
 
 /// The unrelaxed-start candidate's search: a load of up to 3C either way (1/h), held for 10 s
