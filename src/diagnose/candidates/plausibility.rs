@@ -94,21 +94,21 @@ impl Candidate {
             }),
             Candidate::VoltageOffset => {
                 let v = get("cell.voltage_offset")?;
-                (v.abs() > VOLTAGE_OFFSET_PLAUSIBLE).then(|| format!("an offset of {:.1} mV exceeds 20 mV", v * 1e3))
+                (v.abs() > VOLTAGE_OFFSET_PLAUSIBLE).then(|| format!("an offset of {:.1} mV exceeds {:.0} mV", v * 1e3, VOLTAGE_OFFSET_PLAUSIBLE * 1e3))
             }
             Candidate::VoltageGain => {
                 let g = get("cell.voltage_gain")?;
-                (g.abs() > VOLTAGE_GAIN_PLAUSIBLE).then(|| format!("a gain error of {:.2} % exceeds 0.5 %", g * 1e2))
+                (g.abs() > VOLTAGE_GAIN_PLAUSIBLE).then(|| format!("a gain error of {:.2} % exceeds {} %", g * 1e2, VOLTAGE_GAIN_PLAUSIBLE * 1e2))
             }
             Candidate::Leak => {
                 let leak = get("cell.leakage_current")?;
                 // Discharging, a soft short: plausible over its whole search.
                 let most = OFFSET_PLAUSIBLE_C_RATE * base.cell.nominal_capacity;
-                (-leak > most).then(|| format!("{:.1} mA charging the cell can only be a current channel's offset, and one beyond C/100 ({:.1} mA) would be seen", -leak * 1e3, most * 1e3))
+                (-leak > most).then(|| format!("{:.1} mA charging the cell can only be a current channel's offset, and one beyond C/{:.0} ({:.1} mA) would be seen", -leak * 1e3, 1.0 / OFFSET_PLAUSIBLE_C_RATE, most * 1e3))
             }
             Candidate::VoltageDelay => {
                 let tau = get(VOLTAGE_DELAY)?;
-                (tau.abs() > VOLTAGE_DELAY_PLAUSIBLE_S).then(|| format!("a delay of {tau:.2} s exceeds 5 s"))
+                (tau.abs() > VOLTAGE_DELAY_PLAUSIBLE_S).then(|| format!("a delay of {tau:.2} s exceeds {VOLTAGE_DELAY_PLAUSIBLE_S} s"))
             }
             Candidate::Electrolyte | Candidate::ElectrolyteComposite | Candidate::UnrelaxedStart | Candidate::RecordedTemperature => None,
         }
