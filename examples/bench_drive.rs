@@ -14,7 +14,7 @@ use cellstudio::geometry::MeshSizes;
 use cellstudio::models::{ModelBuilder, ModelKind, Submodels};
 use cellstudio::params::chen2020;
 use cellstudio::protocol::Protocol;
-use cellstudio::simulation::{SimOptions, simulate};
+use cellstudio::simulation::{Integrals, SimOptions, simulate};
 use cellstudio::stats::{median, rms};
 
 /// A 30-minute drive sampled every second (A): three incommensurate sines.
@@ -44,7 +44,7 @@ fn main() {
         let mut b = ModelBuilder::new(kind, Submodels::default(), MeshSizes::default());
         let built = b.build(&p).expect("build");
         let opts = |tol: f64| {
-            let mut o = SimOptions { t_eval: Some(t_eval.clone()), cutoffs: (0.0, 100.0), charge_at_outputs: false, ..SimOptions::for_cell(&p) };
+            let mut o = SimOptions { t_eval: Some(t_eval.clone()), cutoffs: (0.0, 100.0), integrals: Integrals::AtStepEnds, ..SimOptions::for_cell(&p) };
             o.solver.set_tolerance(tol);
             o
         };

@@ -11,7 +11,7 @@
 #[path = "common/solver_case.rs"]
 mod solver_case;
 
-use cellstudio::simulation::simulate;
+use cellstudio::simulation::{Integrals, simulate};
 use solver_case::SolverCase;
 
 fn main() {
@@ -25,13 +25,12 @@ fn main() {
     if let Some(dt) = dt {
         let end = protocol.steps.iter().map(|s| s.duration()).sum::<f64>().min(4000.0);
         opts.t_eval = Some((0..=(end / dt) as usize).map(|k| k as f64 * dt).collect());
-        opts.charge_at_outputs = false;
         // Fits read only the voltage.
-        opts.charge_and_energy = false;
+        opts.integrals = Integrals::Off;
     }
     // INTEGRALS=1 / 0 times a solve with / without the charge and energy.
     if let Some(v) = std::env::var_os("INTEGRALS") {
-        opts.charge_and_energy = v == "1";
+        opts.integrals = if v == "1" { Integrals::AtStepEnds } else { Integrals::Off };
     }
     let rtol = opts.solver.rtol;
     let built = builder.build(&p).expect("build");

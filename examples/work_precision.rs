@@ -13,7 +13,7 @@ use std::time::Instant;
 mod solver_case;
 
 use cellstudio::data::Recording;
-use cellstudio::simulation::{SimOptions, simulate};
+use cellstudio::simulation::{Integrals, SimOptions, simulate};
 use solver_case::SolverCase;
 
 fn main() {
@@ -24,7 +24,7 @@ fn main() {
         _ => panic!("usage: work_precision MODEL CASE RTOL REPEATS REF_CSV [integrals]"),
     };
     let SolverCase { protocol, options, params: p, mut builder, repeats } = SolverCase::new(model, case, rtol, repeats);
-    let opts = SimOptions { charge_and_energy: integrals, ..options };
+    let opts = SimOptions { integrals: if integrals { Integrals::AtEveryOutput } else { Integrals::Off }, ..options };
     let rtol = opts.solver.rtol;
     let rec = Recording::from_csv(reference.as_ref()).expect("reference");
     let built = builder.build(&p).expect("build");

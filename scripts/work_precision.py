@@ -22,7 +22,7 @@ What is compared, and why it is fair
 * Same outputs on both sides: the voltage at every step. PyBaMM's IDAKLU computes it inside
   the solver (``output_variables=["Voltage [V]"]``, its fastest path, the one PyBOP takes) and
   the timed region reads ``sol["Voltage [V]"].entries``; ours returns voltage, current and
-  temperature at every step (``SimOptions::charge_and_energy`` off, as fits run).
+  temperature at every step (``SimOptions::integrals`` off, as fits run).
   ``--ours-integrals`` adds our charge and energy quadrature over every step, which PyBaMM is
   not asked for (the comparison until 2026-12-01: 10-35 % of our SPM and SPMe solves).
   ``--pybamm-outputs state`` times PyBaMM returning the full state with no voltage read

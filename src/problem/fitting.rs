@@ -14,7 +14,7 @@ use crate::error::Error;
 use crate::models::{Model, ModelBuilder};
 use crate::params::ParameterSet;
 use crate::protocol::Protocol;
-use crate::simulation::{SimOptions, Solution, simulate, simulate_observed};
+use crate::simulation::{Integrals, SimOptions, Solution, simulate, simulate_observed};
 use crate::solver::{SolverOptions, Workspace};
 
 /// Voltage window (V) of a replayed recording: no cell cut-off ends a replay, but a model
@@ -347,8 +347,7 @@ impl FittingProblem {
             cutoffs: REPLAY_WINDOW,
             capacity: p.cell.nominal_capacity,
             // Only the voltage (and temperature) at the recorded times is compared.
-            charge_at_outputs: false,
-            charge_and_energy: false,
+            integrals: Integrals::Off,
             temperature_input: self.temperature_input.clone(),
         }
     }

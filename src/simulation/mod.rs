@@ -31,14 +31,8 @@ pub struct SimOptions {
     pub cutoffs: (f64, f64),
     /// Nominal capacity (A h) that converts C-rates to amperes.
     pub capacity: f64,
-    /// Integrate charge and energy up to every output time (true), or record only voltage,
-    /// current and state there, with the charge and energy of the last solver step (false:
-    /// much cheaper when the outputs are dense, as for a recording sampled every second).
-    pub charge_at_outputs: bool,
-    /// Integrate the charge and energy (true). False records them as NaN and skips their
-    /// quadrature over every solver step (a fifth to a quarter of an SPM's or SPMe's solve),
-    /// for callers that read only the voltage, current and temperature, such as fits.
-    pub charge_and_energy: bool,
+    /// How the charge and energy are integrated and recorded.
+    pub integrals: Integrals,
     /// A recorded cell temperature (times in s from the start, temperatures in K) that the
     /// model's temperature state follows (`dT/dt = (T_rec(t) - T) / TEMPERATURE_LAG`) in place
     /// of its heat balance; needs a thermal submodel.
@@ -54,11 +48,25 @@ impl SimOptions {
             keep_states: false,
             cutoffs: (p.cell.lower_cutoff, p.cell.upper_cutoff),
             capacity: p.cell.nominal_capacity,
-            charge_at_outputs: true,
-            charge_and_energy: true,
+            integrals: Integrals::AtEveryOutput,
             temperature_input: None,
         }
     }
+}
+
+/// How a simulation integrates the charge (A h) and energy (W h) it records.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Integrals {
+    /// Integrated up to every output time.
+    AtEveryOutput,
+    /// Integrated over every solver step; an output between steps records voltage, current
+    /// and state at its time with the charge and energy of the last step's end (much cheaper
+    /// when the outputs are dense, as for a recording sampled every second).
+    AtStepEnds,
+    /// Not integrated: recorded as NaN, and their quadrature over every solver step skipped
+    /// (a fifth to a quarter of an SPM's or SPMe's solve), for callers that read only the
+    /// voltage, current and temperature, such as fits.
+    Off,
 }
 
 /// Recorded outputs of a simulation.
@@ -219,7 +227,7 @@ pub fn simulate_observed(
         }
     }
     // Charge and energy start at zero, or are NaN throughout when not integrated.
-    let integral = if opts.charge_and_energy { 0.0 } else { f64::NAN };
+    let integral = if opts.integrals == Integrals::Off { f64::NAN } else { 0.0 };
     let mut rec = Recorder {
         model,
         on_output,
@@ -324,7 +332,7 @@ pub fn simulate_observed(
             if let Some(te) = t_eval {
                 while next_eval < te.len() && te[next_eval] <= t_new {
                     let t = te[next_eval];
-                    if opts.charge_at_outputs && opts.charge_and_energy {
+                    if opts.integrals == Integrals::AtEveryOutput {
                         let end = rec.integrate_to(dense, &drive, (t_old, t), None, &dae.kinks, &mut buf);
                         let (q, e) = (rec.q + end.dq, rec.e + end.de);
                         rec.record(t, &buf, end.current, end.voltage, q, e);
@@ -336,9 +344,9 @@ pub fn simulate_observed(
             }
             let (t_event, i, v) = last_event.get();
             let at_end = (t_event == t_new).then_some((i, v));
-            let end = match opts.charge_and_energy {
-                true => rec.integrate_to(dense, &drive, (t_old, t_new), at_end, &dae.kinks, &mut buf),
-                false => rec.step_end(dense, &drive, t_new, at_end, &mut buf),
+            let end = match opts.integrals {
+                Integrals::Off => rec.step_end(dense, &drive, t_new, at_end, &mut buf),
+                _ => rec.integrate_to(dense, &drive, (t_old, t_new), at_end, &dae.kinks, &mut buf),
             };
             rec.advance(t_new, &end);
             if t_eval.is_none() {

@@ -5,7 +5,7 @@ use cellstudio::models::Model;
 use cellstudio::models::ecm::{Ecm, EcmParameters, EcmThermal, RcPair};
 use cellstudio::params::Function1D;
 use cellstudio::protocol::{Protocol, Step};
-use cellstudio::simulation::{SimOptions, Solution, simulate};
+use cellstudio::simulation::{Integrals, SimOptions, Solution, simulate};
 use cellstudio::solver::Workspace;
 
 const CAPACITY: f64 = 2.0; // A h
@@ -39,8 +39,7 @@ fn run(model: &Ecm, protocol: &Protocol, t_eval: Vec<f64>, keep_states: bool) ->
         keep_states,
         cutoffs: (2.5, 4.3),
         capacity: model.params().capacity,
-        charge_at_outputs: true,
-        charge_and_energy: true,
+        integrals: Integrals::AtEveryOutput,
         temperature_input: None,
     };
     simulate(model, &mut ws, protocol, &opts, None).unwrap()

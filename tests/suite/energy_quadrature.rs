@@ -7,7 +7,7 @@ use cellstudio::geometry::MeshSizes;
 use cellstudio::models::{ModelBuilder, ModelKind, Submodels};
 use cellstudio::params::chen2020;
 use cellstudio::protocol::{Protocol, experiment};
-use cellstudio::simulation::{SimOptions, simulate};
+use cellstudio::simulation::{Integrals, SimOptions, simulate};
 
 fn energy(kind: ModelKind, c_rate: f64, rtol: f64) -> f64 {
     let p = chen2020();
@@ -43,7 +43,7 @@ fn a_solve_without_the_integrals_has_the_same_voltage_and_no_charge() {
         let steps = ["Discharge at 1C for 10 minutes", "Rest for 5 minutes", "Charge at 0.5C for 10 minutes", "Hold at 4.1 V for 5 minutes"];
         let protocol = experiment::parse(&steps, p.cell.nominal_capacity).unwrap();
         let with = SimOptions::for_cell(&p);
-        let without = SimOptions { charge_and_energy: false, ..with.clone() };
+        let without = SimOptions { integrals: Integrals::Off, ..with.clone() };
         for t_eval in [None, Some((0..2400).map(|k| k as f64 * 1.5).collect::<Vec<f64>>())] {
             let (with, without) = (SimOptions { t_eval: t_eval.clone(), ..with.clone() }, SimOptions { t_eval, ..without.clone() });
             let a = simulate(built.model.as_ref(), &mut built.workspace, &protocol, &with, None).unwrap();
