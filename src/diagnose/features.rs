@@ -160,6 +160,17 @@ impl Features {
     }
 }
 
+/// The largest fall and the largest rise of a sequence (each a later value against an earlier
+/// one), both non-negative: how far a state went down, and how far up, at its widest.
+pub fn largest_swings(x: &[f64]) -> (f64, f64) {
+    let (mut low, mut high, mut fall, mut rise) = (f64::INFINITY, f64::NEG_INFINITY, 0.0f64, 0.0f64);
+    for &v in x {
+        (high, low) = (high.max(v), low.min(v));
+        (fall, rise) = (fall.max(high - v), rise.max(v - low));
+    }
+    (fall, rise)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -189,6 +200,16 @@ mod tests {
         assert!(!f.valid[1] && !f.valid[2] && f.valid[3]);
         assert_eq!(f.since_step[12], 10.0);
         assert!((f.capacity[r.time.len() - 1] - 50.0 / 3600.0).abs() < 1e-12);
+    }
+
+    /// A state that falls to -0.55 and comes back to 0.17 swings 0.55 down and 0.72 up; one
+    /// that only falls has no rise.
+    #[test]
+    fn largest_swings_count_each_direction() {
+        let (fall, rise) = largest_swings(&[0.0, -0.3, -0.55, -0.2, 0.17, 0.1]);
+        assert!((fall - 0.55).abs() < 1e-15 && (rise - 0.72).abs() < 1e-15, "{fall} {rise}");
+        assert_eq!(largest_swings(&[0.0, -0.5, -0.9]), (0.9, 0.0));
+        assert_eq!(largest_swings(&[]), (0.0, 0.0));
     }
 }
 

@@ -13,7 +13,7 @@ mod ranges;
 use serde::Serialize;
 
 use super::ageing::{self, Load};
-use super::features::Features;
+use super::features::{Features, largest_swings};
 use crate::data::Recording;
 use crate::models::ModelKind;
 use crate::models::submodels::ParticleSize;
@@ -338,16 +338,16 @@ impl Candidate {
     pub fn not_identifiable(self, rec: &Recording, f: &Features, q_nominal: f64) -> Option<String> {
         match self {
             // Hysteresis is an offset whose sign follows the direction of the charge passed:
-            // it is seen at rest after both directions, or, with one rest, when the load
-            // itself drives the hysteresis state (at the candidate's starting rate) well into
-            // both branches (a drive that charges and discharges).
+            // it is seen at rest after both directions, or, with a rest, when the load itself
+            // drives the hysteresis state (at the candidate's starting rate) a long way down and
+            // a long way up (a drive that charges and discharges; partial charges between rests).
             Candidate::Hysteresis if !(f.rests_after_charge > 0 && f.rests_after_discharge > 0) => {
                 let h = Features::hysteresis_state(rec, HYSTERESIS_START_RATE, q_nominal);
-                let (low, high) = h.iter().fold((0.0f64, 0.0f64), |(l, u), v| (l.min(*v), u.max(*v)));
-                let both_branches = low <= -HYSTERESIS_BRANCH && high >= HYSTERESIS_BRANCH;
-                (!(both_branches && f.rests_after_charge + f.rests_after_discharge > 0)).then(|| {
+                let (fall, rise) = largest_swings(&h);
+                let both_ways = fall >= HYSTERESIS_SWING && rise >= HYSTERESIS_SWING;
+                (!(both_ways && f.rests_after_charge + f.rests_after_discharge > 0)).then(|| {
                     format!(
-                        "needs rests after both charge and discharge, or a rest and a load that passes enough charge both ways to swing the hysteresis state past ±{HYSTERESIS_BRANCH} (this recording has {} and {} rests, the state spans {low:.2} to {high:.2})",
+                        "needs rests after both charge and discharge, or a rest and a load that passes enough charge both ways to swing the hysteresis state by {HYSTERESIS_SWING} down and up (this recording has {} and {} rests, the state falls by at most {fall:.2} and rises by at most {rise:.2})",
                         f.rests_after_charge, f.rests_after_discharge
                     )
                 })

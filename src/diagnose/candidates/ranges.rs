@@ -99,6 +99,9 @@ pub(super) const VOLTAGE_GAIN_PLAUSIBLE: f64 = 0.005;
 /// to a branch per tenth of the capacity passed.
 pub(super) const HYSTERESIS_START_RATE: f64 = 10.0;
 
-/// How far into each branch (of ±1) a load must drive the unit hysteresis state for the
-/// recording to show hysteresis without rests after both directions.
-pub(super) const HYSTERESIS_BRANCH: f64 = 0.5;
+/// How far (of the unit hysteresis state's range, -1 to 1) a load must drive the state each
+/// way, down and back up or up and back down, for a recording without rests after both
+/// directions to show hysteresis: a quarter of the range. A load in one direction only moves
+/// the state one way, an offset growing with the charge passed that a stoichiometry shift or
+/// an offset also makes.
+pub(super) const HYSTERESIS_SWING: f64 = 0.5;
