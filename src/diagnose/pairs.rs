@@ -266,7 +266,8 @@ fn pair_class(a: super::Class, b: super::Class) -> super::Class {
 
 /// Whether two candidates describe one physics (the electrolyte model and its properties, two
 /// laws of SEI growth, of lithium plating or of progressive loss of active material, the
-/// voltage channel's offset and gain, an electrode's capacity lost or gained, or a particle
+/// voltage channel's offset and gain, an electrode's capacity lost or gained (or the current
+/// channel's gain, which scales both alike), or a particle
 /// radius and what it sets: the particles' diffusion, their surface's kinetics, their sizes):
 /// a pair of them is one effect, not two.
 fn one_physics(a: Candidate, b: Candidate) -> bool {
@@ -283,7 +284,8 @@ fn one_physics(a: Candidate, b: Candidate) -> bool {
         SeiGrowth | SeiGrowthSeries => Some(3),
         VoltageOffset | VoltageGain => Some(4),
         Thermal | HeatBalance | RecordedTemperature => Some(5),
-        ActiveMaterial | ElectrodeLoading => Some(6),
+        // Both electrodes' capacity scaled alike is, without an electrolyte, a current gain.
+        ActiveMaterial | ElectrodeLoading | CurrentGain => Some(6),
         _ => None,
     };
     family(a).is_some() && family(a) == family(b)

@@ -83,6 +83,9 @@ pub struct Submodels {
     /// The voltage channel's scale error `cell.voltage_gain`: the terminal voltage is read
     /// `1 + g` times the cell's; no extra state.
     pub voltage_gain: bool,
+    /// The current channel's scale error `cell.current_gain`: the cell carries the recorded
+    /// current over `1 + g`; no extra state.
+    pub current_gain: bool,
     /// The correction `cell.ocv_correction` to the open-circuit voltage, against the charge
     /// passed: one extra state (that charge).
     pub ocv_correction: bool,
@@ -147,7 +150,7 @@ impl Submodels {
 
     /// Whether a submodel that wraps the model in [`submodels::Augmented`] is on.
     pub fn augments(&self) -> bool {
-        self.rc || self.hysteresis || self.leak || self.voltage_offset || self.voltage_gain || self.ocv_correction
+        self.rc || self.hysteresis || self.leak || self.voltage_offset || self.voltage_gain || self.current_gain || self.ocv_correction
     }
 }
 

@@ -35,6 +35,7 @@ pub fn chen2020() -> ParameterSet {
             leakage_current: 0.0,
             voltage_offset: 0.0,
             voltage_gain: 0.0,
+            current_gain: 0.0,
             ocv_correction: Default::default(),
         },
         negative: Electrode {

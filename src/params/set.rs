@@ -277,6 +277,11 @@ pub struct Cell {
     /// cell's voltage (0.003 reads 0.3 % high). Used when the voltage-gain submodel is on.
     #[serde(default)]
     pub voltage_gain: f64,
+    /// Relative error of the current channel's scale (-): the channel reads `1 + g` times the
+    /// cell's current (0.025 reads 2.5 % high, on charge and discharge alike). Used when the
+    /// current-gain submodel is on.
+    #[serde(default)]
+    pub current_gain: f64,
     /// Correction to the open-circuit voltage against the charge passed, used when the
     /// OCV-correction submodel is on (no points by default).
     #[serde(default, skip_serializing_if = "OcvCorrection::is_empty")]
@@ -402,6 +407,7 @@ impl ParameterSet {
         check("cell.leakage_current", c.leakage_current, c.leakage_current.is_finite(), "must be a finite current (A)")?;
         check("cell.voltage_offset", c.voltage_offset, c.voltage_offset.is_finite(), "must be a finite voltage (V)")?;
         check("cell.voltage_gain", c.voltage_gain, c.voltage_gain.is_finite() && c.voltage_gain.abs() < 0.5, "must be a finite relative scale error (-) between -0.5 and 0.5")?;
+        check("cell.current_gain", c.current_gain, c.current_gain.is_finite() && c.current_gain.abs() < 0.5, "must be a finite relative scale error (-) between -0.5 and 0.5")?;
         c.ocv_correction.validate()?;
         let t = &self.thermal;
         temperature("thermal.reference_temperature", t.reference_temperature)?;
@@ -528,6 +534,7 @@ impl ParameterSet {
                 "leakage_current" => &mut self.cell.leakage_current,
                 "voltage_offset" => &mut self.cell.voltage_offset,
                 "voltage_gain" => &mut self.cell.voltage_gain,
+                "current_gain" => &mut self.cell.current_gain,
                 _ => match name.strip_prefix("ocv_correction.") {
                     Some(k) => self.cell.ocv_correction.voltage_mut(k).ok_or_else(unknown)?,
                     None => return Err(unknown()),

@@ -19,6 +19,7 @@ const DISTRIBUTION: Submodels = Submodels {
     leak: false,
     voltage_offset: false,
     voltage_gain: false,
+    current_gain: false,
     ocv_correction: false,
     sei: SeiModel::None,
     lam: cellstudio::models::submodels::LamModel::None,

@@ -14,7 +14,7 @@ use cellstudio::params::chen2020;
 use cellstudio::protocol::Protocol;
 use common::run;
 
-const THERMAL: Submodels = Submodels { contact_resistance: false, thermal: true, rc: false, hysteresis: false, leak: false, voltage_offset: false, voltage_gain: false, ocv_correction: false, sei: cellstudio::models::submodels::SeiModel::None, lam: cellstudio::models::submodels::LamModel::None, plating: cellstudio::models::submodels::PlatingModel::None, stress_induced_diffusion: None, particle_size: cellstudio::models::submodels::ParticleSize::Single };
+const THERMAL: Submodels = Submodels { contact_resistance: false, thermal: true, rc: false, hysteresis: false, leak: false, voltage_offset: false, voltage_gain: false, current_gain: false, ocv_correction: false, sei: cellstudio::models::submodels::SeiModel::None, lam: cellstudio::models::submodels::LamModel::None, plating: cellstudio::models::submodels::PlatingModel::None, stress_induced_diffusion: None, particle_size: cellstudio::models::submodels::ParticleSize::Single };
 
 /// With no cooling, the temperature state must integrate the heat source: C dT equals
 /// the integral of the irreversible + ohmic heat I (U_surf - V) (PyBaMM's lumped source,

@@ -22,6 +22,7 @@ fn cell() -> ParameterSet {
         ("cell.leakage_current", 0.05),
         ("cell.voltage_offset", 0.002),
         ("cell.voltage_gain", 0.003),
+        ("cell.current_gain", 0.02),
         ("negative.radius_relative_std", 0.3),
         ("positive.radius_relative_std", 0.3),
         ("lam.negative.current_rate", 1e-6),
@@ -47,7 +48,7 @@ fn submodel_paths(p: &ParameterSet) -> Vec<String> {
     for group in ["sei", "lam", "plating"] {
         leaves(group, &json[group], &mut out);
     }
-    let cell = ["contact_resistance", "rc_resistance", "rc_capacitance", "hysteresis_voltage", "hysteresis_rate", "hysteresis_initial", "leakage_current", "voltage_offset", "voltage_gain"];
+    let cell = ["contact_resistance", "rc_resistance", "rc_capacitance", "hysteresis_voltage", "hysteresis_rate", "hysteresis_initial", "leakage_current", "voltage_offset", "voltage_gain", "current_gain"];
     out.extend(cell.iter().map(|n| format!("cell.{n}")));
     out.extend(["negative.radius_relative_std", "positive.radius_relative_std"].map(String::from));
     let thermal = ["heat_transfer_coefficient", "cooling_area", "cell_volume", "negative_collector_heat_capacity", "positive_collector_heat_capacity"];
@@ -89,7 +90,7 @@ fn a_parameter_called_unread_changes_nothing_and_a_laws_own_parameter_changes_th
     let reaction = SeiModel::ReactionLimited;
     let variants: [(Submodels, &str); 15] = [
         (Submodels::default(), "positive.thickness"),
-        (Submodels { contact_resistance: true, rc: true, hysteresis: true, leak: true, voltage_offset: true, voltage_gain: true, ..Default::default() }, "cell.rc_resistance"),
+        (Submodels { contact_resistance: true, rc: true, hysteresis: true, leak: true, voltage_offset: true, voltage_gain: true, current_gain: true, ..Default::default() }, "cell.rc_resistance"),
         (Submodels { thermal: true, ..Default::default() }, "thermal.heat_transfer_coefficient"),
         (Submodels { particle_size: ParticleSize::Distribution, ..Default::default() }, "positive.radius_relative_std"),
         (Submodels { sei: SeiModel::ReactionLimited, ..Default::default() }, "sei.exchange_current"),

@@ -219,6 +219,13 @@ impl Candidate {
                 spec.submodels.voltage_gain = true;
                 (vec![FitParameter::linear("cell.voltage_gain", 0.0, -VOLTAGE_GAIN_SEARCH, VOLTAGE_GAIN_SEARCH)], "voltage-gain submodel on".into())
             }
+            Candidate::CurrentGain => {
+                if spec.submodels.current_gain {
+                    return None;
+                }
+                spec.submodels.current_gain = true;
+                (vec![FitParameter::linear("cell.current_gain", 0.0, -CURRENT_GAIN_SEARCH, CURRENT_GAIN_SEARCH)], "current-gain submodel on".into())
+            }
             Candidate::VoltageDelay => (
                 vec![FitParameter::linear(VOLTAGE_DELAY, 0.0, -VOLTAGE_DELAY_SEARCH_S, VOLTAGE_DELAY_SEARCH_S)],
                 "voltage read at a fitted delay".into(),

@@ -58,6 +58,7 @@ pub enum Candidate {
     Leak,
     VoltageOffset,
     VoltageGain,
+    CurrentGain,
     UnrelaxedStart,
     VoltageDelay,
 }
@@ -105,7 +106,7 @@ fn too_narrow(f: &Features, q_nominal: f64) -> Option<String> {
 }
 
 impl Candidate {
-    pub const ALL: [Candidate; 32] = [
+    pub const ALL: [Candidate; 33] = [
         Candidate::SeriesResistance,
         Candidate::Electrolyte,
         Candidate::ElectrolyteComposite,
@@ -136,6 +137,7 @@ impl Candidate {
         Candidate::Leak,
         Candidate::VoltageOffset,
         Candidate::VoltageGain,
+        Candidate::CurrentGain,
         Candidate::UnrelaxedStart,
         Candidate::VoltageDelay,
     ];
@@ -196,6 +198,7 @@ impl Candidate {
             Candidate::Leak => "self-discharge or current offset (a leak current the cycler does not record: soft short or sensor bias)",
             Candidate::VoltageOffset => "voltage offset (the voltage channel's calibration, or an open-circuit potential shifted against the set's)",
             Candidate::VoltageGain => "voltage gain (the voltage channel's calibration reads a share of the voltage high or low)",
+            Candidate::CurrentGain => "current gain (the current channel's calibration reads a share of the current high or low; without an electrolyte model the same as both electrodes' capacity and area scaled alike)",
             Candidate::UnrelaxedStart => "an unrelaxed start (a load just before the first recorded point: the recording began part-way through a test)",
             Candidate::VoltageDelay => "voltage channel delay (its time stamps misaligned with the current's)",
         }
@@ -222,6 +225,7 @@ impl Candidate {
             | Candidate::Leak
             | Candidate::VoltageOffset
             | Candidate::VoltageGain
+            | Candidate::CurrentGain
             | Candidate::SizeDistribution => {
                 Class::MissingPhysics
             }
@@ -290,6 +294,7 @@ impl Candidate {
             Candidate::ActiveMaterialThroughput => "one electrode's OCV features are compressed more from cycle to cycle (its capacity shrinks as it cycles), in proportion to the charge passed in either direction",
             Candidate::VoltageOffset => "a constant difference, the same under load and at rest, at every state of charge and current",
             Candidate::VoltageGain => "a difference in proportion to the voltage itself: the same share under load and at rest, larger at the top of the voltage window than at the bottom",
+            Candidate::CurrentGain => "the charge passed, and every overpotential, off by one share on charge and discharge alike: the OCV's features reached early or late in proportion to the charge counted, with no drift at rest",
             Candidate::UnrelaxedStart => "a transient at the start only, fading over minutes whatever the load, as the particles and electrolyte relax from a load the recording did not hold",
             Candidate::VoltageDelay => "a residual shaped like the voltage's own slope: at every change of current the voltage answers a fixed time late (or early), whatever the size of the change, and nothing is left in slow stretches",
             Candidate::Leak => "the state of charge drifts at a constant rate whatever the load: the voltage keeps sliding in rests instead of settling, and the charge put back differs from the charge taken out by the leak times the time",
@@ -322,6 +327,7 @@ impl Candidate {
             Candidate::Leak => "discharging up to C/20 (a soft short of 15 ohm or more in a 5 A h cell, or self-discharge); charging up to C/100 (only a current channel's offset can charge the cell: 1 % of the 1C current)",
             Candidate::VoltageOffset => "up to 20 mV either way",
             Candidate::VoltageGain => "up to 0.5 % either way (21 mV at 4.2 V)",
+            Candidate::CurrentGain => "up to 5 % either way (a shunt or Hall sensor out of calibration; further off, a capacity check against the rating shows it)",
             Candidate::UnrelaxedStart => "a load of up to 3C either way, held 10 s to 2 h before the first point",
             Candidate::VoltageDelay => "up to 5 s either way (a logger's messages or a filter; longer would be seen by eye)",
         }

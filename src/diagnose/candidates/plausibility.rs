@@ -100,6 +100,10 @@ impl Candidate {
                 let g = get("cell.voltage_gain")?;
                 (g.abs() > VOLTAGE_GAIN_PLAUSIBLE).then(|| format!("a gain error of {:.2} % exceeds {} %", g * 1e2, VOLTAGE_GAIN_PLAUSIBLE * 1e2))
             }
+            Candidate::CurrentGain => {
+                let g = get("cell.current_gain")?;
+                (g.abs() > CURRENT_GAIN_PLAUSIBLE).then(|| format!("a current gain error of {:.2} % exceeds {} %", g * 1e2, CURRENT_GAIN_PLAUSIBLE * 1e2))
+            }
             Candidate::Leak => {
                 let leak = get("cell.leakage_current")?;
                 // Discharging, a soft short: plausible over its whole search.
@@ -161,6 +165,9 @@ impl Candidate {
                     get(&path).and_then(|l| base.get(&path).ok().map(|l0| l / l0 - 1.0)).unwrap_or(0.0)
                 };
                 let (n, p) = (gain("negative"), gain("positive"));
+                if both_alike(n, p) {
+                    return capacity_scale_name(-0.5 * (n + p));
+                }
                 let (side, g) = if p >= n { ("positive", p) } else { ("negative", n) };
                 format!("a heavier {side} electrode coating ({:.0} % more active material per area than the set's: capacity and lithium)", 100.0 * g)
             }
@@ -191,6 +198,10 @@ impl Candidate {
             },
             Candidate::VoltageGain => match get("cell.voltage_gain") {
                 Some(g) => format!("{} of {:+.2} % (the channel reads {:.3} times the cell's voltage)", self.name(), g * 1e2, 1.0 + g),
+                None => self.name().to_string(),
+            },
+            Candidate::CurrentGain => match get("cell.current_gain") {
+                Some(g) => format!("{} of {:+.2} % (the channel reads {:.3} times the cell's current)", self.name(), g * 1e2, 1.0 + g),
                 None => self.name().to_string(),
             },
             Candidate::VoltageDelay => match get(VOLTAGE_DELAY) {

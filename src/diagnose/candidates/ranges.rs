@@ -95,6 +95,12 @@ pub(super) const VOLTAGE_DELAY_PLAUSIBLE_S: f64 = 5.0;
 pub(super) const VOLTAGE_GAIN_SEARCH: f64 = 0.02;
 pub(super) const VOLTAGE_GAIN_PLAUSIBLE: f64 = 0.005;
 
+/// The current-gain candidate's search range and plausible size (-): a battery management
+/// system's current sensing is specified to 1-3 %, a cycler's far better; beyond 5 % a
+/// capacity check against the rating would show it.
+pub(super) const CURRENT_GAIN_SEARCH: f64 = 0.1;
+pub(super) const CURRENT_GAIN_PLAUSIBLE: f64 = 0.05;
+
 /// The hysteresis candidate's starting decay rate (-): the state moves `1 - e^-1` of the way
 /// to a branch per tenth of the capacity passed.
 pub(super) const HYSTERESIS_START_RATE: f64 = 10.0;

@@ -19,6 +19,10 @@
 //!   the voltage channel's calibration or an OCP shifted against the set's.
 //! - Voltage gain (`cell.voltage_gain` `g` (-)): the voltage channel reads `1 + g` times the
 //!   cell's voltage (before the offset), a calibration error of the channel's scale.
+//! - Current gain (`cell.current_gain` `g` (-)): the current channel reads `1 + g` times the
+//!   cell's current, so the cell carries `I / (1 + g)` (before the leak) where the cycler
+//!   records `I`: a shunt or Hall sensor out of calibration. In a model without an
+//!   electrolyte it is the same as both electrodes' capacity and area scaled by `1 + g`.
 //! - OCV correction (`cell.ocv_correction`, see [`crate::params::OcvCorrection`]): the state
 //!   `q` (A h) counts the charge the cell carries, `dq/dt = I / 3600`, and the terminal
 //!   voltage gains `ΔV(q)`: an open-circuit voltage whose shape differs from the set's.
@@ -47,6 +51,8 @@ pub struct Augmented {
     offset: bool,
     /// Whether the voltage gain is on.
     gain: bool,
+    /// Whether the current gain is on.
+    current_gain: bool,
     /// Number of states of the wrapped model.
     n_base: usize,
     mass: Vec<f64>,
@@ -71,7 +77,7 @@ impl Augmented {
         let rc = push(submodels.rc, RC_SCALE);
         let hysteresis = push(submodels.hysteresis, 1.0);
         let charge = push(submodels.ocv_correction, base.electrochem().params.cell.nominal_capacity);
-        Self { base, rc, hysteresis, charge, leak: submodels.leak, offset: submodels.voltage_offset, gain: submodels.voltage_gain, n_base, mass, scale }
+        Self { base, rc, hysteresis, charge, leak: submodels.leak, offset: submodels.voltage_offset, gain: submodels.voltage_gain, current_gain: submodels.current_gain, n_base, mass, scale }
     }
 
     /// The wrapped model.
@@ -83,9 +89,12 @@ impl Augmented {
         &self.base.electrochem().params.cell
     }
 
-    /// The current (A) the cell carries when the cycler drives `current`: plus the leak.
+    /// The current (A) the cell carries when the cycler drives (and records) `current`:
+    /// over the current channel's gain, plus the leak.
     fn inside(&self, current: f64) -> f64 {
-        if self.leak { current + self.cell().leakage_current } else { current }
+        let cell = self.cell();
+        let carried = if self.current_gain { current / (1.0 + cell.current_gain) } else { current };
+        if self.leak { carried + cell.leakage_current } else { carried }
     }
 
     /// Voltage across the RC element (V), zero when it is off.
@@ -121,6 +130,9 @@ impl Model for Augmented {
         }
         if self.gain {
             name.push_str("+gain");
+        }
+        if self.current_gain {
+            name.push_str("+current gain");
         }
         if self.charge.is_some() {
             name.push_str("+OCV correction");
@@ -312,6 +324,30 @@ mod tests {
             let got = hyst[k] - plain[k];
             assert!((got - 0.02 * h).abs() < 2e-6, "t = {tk}: offset {got} vs {}", 0.02 * h);
         }
+    }
+
+    /// A current channel reading 2.5 % high: the cell carries the recorded 1C over 1.025, and
+    /// in the SPM that is the same as both electrodes 2.5 % thicker at the recorded current
+    /// (capacity and surface scale together; no electrolyte to tell them apart).
+    #[test]
+    fn a_current_gain_carries_the_recorded_current_over_one_plus_the_gain() {
+        let mut p = crate::params::chen2020();
+        p.cell.current_gain = 0.025;
+        let t: Vec<f64> = (0..=12).map(|k| 250.0 * f64::from(k)).collect();
+        let step = |current: f64| Protocol { steps: vec![Step::Current { current, duration: 3000.0, until_voltage: None }, Step::Rest { duration: 600.0 }] };
+        let read = run(Submodels { current_gain: true, ..Default::default() }, &p, &step(5.0), t.clone());
+        let carried = run(Submodels::default(), &p, &step(5.0 / 1.025), t.clone());
+        let mut thicker = p.clone();
+        thicker.negative.thickness *= 1.025;
+        thicker.positive.thickness *= 1.025;
+        let scaled = run(Submodels::default(), &thicker, &step(5.0), t.clone());
+        let plain = run(Submodels::default(), &p, &step(5.0), t.clone());
+        for k in 0..t.len() {
+            assert!((read[k] - carried[k]).abs() < 1e-9, "t = {}: {} vs {}", t[k], read[k], carried[k]);
+            assert!((read[k] - scaled[k]).abs() < 2e-5, "t = {}: {} vs {} (thicker)", t[k], read[k], scaled[k]);
+        }
+        // The gain moved the curve: 2.5 % less charge passed by the end of the discharge.
+        assert!(read[12] - plain[12] > 2e-3, "{} vs {}", read[12], plain[12]);
     }
 
     /// A rest with a leak `I_L` is the same cell discharged at `I_L` without one (the cycler

@@ -47,6 +47,7 @@ pub fn unread_reason(submodels: &Submodels, path: &str) -> Option<String> {
         ("cell", "leakage_current") if !s.leak => off("leak", "leak = true"),
         ("cell", "voltage_offset") if !s.voltage_offset => off("voltage-offset", "voltage_offset = true"),
         ("cell", "voltage_gain") if !s.voltage_gain => off("voltage-gain", "voltage_gain = true"),
+        ("cell", "current_gain") if !s.current_gain => off("current-gain", "current_gain = true"),
         // The lumped thermal model's heat balance (the isothermal model reads the ambient and
         // reference temperatures, and the entropic change away from the reference).
         ("thermal", "heat_transfer_coefficient" | "cooling_area" | "cell_volume" | "negative_collector_heat_capacity" | "positive_collector_heat_capacity")
