@@ -172,6 +172,13 @@ fn first_fitted(rounds: &[Diagnosis], path: &str) -> f64 {
     fit.names.iter().position(|n| n == path).map(|i| fit.values[i]).unwrap_or_else(|| panic!("{path} is not fitted: {}", rounds[0].summary))
 }
 
+/// The value of `path` in the first round whose named candidate fitted it (a pair's second
+/// effect is named in a later round).
+fn fitted_in_any_round(rounds: &[Diagnosis], path: &str) -> f64 {
+    let mut fits = rounds.iter().filter_map(|d| d.best().and_then(|c| c.fit.as_ref()));
+    fits.find_map(|fit| fit.names.iter().position(|n| n == path).map(|i| fit.values[i])).unwrap_or_else(|| panic!("{path} is not fitted in any round: {}", rounds[0].summary))
+}
+
 #[test]
 fn b1_contact_resistance_gitt_dfn() {
     run_case("diagnosis-bench/b1_contact_gitt");
@@ -1609,4 +1616,69 @@ fn ao7_positive_diffusivity_and_voltage_offset_on_a_catenary_free_tram_dfn() {
 #[ignore = "blind batch ao: CI skips it; run with --include-ignored"]
 fn ao8_lithium_inventory_of_home_storage_in_a_heatwave_dfn() {
     run_case("diagnosis-extra/ao8_inventory_7pct_home_storage_evening_peak_heatwave_45C_30s_2mV_dfn");
+}
+
+// Blind batch ap (thirty-sixth session, made by a helper that did not read the diagnosis code,
+// judged once on the binary of ff69e7f before anyone read the truths: 5 of 8; ap4, ap7 and ap8
+// named since, see docs/diagnosis-cases.md).
+
+#[test]
+#[ignore = "blind batch ap: CI skips it; run with --include-ignored"]
+fn ap1_negative_control_of_a_buffered_fast_charger_on_a_weak_grid_spme() {
+    run_case("diagnosis-extra/ap1_control_buffered_ev_fast_charger_weak_grid_41C_5s_spme");
+}
+
+#[test]
+#[ignore = "blind batch ap: CI skips it; run with --include-ignored"]
+fn ap2_negative_active_material_loss_on_a_vineyard_straddle_tractor_spme() {
+    run_case("diagnosis-extra/ap2_lam_negative_8pct_vineyard_straddle_tractor_12C_10s_2mV_spme");
+}
+
+#[test]
+#[ignore = "blind batch ap: CI skips it; run with --include-ignored"]
+fn ap3_aged_electrolyte_in_a_rescue_drill_at_minus_5_degc_dfn() {
+    run_case("diagnosis-extra/ap3_electrolyte_aged_x0p5_rescue_tools_drill_minus5C_3s_1p2mV_dfn");
+}
+
+/// Hysteresis with rests after charges only, the load swinging its state 0.55 down and 0.72
+/// up: refused as not identifiable at first sight (a particle-size spread stood in), named
+/// since the swing counts each way.
+#[test]
+fn ap4_negative_hysteresis_under_solar_ramp_rate_control_spm() {
+    let rounds = run_case("diagnosis-extra/ap4_hysteresis_negative_10mV_solar_ramp_rate_control_21C_15s_0p8mV_spm");
+    let h = first_fitted(&rounds, "cell.hysteresis_voltage");
+    assert!((h / 0.01 - 1.0).abs() < 0.05, "hysteresis half-width {h} V (truth 0.01): {}", rounds[0].summary);
+}
+
+#[test]
+#[ignore = "blind batch ap: CI skips it; run with --include-ignored"]
+fn ap5_slow_negative_diffusion_in_a_recycling_yard_wheel_loader_dfn() {
+    run_case("diagnosis-extra/ap5_diffusivity_negative_x0p3_recycling_yard_wheel_loader_7C_1s_0p6mV_dfn");
+}
+
+#[test]
+#[ignore = "blind batch ap: CI skips it; run with --include-ignored"]
+fn ap6_unrecorded_self_heating_of_an_indoor_kart_spme() {
+    run_case("diagnosis-extra/ap6_thermal_h10_unrecorded_indoor_electric_karting_17C_2s_spme");
+}
+
+/// A 100 mA leak beside self-heating, temperature recorded, logged every 20 s over 10-25 s
+/// steps: until the temperature's weight was read over the usable points the voltage's "noise"
+/// read 185 mV, the temperature outweighed the voltage and the pair fitted 2.49 mV.
+#[test]
+#[ignore = "blind batch ap (about 90 s): CI skips it; run with --include-ignored"]
+fn ap7_leak_and_self_heating_of_a_container_gantry_crane_spm() {
+    let rounds = run_case("diagnosis-extra/ap7_leak_100mA_and_thermal_h8_recorded_container_gantry_crane_2C_20s_spm");
+    let leak = first_fitted(&rounds, "cell.leakage_current");
+    assert!((leak / 0.1 - 1.0).abs() < 0.02, "leak {leak} A (truth 0.1): {}", rounds[0].summary);
+}
+
+/// A current channel reading 2.5 % high beside slow negative kinetics: a heavier positive
+/// coating stood in for the gain at first sight.
+#[test]
+#[ignore = "blind batch ap (about 60 s): CI skips it; run with --include-ignored"]
+fn ap8_current_gain_and_slow_negative_kinetics_on_a_canal_tour_boat_spm() {
+    let rounds = run_case("diagnosis-extra/ap8_current_gain_2p5pct_high_and_kinetics_negative_x0p35_canal_tour_boat_28C_30s_1p5mV_spm");
+    let gain = fitted_in_any_round(&rounds, "cell.current_gain");
+    assert!((gain / 0.025 - 1.0).abs() < 0.04, "current gain {gain} (truth 0.025): {}", rounds[0].summary);
 }
