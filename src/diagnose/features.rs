@@ -144,6 +144,11 @@ impl Features {
         out
     }
 
+    /// The values of `x` (one per recorded point) at the usable points, in order.
+    pub fn usable(&self, x: &[f64]) -> Vec<f64> {
+        x.iter().zip(&self.valid).filter(|(_, ok)| **ok).map(|(v, _)| *v).collect()
+    }
+
     /// Unit-amplitude hysteresis state `dh/dt = k |I| / (3600 Q) (-sign(I) - h)` from zero,
     /// for rate `k` (-) and capacity `q_nominal` (A h), by exact steps at constant current.
     pub fn hysteresis_state(rec: &Recording, rate: f64, q_nominal: f64) -> Vec<f64> {

@@ -185,9 +185,8 @@ fn decade_screen<P: LeastSquares>(problem: &P, x0: &[f64], screen: &[usize]) -> 
 /// "noise" read 185 mV against its 1 mV, and the temperature outweighed the voltage by as
 /// much); `None` without a recorded temperature.
 pub fn temperature_weight(data: &Recording) -> Option<f64> {
-    let valid = Features::of(data).valid;
-    let usable = |x: &[f64]| x.iter().zip(&valid).filter(|(_, ok)| **ok).map(|(v, _)| *v).collect::<Vec<f64>>();
-    crate::stats::noise::temperature_weight(&usable(&data.voltage), &usable(data.temperature.as_ref()?), &usable(&data.time))
+    let f = Features::of(data);
+    crate::stats::noise::temperature_weight(&f.usable(&data.voltage), &f.usable(data.temperature.as_ref()?), &f.usable(&data.time))
 }
 
 /// Halvings of the way back from a start that breaks the model toward one that runs.

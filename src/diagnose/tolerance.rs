@@ -52,10 +52,9 @@ pub fn choose(data: &Recording, base: &ParameterSet, spec: ModelSpec, settings: 
     // the user's: the recording's own first differences would count a sloping voltage as
     // noise, and the points at current steps their jumps (blind ap7, sampled only at the ends
     // of 10-25 s steps: 185 mV against its 1 mV).
-    let valid = &Features::of(data).valid;
-    let usable = |x: &[f64]| x.iter().zip(valid).filter(|(_, ok)| **ok).map(|(v, _)| *v).collect::<Vec<f64>>();
+    let f = Features::of(data);
     let residual: Vec<f64> = data.voltage.iter().zip(&fine).map(|(v, m)| v - m).collect();
-    let noise = noise_from_dense_differences(&usable(&residual), &usable(&data.time));
+    let noise = noise_from_dense_differences(&f.usable(&residual), &f.usable(&data.time));
     let diff: Vec<f64> = fine.iter().zip(&coarse).map(|(a, b)| a - b).collect();
     let error = rms(&diff);
     let words = format!("the replay at {LOOSE:.0e} is {:.4} mV from the one at {TIGHT:.0e}, against a noise of {:.3} mV", error * 1e3, noise * 1e3);
