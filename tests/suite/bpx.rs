@@ -76,12 +76,12 @@ fn chen2020_round_trip() {
         1e-12,
     );
     println!("{n} scalar fields round-trip within 1e-12");
-    // 80 (with the leak current, the voltage offset and gain and the two particle-radius
+    // 81 (with the leak current, the voltage offset and gain, the current gain and the two particle-radius
     // spreads, carried as `cellstudio.` keys), plus the 15 SEI, the 18 LAM (9 per electrode)
     // and the 6 plating fields, which BPX does not carry: both sides hold their defaults;
     // and the 2 entropic-change factors (1: BPX carries the entropic change with its factor);
     // and the 6 fields of a second active material per electrode (`cellstudio.` keys).
-    assert_eq!(n, 80 + 15 + 18 + 6 + 2 + 6, "every scalar field compared");
+    assert_eq!(n, 81 + 15 + 18 + 6 + 2 + 6, "every scalar field compared");
     assert_eq!(p.name, original.name);
 
     // OCPs: tables against the Chen 2020 functions at 50 stoichiometries.
@@ -458,7 +458,7 @@ fn modified_set_round_trip() {
         "",
         1e-12,
     );
-    assert_eq!(n, 80 + 15 + 18 + 6 + 2 + 6);
+    assert_eq!(n, 81 + 15 + 18 + 6 + 2 + 6);
     assert_eq!(imported.params.positive.radius_relative_std, 0.2);
     assert_eq!(imported.params.electrolyte.diffusivity, p.electrolyte.diffusivity);
     assert_eq!(imported.params.electrolyte.conductivity, p.electrolyte.conductivity);
