@@ -81,10 +81,11 @@ impl Default for FitSettings {
 /// model: its fitted values with the candidate's parameters at no effect) toward which a
 /// start that breaks the model is pulled until it runs.
 ///
-/// `screen` lists log-scaled parameters (ageing rates, known only to within decades) whose
-/// cost can rise between the first start and the optimum; each is screened a decade apart
-/// across its range, the others at the first start, and the best point found is fitted beside
-/// the first.
+/// `screen` lists parameters whose cost can rise between the first start and the optimum:
+/// log-scaled ones (ageing rates, known only to within decades) are screened a decade apart
+/// across their range, linear ones (a voltage channel's delay, whose cost has a valley for
+/// every echo of the load's own rhythm) in [`LINEAR_SCREEN_STEPS`] equal steps; the others at
+/// the first start, and the best point found is fitted beside the first.
 ///
 /// `staged` is a parameter that refines a model held at its start value (the state at which
 /// active material was lost, held where the plain loss puts it): every start is fitted with
@@ -143,19 +144,27 @@ fn staged_fit(problem: &FittingProblem, x0: &[f64], staged: Option<usize>, previ
     Ok(fit)
 }
 
-/// The point `x0` with each of the `screen` parameters moved to the value of a decade grid
-/// over its range (bounds included) that lowers the cost most with the others at `x0`, and the
+/// Equal steps over a linear parameter's range in a screen: a delay searched over ±10 s is
+/// tried every second.
+const LINEAR_SCREEN_STEPS: usize = 20;
+
+/// The point `x0` with each of the `screen` parameters moved to the value of its grid (a
+/// decade grid for a log-scaled parameter, [`LINEAR_SCREEN_STEPS`] equal steps for a linear
+/// one; bounds included) that lowers the cost most with the others at `x0`, and the
 /// simulations it took; `None` when no grid value beats `x0` (or every run fails). Where the
 /// model breaks down at `x0`, any grid value it follows the recording at beats it.
-fn decade_screen<P: LeastSquares>(problem: &P, x0: &[f64], screen: &[usize]) -> (Option<Vec<f64>>, usize) {
+fn screen_grid<P: LeastSquares>(problem: &P, x0: &[f64], screen: &[usize]) -> (Option<Vec<f64>>, usize) {
     let cost = |x: &[f64]| problem.run(x).ok().map(|r| sse(&problem.weighted_residuals(&r)));
     let c0 = cost(x0).unwrap_or(f64::INFINITY);
     let trials: Vec<(usize, f64)> = screen
         .iter()
         .flat_map(|&i| {
             let p = &problem.parameters()[i];
-            let decades = (p.upper / p.lower).log10().ceil().max(1.0) as usize;
-            (0..=decades).map(move |d| (i, (p.lower.ln() + (p.upper / p.lower).ln() * d as f64 / decades as f64).exp()))
+            let steps = if p.log { (p.upper / p.lower).log10().ceil().max(1.0) as usize } else { LINEAR_SCREEN_STEPS };
+            (0..=steps).map(move |d| {
+                let share = d as f64 / steps as f64;
+                (i, if p.log { (p.lower.ln() + (p.upper / p.lower).ln() * share).exp() } else { p.lower + (p.upper - p.lower) * share })
+            })
         })
         .collect();
     let costs: Vec<Option<f64>> = trials
@@ -327,7 +336,7 @@ pub fn fit_and_score(
         problem = problem.fitting_temperature(w)?;
     }
     let mut points = if starts.points.is_empty() { vec![problem.initial()] } else { starts.points.clone() };
-    let (screened, screen_runs) = if starts.screen.is_empty() { (None, 0) } else { decade_screen(&problem, &points[0], &starts.screen) };
+    let (screened, screen_runs) = if starts.screen.is_empty() { (None, 0) } else { screen_grid(&problem, &points[0], &starts.screen) };
     // The screened point is fitted beside the first start, always.
     let lead = if let Some(x) = screened { points.insert(1, x); 2 } else { 1 };
     // A staged refinement is judged against the previous model (where the model is known to run).
@@ -464,7 +473,7 @@ mod tests {
         let problem = Line::new(vec![FitParameter::log("k", 1.0, 1e-3, 1e6)], humped);
         let stalled = levenberg_marquardt(&problem, &[1.0], LmSettings::default()).unwrap();
         assert!((stalled.x[0] - 1.0).abs() < 0.1, "the start is a local minimum: {:?}", stalled.x);
-        let (start, runs) = decade_screen(&problem, &[1.0], &[0]);
+        let (start, runs) = screen_grid(&problem, &[1.0], &[0]);
         assert_eq!(runs, 11, "the start and the ten decade points 1e-3 to 1e6");
         let start = start.expect("a decade beats the start");
         assert!((start[0] / 1e3 - 1.0).abs() < 1e-9, "{start:?}");
