@@ -1679,3 +1679,59 @@ fn ap8_current_gain_and_slow_negative_kinetics_on_a_canal_tour_boat_spm() {
     let gain = fitted_in_any_round(&rounds, "cell.current_gain");
     assert!((gain / 0.025 - 1.0).abs() < 0.04, "current gain {gain} (truth 0.025): {}", rounds[0].summary);
 }
+
+// Blind batch aq (thirty-sixth session, made by a helper that did not read the diagnosis code,
+// judged once on the binary of 7339aec before anyone read the truths: 5 of 8; aq5 named since,
+// aq7 and aq8 open, see docs/diagnosis-cases.md).
+
+#[test]
+#[ignore = "blind batch aq: CI skips it; run with --include-ignored"]
+fn aq1_negative_control_of_an_ice_cream_van_round_dfn() {
+    run_case("diagnosis-extra/aq1_control_ice_cream_van_round_33C_10s_1p5mV_dfn");
+}
+
+#[test]
+#[ignore = "blind batch aq: CI skips it; run with --include-ignored"]
+fn aq2_larger_positive_particles_on_a_milk_float_round_spme() {
+    run_case("diagnosis-extra/aq2_radius_positive_x1p4_milk_float_doorstep_round_15C_5s_spme");
+}
+
+#[test]
+#[ignore = "blind batch aq: CI skips it; run with --include-ignored"]
+fn aq3_voltage_channel_gain_on_an_airport_ground_power_unit_spm() {
+    run_case("diagnosis-extra/aq3_voltage_channel_gain_0p35pct_high_airport_ground_power_unit_27C_20s_2mV_spm");
+}
+
+#[test]
+#[ignore = "blind batch aq (about 90 s): CI skips it; run with --include-ignored"]
+fn aq4_thicker_negative_electrode_on_a_school_bus_run_dfn() {
+    run_case("diagnosis-extra/aq4_thickness_negative_x1p1_school_bus_morning_run_5C_4s_0p8mV_dfn");
+}
+
+/// A voltage channel 3 s late under a trials motorcycle's bursts: from zero the delay's fit
+/// slid to its 10 s bound at first sight ("unexplained", 36.46 mV); screened over its range
+/// every second it lands on the truth.
+#[test]
+fn aq5_a_late_voltage_channel_on_a_trials_motorcycle_spme() {
+    let rounds = run_case("diagnosis-extra/aq5_voltage_logged_3s_late_trials_motorcycle_40C_1s_0p5mV_spme");
+    let tau = first_fitted(&rounds, "data.voltage_delay");
+    assert!((tau - 3.0).abs() < 0.05, "delay {tau} s (truth 3): {}", rounds[0].summary);
+}
+
+#[test]
+#[ignore = "blind batch aq: CI skips it; run with --include-ignored"]
+fn aq6_less_salt_in_a_snow_groomer_at_minus_10_degc_dfn() {
+    run_case("diagnosis-extra/aq6_electrolyte_salt_x0p7_snow_groomer_night_minus10C_15s_1p5mV_dfn");
+}
+
+#[test]
+#[ignore = "fails (open): graphite's anodic transfer coefficient 0.4 beside 6 % lithium lost, SPM data and model; round 1 names the lithium loss with the electrolyte's transport properties as the stand-in for the asymmetric kinetics (11.30 -> 2.17 mV, noise 1.03), then unexplained: the kinetics' transfer-coefficient refinement runs only once kinetics is named, not inside a pair"]
+fn aq7_asymmetric_negative_charge_transfer_and_lithium_loss_on_a_road_train_spm() {
+    run_case("diagnosis-extra/aq7_asymmetric_charge_transfer_negative_alpha0p4_and_inventory_6pct_theme_park_road_train_21C_2s_spm");
+}
+
+#[test]
+#[ignore = "fails (open): a 6 mOhm contact resistance beside a current channel 2 % low at 2 mV noise and 30 s logging; round 1 names the contact (tied with kinetics), 6.34 -> 2.55 mV against 2.36 mV noise, and the gain's remaining 0.97 mV is below what a named effect must remove (the ao7 and ak8 limit)"]
+fn aq8_contact_resistance_and_current_gain_on_an_orchard_platform_spme() {
+    run_case("diagnosis-extra/aq8_contact_6mOhm_and_current_gain_2pct_low_orchard_picking_platform_9C_30s_2mV_spme");
+}
