@@ -24,6 +24,15 @@ impl Driven<'_> {
         }
     }
 
+    /// The current (A) at time `t` when the step gives it, independent of the state; `None`
+    /// for a power demand or a voltage hold.
+    pub(super) fn given_current(&self, t: f64) -> Option<f64> {
+        match self.step.demand_at(t - self.t0, self.capacity) {
+            Demand::Current(i) => Some(i),
+            _ => None,
+        }
+    }
+
     /// Fixed-point iteration `I <- P / V(y, I)` (it contracts while `|I dV/dI| < V`), with a
     /// bracketing fallback near the maximum-power point. When the cell cannot deliver `P`,
     /// the current of maximum power is returned, as a power-limited cycler would do: the

@@ -63,6 +63,9 @@ pub enum Integrals {
     /// and state at its time with the charge and energy of the last step's end (much cheaper
     /// when the outputs are dense, as for a recording sampled every second).
     AtStepEnds,
+    /// The charge integrated as with [`Integrals::AtStepEnds`]; the energy recorded as NaN
+    /// and the voltage not evaluated for it (cycling, whose summaries read only the charge).
+    ChargeAtStepEnds,
     /// Not integrated: recorded as NaN, and their quadrature over every solver step skipped
     /// (a fifth to a quarter of an SPM's or SPMe's solve), for callers that read only the
     /// voltage, current and temperature, such as fits.
@@ -228,15 +231,17 @@ pub fn simulate_observed(
     }
     // Charge and energy start at zero, or are NaN throughout when not integrated.
     let integral = if opts.integrals == Integrals::Off { f64::NAN } else { 0.0 };
+    let energy = matches!(opts.integrals, Integrals::AtEveryOutput | Integrals::AtStepEnds);
     let mut rec = Recorder {
         model,
         on_output,
         outputs: index_runs(model.output_states()),
         keep_states: opts.keep_states,
         rtol: opts.solver.rtol,
+        energy,
         sol: Solution::default(),
         q: integral,
-        e: integral,
+        e: if energy { 0.0 } else { f64::NAN },
         i: 0.0,
         p: 0.0,
         history: Vec::new(),

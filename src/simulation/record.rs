@@ -17,8 +17,11 @@ pub(super) struct Recorder<'a> {
     /// consecutive indices.
     pub outputs: Vec<std::ops::Range<usize>>,
     pub keep_states: bool,
-    /// Relative tolerance of the energy quadrature: the solver's.
+    /// Relative tolerance of the quadrature: the solver's.
     pub rtol: f64,
+    /// The energy is integrated beside the charge (else it stays NaN, and the voltage is not
+    /// evaluated for it).
+    pub energy: bool,
     pub sol: Solution,
     /// Discharged charge (A h) and delivered energy (W h) at the end of the last step.
     pub q: f64,
@@ -50,6 +53,7 @@ impl Recorder<'_> {
     /// Starts a stretch of smooth drive at `t` (s) with current `i` (A) and power `p` (W)
     /// (right limits): forgets the step ends before it.
     pub fn restart(&mut self, t: f64, i: f64, p: f64) {
+        let p = if self.energy { p } else { 0.0 };
         self.i = i;
         self.p = p;
         self.history.clear();
@@ -61,7 +65,7 @@ impl Recorder<'_> {
         self.q += end.dq;
         self.e += end.de;
         self.i = end.current;
-        self.p = end.current * end.voltage;
+        self.p = if self.energy { end.current * end.voltage } else { 0.0 };
         if self.history.len() == HISTORY {
             self.history.remove(0);
         }
@@ -132,32 +136,44 @@ impl Recorder<'_> {
         kinks: &[f64],
         buf: &mut [f64],
     ) -> IntervalEnd {
-        // (current, power); at rest the power is 0 without evaluating the voltage.
+        // (current, power); at rest, or without the energy, the power is 0 without evaluating
+        // the voltage, and without the energy a current the step gives reads no state.
+        let energy = self.energy;
         let mut sample = |t: f64, buf: &mut [f64]| {
+            if let Some(i) = drive.given_current(t).filter(|_| !energy) {
+                return (i, 0.0);
+            }
             dense.eval_ranges(t, &self.outputs, buf);
             let i = drive.current(t, buf);
-            (i, if i == 0.0 { 0.0 } else { i * self.model.voltage(&buf[..self.model.len()], i) })
+            (i, if i == 0.0 || !energy { 0.0 } else { i * self.model.voltage(&buf[..self.model.len()], i) })
         };
         let mid = sample(0.5 * (a + b), buf);
         let end = match at_b {
-            Some((i, v)) => (i, i * v),
+            Some((i, v)) => (i, if energy { i * v } else { 0.0 }),
             None => sample(b, buf),
         };
-        let voltage = if end.0 != 0.0 { end.1 / end.0 } else { self.model.voltage(&buf[..self.model.len()], 0.0) };
+        let voltage = match at_b {
+            Some((_, v)) if !energy => Some(v),
+            _ if !energy => None,
+            _ if end.0 != 0.0 => Some(end.1 / end.0),
+            _ => Some(self.model.voltage(&buf[..self.model.len()], 0.0)),
+        };
         let smooth = |from: f64| kinks.get(kinks.partition_point(|&k| k <= from)).is_none_or(|&k| k >= b);
         let from_history = match self.history[..] {
-            [oldest, _, .., last] if last.0 == a && smooth(oldest.0) => history_rule(&self.history, (0.5 * (a + b), mid.0, mid.1), (b, end.0, end.1), self.rtol),
+            [oldest, _, .., last] if last.0 == a && smooth(oldest.0) => history_rule(&self.history, (0.5 * (a + b), mid.0, mid.1), (b, end.0, end.1), self.rtol, energy),
             _ => None,
         };
         let (dq, de) = match from_history {
             Some(integrals) => integrals,
             None => adaptive_simpson(&mut sample, buf, (a, b), [(self.i, self.p), mid, end], self.rtol, 12),
         };
-        // Unless only `b` was sampled, restore y(b) in `buf`.
-        if from_history.is_none() || at_b.is_some() || self.keep_states {
+        // Unless only `b` was sampled (and its state read), restore y(b) in `buf`.
+        if from_history.is_none() || at_b.is_some() || self.keep_states || !energy {
             self.state_at(dense, b, buf);
         }
-        IntervalEnd { dq: dq / 3600.0, de: de / 3600.0, current: end.0, voltage }
+        let voltage = voltage.unwrap_or_else(|| self.model.voltage(&buf[..self.model.len()], end.0));
+        let de = if energy { de / 3600.0 } else { f64::NAN };
+        IntervalEnd { dq: dq / 3600.0, de, current: end.0, voltage }
     }
 }
 
@@ -166,8 +182,8 @@ impl Recorder<'_> {
 /// the midpoint and `b`: the polynomial through all of them, when the one through all but the
 /// midpoint predicts the midpoint to `tol` of the integrand's scale over the interval (as the
 /// step ends carry no sign of a feature between them, the midpoint is looked at); `None`
-/// otherwise. Exact for a constant current.
-fn history_rule(nodes: &[(f64, f64, f64)], (m, im, pm): (f64, f64, f64), (b, ib, pb): (f64, f64, f64), tol: f64) -> Option<(f64, f64)> {
+/// otherwise. Exact for a constant current. Without `energy` the power is not integrated (0).
+fn history_rule(nodes: &[(f64, f64, f64)], (m, im, pm): (f64, f64, f64), (b, ib, pb): (f64, f64, f64), tol: f64, energy: bool) -> Option<(f64, f64)> {
     const MAX: usize = HISTORY + 2;
     let n = nodes.len() + 2;
     // Nodes: b, then back in time from a, then the midpoint (last, so that its Newton term is
@@ -206,7 +222,7 @@ fn history_rule(nodes: &[(f64, f64, f64)], (m, im, pm): (f64, f64, f64), (b, ib,
         let surprise = c[n - 1] * at_mid;
         (surprise.abs() * h <= tol * scale).then(|| c[..n].iter().zip(&basis).map(|(c, w)| c * w).sum())
     };
-    Some((integral(fi)?, integral(fp)?))
+    Some((integral(fi)?, if energy { integral(fp)? } else { 0.0 }))
 }
 
 /// Adaptive Simpson quadrature of (current, power) over `[a, b]` given the samples at `a`,

@@ -59,3 +59,31 @@ fn a_solve_without_the_integrals_has_the_same_voltage_and_no_charge() {
         }
     }
 }
+
+/// The charge alone (as cycling asks) is the charge integrated beside the energy, over the
+/// same steps to the same voltages, with the energy recorded as NaN.
+#[test]
+fn a_solve_with_the_charge_alone_has_the_same_charge_and_no_energy() {
+    let p = chen2020();
+    for kind in [ModelKind::Spm, ModelKind::Spme, ModelKind::Dfn] {
+        let mut builder = ModelBuilder::new(kind, Submodels::default(), MeshSizes::default());
+        let built = builder.build(&p).unwrap();
+        let steps = ["Discharge at 1C for 10 minutes", "Rest for 5 minutes", "Charge at 0.5C for 10 minutes", "Hold at 4.1 V for 5 minutes"];
+        let protocol = experiment::parse(&steps, p.cell.nominal_capacity).unwrap();
+        let both = SimOptions { integrals: Integrals::AtStepEnds, ..SimOptions::for_cell(&p) };
+        let charge = SimOptions { integrals: Integrals::ChargeAtStepEnds, ..both.clone() };
+        let a = simulate(built.model.as_ref(), &mut built.workspace, &protocol, &both, None).unwrap();
+        let b = simulate(built.model.as_ref(), &mut built.workspace, &protocol, &charge, None).unwrap();
+        assert_eq!(a.time, b.time, "{kind:?}");
+        assert_eq!(a.current, b.current, "{kind:?}");
+        let dv = a.voltage.iter().zip(&b.voltage).map(|(x, y)| (x - y).abs()).fold(0.0, f64::max);
+        assert!(dv < 1e-14, "{kind:?}: voltages differ by {dv:e} V");
+        // Achieved: 0 for the SPM, SPMe and DFN here. Where only the energy's rule from the
+        // step ends fails, the charge alone keeps that rule instead of adaptive Simpson: 6e-12
+        // A h over the 100 SEI cycles of `scripts/bench_ageing.py`.
+        let dq = a.capacity.iter().zip(&b.capacity).map(|(x, y)| (x - y).abs()).fold(0.0, f64::max);
+        println!("{kind:?}: charge differs by at most {dq:.2e} A h");
+        assert!(dq < 1e-12, "{kind:?}: the charge alone differs by {dq:e} A h");
+        assert!(b.energy.iter().all(|v| v.is_nan()), "{kind:?}: {:?}", &b.energy[..3]);
+    }
+}
