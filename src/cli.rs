@@ -175,7 +175,8 @@ pub(crate) enum Command {
         /// Parameter-set file (default: embedded Chen 2020).
         #[arg(long)]
         params: Option<PathBuf>,
-        /// The model already has the contact-resistance submodel (cell.contact_resistance).
+        /// The model already has the contact-resistance submodel (cell.contact_resistance; a
+        /// `--set` of it switches the submodel on too).
         #[arg(long)]
         contact_resistance: bool,
         /// The model already has the lumped thermal submodel.

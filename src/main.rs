@@ -67,7 +67,7 @@ fn warn(warnings: &[String]) {
 fn run(cli: Cli) -> Result<(), Error> {
     match cli.command {
         Command::Diagnose { overrides, model, data, params, contact_resistance, thermal, fit, refits, start_at_rest, max_rounds, time_budget, out } => {
-            use cellstudio::diagnose::{DiagnoseOptions, default_fit_parameter, diagnose_rounds_with, report};
+            use cellstudio::diagnose::{DiagnoseOptions, default_fit_parameter, diagnose_rounds_with, read_by_a_candidate, report};
             use std::io::Write;
             if refits == Some(0) {
                 return Err(Error::invalid("--refits", 0.0, "must be at least 1: with no candidate refitted nothing can be named or ruled out"));
@@ -79,9 +79,17 @@ fn run(cli: Cli) -> Result<(), Error> {
                 return Err(Error::invalid("--time-budget", b, "must be a positive number of seconds"));
             }
             let p = load_parameters(params.as_deref(), &overrides)?;
+            // A contact resistance set switches its submodel on, as for `simulate`. A `--set` or
+            // `--fit` that neither the model nor a candidate reads would change nothing.
+            let contact_resistance = contact_resistance || overrides.sets("cell.contact_resistance");
+            let submodels = Submodels { contact_resistance, thermal, ..Default::default() };
+            let settings = overrides.set.iter().map(|o| (format!("--set {}", o.path), o.path.as_str())).chain(fit.iter().map(|q| (format!("--fit {q}"), q.as_str())));
+            refuse_unread(&submodels, settings.filter(|(_, path)| !read_by_a_candidate(path))).map_err(|e| match e {
+                Error::InvalidSetting { field, reason } => Error::InvalidSetting { field, reason: format!("{reason}; the candidate that adds it fits it from its own start") },
+                other => other,
+            })?;
             let staged = OutputDir::create(&out, &[Some(data.as_path()), params.as_deref()].into_iter().flatten().collect::<Vec<_>>())?;
             let rec = cellstudio::data::cycler::read_recording(&data, &Default::default()).map_err(|e| e.input("--data"))?;
-            let submodels = Submodels { contact_resistance, thermal, ..Default::default() };
             let mut options = DiagnoseOptions::new(cellstudio::problem::fitting::ModelSpec::new(model, submodels));
             options.fitted = fit.iter().map(|path| default_fit_parameter(path, &p)).collect::<Result<_, _>>()?;
             if let Some(n) = refits {

@@ -43,7 +43,7 @@ use rayon::prelude::*;
 use serde::Serialize;
 
 pub use ageing::Load;
-pub use candidates::{Candidate, Class};
+pub use candidates::{Candidate, Class, read_by_a_candidate};
 use features::Features;
 pub use locate::ResidualAnalysis;
 pub use refit::{FitOutcome, FitSettings, Split};

@@ -164,5 +164,12 @@ fn a_parameter_the_model_does_not_read_is_refused_naming_what_would_read_it() {
     let fit = fit_study(&s, "");
     let o = run(&s.0, &["fit", &fit.to_string_lossy(), "--set", "cell.rc_resistance=0.01"]);
     fails_with(&o, &["--set cell.rc_resistance", "the RC submodel is off", "rc = true"]);
+    // A diagnosis's candidates fit these from their own starts, never from the set.
+    let seed = Path::new(REPO).join("tests/data/spm_contact_resistance_seed.csv");
+    let seed = seed.to_str().unwrap();
+    let o = run(&s.0, &["diagnose", "--data", seed, "--out", "out", "--set", "cell.leakage_current=0.1"]);
+    fails_with(&o, &["--set cell.leakage_current", "the leak submodel is off", "fits it from its own start"]);
+    let o = run(&s.0, &["diagnose", "--data", seed, "--out", "out", "--fit", "cell.hysteresis_voltage"]);
+    fails_with(&o, &["--fit cell.hysteresis_voltage", "the hysteresis submodel is off"]);
     assert!(!s.path("out").exists(), "a refused run wrote its output folder");
 }

@@ -24,6 +24,16 @@ use crate::problem::history::{HISTORY_CURRENT, HISTORY_DURATION};
 use crate::problem::lost_lithium::{LOSS_SOC, loss_soc_range, lost_stoichiometries};
 use ranges::*;
 
+/// Whether a candidate may read the parameter set's value at dotted `path` where the user's
+/// model does not: the ageing candidates start from the set's SEI, plating and LAM
+/// parameters, and the thermal candidate takes the set's heat capacities and cooling
+/// geometry. The other switchable submodels' candidates (contact, RC, hysteresis, leak,
+/// offset and gains, size distribution) fit every parameter they add from their own starts.
+pub fn read_by_a_candidate(path: &str) -> bool {
+    let group = path.split_once('.').map_or(path, |(group, _)| group);
+    matches!(group, "sei" | "lam" | "plating" | "thermal") || path.ends_with(".volumetric_heat_capacity")
+}
+
 /// A candidate explanation.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
 #[serde(rename_all = "snake_case")]
@@ -526,5 +536,45 @@ mod tests {
                 assert!(!c.refitted_paths().contains(&path), "{c:?} already refits {path}");
             }
         }
+    }
+
+    /// What [`read_by_a_candidate`] leaves out is never read from the set: a candidate that
+    /// switches on a submodel the user's model lacks fits each of its parameters.
+    #[test]
+    fn a_candidate_fits_every_parameter_of_the_submodel_it_adds() {
+        use crate::models::submodels::unread_reason;
+        let base = crate::params::chen2020();
+        let unread = [
+            "cell.contact_resistance",
+            "cell.rc_resistance",
+            "cell.rc_capacitance",
+            "cell.hysteresis_voltage",
+            "cell.hysteresis_rate",
+            "cell.hysteresis_initial",
+            "cell.leakage_current",
+            "cell.voltage_offset",
+            "cell.voltage_gain",
+            "cell.current_gain",
+            "negative.radius_relative_std",
+            "positive.radius_relative_std",
+        ];
+        let mut added = 0;
+        for kind in [ModelKind::Spm, ModelKind::Spme, ModelKind::Dfn] {
+            let spec = ModelSpec::new(kind, Default::default());
+            for c in Candidate::ALL {
+                let Some(aug) = c.augment(&spec, &base, &[], &Load::default()) else { continue };
+                for path in unread {
+                    assert!(!read_by_a_candidate(path) && unread_reason(&spec.submodels, path).is_some(), "{path}");
+                    if unread_reason(&aug.spec.submodels, path).is_none() {
+                        added += 1;
+                        assert!(aug.extra.iter().any(|p| p.path == path), "{c:?} on the {kind}: reads the set's {path}");
+                    }
+                }
+            }
+        }
+        // Contact, RC (2), hysteresis (3), leak, offset, two gains on each model, and the
+        // size distribution's two spreads on the SPM.
+        assert_eq!(added, 3 * 10 + 2);
+        assert!(read_by_a_candidate("sei.exchange_current") && read_by_a_candidate("positive.volumetric_heat_capacity"));
     }
 }
