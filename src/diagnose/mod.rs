@@ -286,7 +286,8 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
         notes.push(format!("The fits solve at rtol = atol = {:.0e}: {}.", c.tolerance, c.reason));
         c.tolerance
     });
-    let options = &DiagnoseOptions { fit: FitSettings { tolerance: Some(tolerance), ..options.fit.clone() }, ..options.clone() };
+    let temperature_weight = options.fit.temperature_weight.or_else(|| refit::temperature_weight(&data));
+    let options = &DiagnoseOptions { fit: FitSettings { tolerance: Some(tolerance), temperature_weight, ..options.fit.clone() }, ..options.clone() };
     let (baseline, split, warm, restarts, cut_here) = match &options.fitted_baseline {
         Some(b) if b.voltage.len() == data.time.len() && b.names.len() == options.fitted.len() => {
             let features = Features::of(&data);

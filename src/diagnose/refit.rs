@@ -67,11 +67,15 @@ pub struct FitSettings {
     /// recording's noise ([`super::tolerance::choose`]), and a fit without it uses the solver's
     /// default.
     pub tolerance: Option<f64>,
+    /// Weight of the recorded temperature beside the voltage where a heat balance is fitted
+    /// (V/K); `None`: read from the recording in each fit ([`temperature_weight`]). A
+    /// diagnosis reads it once, as it chooses the tolerance.
+    pub temperature_weight: Option<f64>,
 }
 
 impl Default for FitSettings {
     fn default() -> Self {
-        Self { lm: LmSettings::default(), start_at_rest: false, tolerance: None }
+        Self { lm: LmSettings::default(), start_at_rest: false, tolerance: None, temperature_weight: None }
     }
 }
 
@@ -194,8 +198,9 @@ fn screen_grid<P: LeastSquares>(problem: &P, x0: &[f64], screen: &[usize]) -> (O
 /// "noise" read 185 mV against its 1 mV, and the temperature outweighed the voltage by as
 /// much); `None` without a recorded temperature.
 pub fn temperature_weight(data: &Recording) -> Option<f64> {
+    let temperature = data.temperature.as_ref()?;
     let f = Features::of(data);
-    crate::stats::noise::temperature_weight(&f.usable(&data.voltage), &f.usable(data.temperature.as_ref()?), &f.usable(&data.time))
+    crate::stats::noise::temperature_weight(&f.usable(&data.voltage), &f.usable(temperature), &f.usable(&data.time))
 }
 
 /// Halvings of the way back from a start that breaks the model toward one that runs.
@@ -332,7 +337,7 @@ pub fn fit_and_score(
     // A heat balance is fitted to the recorded temperature too; a model that reads it has
     // nothing to fit there.
     let temperature_fitted = problem.spec.submodels.thermal && !problem.spec.recorded_temperature;
-    if let Some(w) = temperature_weight(data).filter(|_| temperature_fitted) {
+    if let Some(w) = settings.temperature_weight.or_else(|| temperature_weight(data)).filter(|_| temperature_fitted) {
         problem = problem.fitting_temperature(w)?;
     }
     let mut points = if starts.points.is_empty() { vec![problem.initial()] } else { starts.points.clone() };
