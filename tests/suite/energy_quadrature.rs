@@ -32,16 +32,22 @@ fn the_energy_is_integrated_to_the_solver_tolerance() {
     }
 }
 
+/// Every kind of step the recorder integrates over: a constant current, a rest, a charge and a
+/// voltage hold (whose current is a state).
+fn discharge_rest_charge_hold(p: &cellstudio::params::ParameterSet) -> Protocol {
+    let steps = ["Discharge at 1C for 10 minutes", "Rest for 5 minutes", "Charge at 0.5C for 10 minutes", "Hold at 4.1 V for 5 minutes"];
+    experiment::parse(&steps, p.cell.nominal_capacity).unwrap()
+}
+
 /// Without the charge and energy (as fits ask), a solve takes the same steps to the same
 /// voltages, and records the integrals it skipped as NaN, never as numbers.
 #[test]
 fn a_solve_without_the_integrals_has_the_same_voltage_and_no_charge() {
     let p = chen2020();
+    let protocol = discharge_rest_charge_hold(&p);
     for kind in [ModelKind::Spm, ModelKind::Spme, ModelKind::Dfn] {
         let mut builder = ModelBuilder::new(kind, Submodels::default(), MeshSizes::default());
         let built = builder.build(&p).unwrap();
-        let steps = ["Discharge at 1C for 10 minutes", "Rest for 5 minutes", "Charge at 0.5C for 10 minutes", "Hold at 4.1 V for 5 minutes"];
-        let protocol = experiment::parse(&steps, p.cell.nominal_capacity).unwrap();
         let with = SimOptions::for_cell(&p);
         let without = SimOptions { integrals: Integrals::Off, ..with.clone() };
         for t_eval in [None, Some((0..2400).map(|k| k as f64 * 1.5).collect::<Vec<f64>>())] {
@@ -65,11 +71,10 @@ fn a_solve_without_the_integrals_has_the_same_voltage_and_no_charge() {
 #[test]
 fn a_solve_with_the_charge_alone_has_the_same_charge_and_no_energy() {
     let p = chen2020();
+    let protocol = discharge_rest_charge_hold(&p);
     for kind in [ModelKind::Spm, ModelKind::Spme, ModelKind::Dfn] {
         let mut builder = ModelBuilder::new(kind, Submodels::default(), MeshSizes::default());
         let built = builder.build(&p).unwrap();
-        let steps = ["Discharge at 1C for 10 minutes", "Rest for 5 minutes", "Charge at 0.5C for 10 minutes", "Hold at 4.1 V for 5 minutes"];
-        let protocol = experiment::parse(&steps, p.cell.nominal_capacity).unwrap();
         let both = SimOptions { integrals: Integrals::AtStepEnds, ..SimOptions::for_cell(&p) };
         let charge = SimOptions { integrals: Integrals::ChargeAtStepEnds, ..both.clone() };
         let a = simulate(built.model.as_ref(), &mut built.workspace, &protocol, &both, None).unwrap();
