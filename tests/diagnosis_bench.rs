@@ -1735,3 +1735,51 @@ fn aq7_asymmetric_negative_charge_transfer_and_lithium_loss_on_a_road_train_spm(
 fn aq8_contact_resistance_and_current_gain_on_an_orchard_platform_spme() {
     run_case("diagnosis-extra/aq8_contact_6mOhm_and_current_gain_2pct_low_orchard_picking_platform_9C_30s_2mV_spme");
 }
+
+#[test]
+#[ignore = "blind batch ar: CI skips it; run with --include-ignored"]
+fn ar1_negative_control_of_a_shunting_locomotive_spm() {
+    run_case("diagnosis-extra/ar1_control_shunting_locomotive_rail_yard_36C_5s_spm");
+}
+
+#[test]
+#[ignore = "open, not judged: partially reversible plating in a cold step-down rapid charge, DFN, 10 s logging; the blind judge's run gave no verdict within 900 s, beside another DFN diagnosis of the same recording for half that time"]
+fn ar2_partially_reversible_plating_in_a_cold_taxi_top_up_dfn() {
+    run_case("diagnosis-extra/ar2_plating_partially_reversible_taxi_cold_rapid_charge_minus2C_10s_1p5mV_dfn");
+}
+
+#[test]
+#[ignore = "blind batch ar: CI skips it; run with --include-ignored"]
+fn ar3_current_channel_offset_on_a_site_battery_hub_spme() {
+    run_case("diagnosis-extra/ar3_current_offset_25mA_construction_site_battery_hub_16C_20s_0p8mV_spme");
+}
+
+#[test]
+#[ignore = "blind batch ar: CI skips it; run with --include-ignored"]
+fn ar4_particle_size_spread_in_an_rov_weld_inspection_spm() {
+    run_case("diagnosis-extra/ar4_particle_size_distribution_rov_weld_inspection_10C_1s_0p5mV_spm");
+}
+
+#[test]
+#[ignore = "blind batch ar: CI skips it; run with --include-ignored"]
+fn ar5_entropic_change_at_a_polar_field_camp_spme() {
+    run_case("diagnosis-extra/ar5_entropic_ocp_term_polar_field_camp_minus12C_30s_0p5mV_spme");
+}
+
+#[test]
+#[ignore = "blind batch ar: CI skips it; run with --include-ignored"]
+fn ar6_unrelaxed_start_after_a_depot_charge_spme() {
+    run_case("diagnosis-extra/ar6_unrelaxed_start_airport_shuttle_log_after_depot_charge_23C_2s_spme");
+}
+
+#[test]
+#[ignore = "blind batch ar: CI skips it; run with --include-ignored"]
+fn ar7_positive_active_material_loss_and_conductivity_on_a_tow_boat_dfn() {
+    run_case("diagnosis-extra/ar7_lam_positive_6pct_and_positive_conductivity_x0p25_waterski_tow_boat_30C_3s_1p2mV_dfn");
+}
+
+#[test]
+#[ignore = "fails (open): a graphite + 1.1 % silicon negative beside 7 % lithium lost, SPM, 2 mV noise; round 1 names the lithium loss (24.45 -> 5.01 mV), round 2 a 6 % negative active-material loss (-> 3.11 mV), round 3 stops below the 2.08 mV a named effect must remove; the second negative material ranked third in round 1 and was never named"]
+fn ar8_silicon_composite_negative_and_lithium_loss_at_a_market_stall_spm() {
+    run_case("diagnosis-extra/ar8_silicon_composite_negative_and_inventory_7pct_christmas_market_stall_4C_15s_2mV_spm");
+}
