@@ -449,6 +449,22 @@ impl ParameterSet {
         Ok(())
     }
 
+    /// The dotted path of every number the set holds, as serialised (e.g. `sei.exchange_current`,
+    /// `lam.negative.current_rate`); function-valued parameters' inner numbers included.
+    pub fn numeric_paths(&self) -> Vec<String> {
+        fn leaves(prefix: &str, v: &serde_json::Value, out: &mut Vec<String>) {
+            let path = |k: &str| if prefix.is_empty() { k.to_string() } else { format!("{prefix}.{k}") };
+            match v {
+                serde_json::Value::Object(m) => m.iter().for_each(|(k, v)| leaves(&path(k), v, out)),
+                serde_json::Value::Number(_) => out.push(prefix.to_string()),
+                _ => {}
+            }
+        }
+        let mut out = Vec::new();
+        leaves("", &serde_json::to_value(self).expect("a parameter set serialises"), &mut out);
+        out
+    }
+
     /// Reads a scalar parameter by its dotted path.
     pub fn get(&self, path: &str) -> Result<f64, Error> {
         let mut copy = self.clone();

@@ -152,12 +152,8 @@ impl Recorder<'_> {
             Some((i, v)) => (i, if energy { i * v } else { 0.0 }),
             None => sample(b, buf),
         };
-        let voltage = match at_b {
-            Some((_, v)) if !energy => Some(v),
-            _ if !energy => None,
-            _ if end.0 != 0.0 => Some(end.1 / end.0),
-            _ => Some(self.model.voltage(&buf[..self.model.len()], 0.0)),
-        };
+        // The voltage at `b` from its power, or the event's; else read from y(b) below.
+        let voltage = (energy && end.0 != 0.0).then(|| end.1 / end.0).or(at_b.map(|(_, v)| v));
         let smooth = |from: f64| kinks.get(kinks.partition_point(|&k| k <= from)).is_none_or(|&k| k >= b);
         let from_history = match self.history[..] {
             [oldest, _, .., last] if last.0 == a && smooth(oldest.0) => history_rule(&self.history, (0.5 * (a + b), mid.0, mid.1), (b, end.0, end.1), self.rtol, energy),

@@ -36,18 +36,7 @@ fn cell() -> ParameterSet {
 /// Every scalar parameter of the switchable submodels: the `sei`, `lam` and `plating` tables,
 /// the cell's and electrodes' submodel parameters and the lumped thermal model's heat balance.
 fn submodel_paths(p: &ParameterSet) -> Vec<String> {
-    fn leaves(prefix: &str, v: &serde_json::Value, out: &mut Vec<String>) {
-        match v {
-            serde_json::Value::Object(m) => m.iter().for_each(|(k, v)| leaves(&format!("{prefix}.{k}"), v, out)),
-            serde_json::Value::Number(_) => out.push(prefix.to_string()),
-            _ => {}
-        }
-    }
-    let json = serde_json::to_value(p).unwrap();
-    let mut out = Vec::new();
-    for group in ["sei", "lam", "plating"] {
-        leaves(group, &json[group], &mut out);
-    }
+    let mut out: Vec<String> = p.numeric_paths().into_iter().filter(|path| ["sei.", "lam.", "plating."].iter().any(|g| path.starts_with(g))).collect();
     let cell = ["contact_resistance", "rc_resistance", "rc_capacitance", "hysteresis_voltage", "hysteresis_rate", "hysteresis_initial", "leakage_current", "voltage_offset", "voltage_gain", "current_gain"];
     out.extend(cell.iter().map(|n| format!("cell.{n}")));
     out.extend(["negative.radius_relative_std", "positive.radius_relative_std"].map(String::from));

@@ -546,17 +546,8 @@ mod tests {
         let base = crate::params::chen2020();
         // Every number of the set that the plain model does not read and no candidate reads
         // from the set.
-        fn leaves(prefix: &str, v: &serde_json::Value, out: &mut Vec<String>) {
-            match v {
-                serde_json::Value::Object(m) => m.iter().for_each(|(k, v)| leaves(&format!("{prefix}{k}."), v, out)),
-                serde_json::Value::Number(_) => out.push(prefix.trim_end_matches('.').to_string()),
-                _ => {}
-            }
-        }
-        let mut paths = Vec::new();
-        leaves("", &serde_json::to_value(&base).unwrap(), &mut paths);
         let plain = crate::models::Submodels::default();
-        let unread: Vec<String> = paths.into_iter().filter(|p| unread_reason(&plain, p).is_some() && !read_by_a_candidate(p)).collect();
+        let unread: Vec<String> = base.numeric_paths().into_iter().filter(|p| unread_reason(&plain, p).is_some() && !read_by_a_candidate(p)).collect();
         let mut added = 0;
         for kind in [ModelKind::Spm, ModelKind::Spme, ModelKind::Dfn] {
             let spec = ModelSpec::new(kind, Default::default());
