@@ -396,11 +396,13 @@ fn y6_negative_control_5mv_noise_dfn() {
 }
 
 #[test]
+#[ignore = "slow (1-2 min): CI skips it since the thirty-eighth session (CI ran 1,710 s of its 1,800); run with --include-ignored"]
 fn z1_kinetics_and_contact_resistance_spme() {
     run_case("diagnosis-extra/z1_kinetics_and_contact");
 }
 
 #[test]
+#[ignore = "slow (1-2 min): CI skips it since the thirty-eighth session (CI ran 1,710 s of its 1,800); run with --include-ignored"]
 fn z3_lithium_inventory_and_diffusivity_spme() {
     run_case("diagnosis-extra/z3_inventory_and_diffusivity");
 }
@@ -645,6 +647,7 @@ fn o2_cold_start_warming_in_its_room_dfn() {
 }
 
 #[test]
+#[ignore = "slow (1-2 min): CI skips it since the thirty-eighth session (CI ran 1,710 s of its 1,800); run with --include-ignored"]
 fn o6_conductivity_and_self_heating_tie_with_contact_and_self_heating_spme() {
     // Blind batch o: electrolyte conductivity x0.5 with self-heating (h = 15 W/(m^2 K)) in
     // SPMe data. Chen 2020's conductivity does not depend on temperature, so in the SPMe a
@@ -728,6 +731,7 @@ fn n5_hysteresis_under_a_drive_with_one_rest_spme() {
 }
 
 #[test]
+#[ignore = "slow (1-2 min): CI skips it since the thirty-eighth session (CI ran 1,710 s of its 1,800); run with --include-ignored"]
 fn l4_internal_leak_through_rests_dfn() {
     // Blind batch l: a 20 mA internal leak (a soft short the cycler does not measure) through
     // a C/3 CC-CV charge, a discharge and hours of rest, DFN data and model. Its first run
@@ -765,6 +769,7 @@ fn k3_voltage_channel_offset_gitt_spm() {
 }
 
 #[test]
+#[ignore = "slow (1-2 min): CI skips it since the thirty-eighth session (CI ran 1,710 s of its 1,800); run with --include-ignored"]
 fn a4_voltage_channel_gain_dst_spm() {
     // Blind batch a: the voltage channel reads 0.3 % high (1.003 times the cell's voltage)
     // through DSTs and a CC-CV at 30 degC. Its first run named an offset of +12.2 mV and left
@@ -1373,6 +1378,7 @@ fn ak7_asymmetric_negative_charge_transfer_on_a_paraglider_winch_spme() {
 /// 0.5002 +- 0.0071), 14.14 -> 0.98 mV (noise 1.06 mV), then no missing physics, in 27 s.
 /// Without the refinement: kinetics with a contact stand-in, 2.22 mV left, 21 min.
 #[test]
+#[ignore = "slow (1-2 min): CI skips it since the thirty-eighth session (CI ran 1,710 s of its 1,800); run with --include-ignored"]
 fn ak7d_asymmetric_negative_charge_transfer_in_the_dfn() {
     let rounds = run_case("diagnosis-extra/ak7d_asymmetric_charge_transfer_negative_alpha0p4_paraglider_tow_winch_2C_10s_dfn");
     assert_eq!(rounds[0].best().map(|c| c.candidate), Some(Candidate::Kinetics), "{}", rounds[0].summary);
