@@ -29,6 +29,12 @@ impl Overrides {
     pub fn sets(&self, path: &str) -> bool {
         self.set.iter().any(|o| o.path == path)
     }
+
+    /// Whether the contact-resistance submodel is on: asked for by its flag (`asked`) or
+    /// switched on by a `--set` of its resistance.
+    pub fn contact_resistance(&self, asked: bool) -> bool {
+        asked || self.sets("cell.contact_resistance")
+    }
 }
 
 #[derive(Subcommand)]

@@ -81,7 +81,7 @@ fn run(cli: Cli) -> Result<(), Error> {
             let p = load_parameters(params.as_deref(), &overrides)?;
             // A contact resistance set switches its submodel on, as for `simulate`. A `--set` or
             // `--fit` that neither the model nor a candidate reads would change nothing.
-            let contact_resistance = contact_resistance || overrides.sets("cell.contact_resistance");
+            let contact_resistance = overrides.contact_resistance(contact_resistance);
             let submodels = Submodels { contact_resistance, thermal, ..Default::default() };
             let settings = overrides.set.iter().map(|o| (format!("--set {}", o.path), o.path.as_str())).chain(fit.iter().map(|q| (format!("--fit {q}"), q.as_str())));
             refuse_unread(&submodels, settings.filter(|(_, path)| !read_by_a_candidate(path))).map_err(|e| match e {
@@ -236,7 +236,7 @@ fn run(cli: Cli) -> Result<(), Error> {
             set_contact_resistance(&mut p, contact_resistance)?;
             // A contact resistance given, set or fitted switches its submodel on.
             let fits_contact = fit.is_some() && parameters.iter().any(|q| q == "cell.contact_resistance");
-            let submodels = Submodels { contact_resistance: contact_resistance.is_some() || overrides.sets("cell.contact_resistance") || fits_contact, ..Default::default() };
+            let submodels = Submodels { contact_resistance: overrides.contact_resistance(contact_resistance.is_some()) || fits_contact, ..Default::default() };
             refuse_unread_overrides(&submodels, &overrides.set)?;
             if fit.is_some() {
                 refuse_unread(&submodels, parameters.iter().map(|q| (format!("--parameters {q}"), q.as_str())))?;
@@ -332,7 +332,7 @@ fn run(cli: Cli) -> Result<(), Error> {
             let spread = ["negative.radius_relative_std", "positive.radius_relative_std"].into_iter().find(|p| overrides.sets(p));
             let switch = if size_distribution { Some("--size-distribution".to_string()) } else { spread.map(|p| format!("--set {p}")) };
             let particle_size = if switch.is_some() { ParticleSize::Distribution } else { ParticleSize::Single };
-            let submodels = Submodels { contact_resistance: contact_resistance.is_some() || overrides.sets("cell.contact_resistance"), thermal, particle_size, ..Default::default() };
+            let submodels = Submodels { contact_resistance: overrides.contact_resistance(contact_resistance.is_some()), thermal, particle_size, ..Default::default() };
             submodels.check_for(model).map_err(|e| match (e, &switch) {
                 (Error::InvalidSetting { reason, .. }, Some(field)) => Error::InvalidSetting { field: field.clone(), reason },
                 (other, _) => other,

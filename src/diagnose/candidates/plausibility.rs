@@ -39,8 +39,7 @@ impl Candidate {
             Candidate::RadiusNegative | Candidate::RadiusPositive => self.factor_outside(names, values, base, RADIUS_PLAUSIBLE),
             Candidate::LithiumInventory => {
                 let (cn, cp) = (get("negative.initial_concentration")?, get("positive.initial_concentration")?);
-                let lithium = |a: f64, b: f64| base.negative.active_fraction * base.negative.thickness * a + base.positive.active_fraction * base.positive.thickness * b;
-                let change = lithium(cn, cp) / lithium(base.negative.initial_concentration, base.positive.initial_concentration) - 1.0;
+                let change = lithium_change(cn, cp, base);
                 // A start at the end of an electrode's stoichiometry range is where the search
                 // stopped, not an estimate: the fit ran out of that electrode's OCP curve (more
                 // likely the curve itself, or the balance, differs from the set's).
@@ -82,7 +81,8 @@ impl Candidate {
                 if !(SECOND_SHARE_PLAUSIBLE.0..=SECOND_SHARE_PLAUSIBLE.1).contains(&share) {
                     return Some(format!("a second material holding {:.1} % of the {side} electrode's sites is outside {:.1} to {:.0} %", 100.0 * share, 100.0 * SECOND_SHARE_PLAUSIBLE.0, 100.0 * SECOND_SHARE_PLAUSIBLE.1));
                 }
-                if near(u0, potential.1, potential.2) || near(width, SECOND_WIDTH.1, SECOND_WIDTH.2) {
+                // The width's floor is a flat plateau, a physical limit (see [`SECOND_WIDTH`]).
+                if near(u0, potential.1, potential.2) || (near(width, SECOND_WIDTH.1, SECOND_WIDTH.2) && width > SECOND_WIDTH.0) {
                     return Some(format!("the second material's potential {u0:.3} V or width {:.0} mV is on its search bound", 1e3 * width));
                 }
                 None
@@ -181,10 +181,18 @@ impl Candidate {
                 format!("progressive loss of active material, {which} electrode (about {:.1} % of its capacity over the recording)", 100.0 * l)
             }
             Candidate::SecondMaterialNegative | Candidate::SecondMaterialPositive => {
-                match self.second_material_values(get) {
-                    Some((share, u0, width)) => format!("{}: {:.1} % of its sites filling around {u0:.3} V vs Li over about {:.0} mV", self.name(), 100.0 * share, 1e3 * width),
-                    None => self.name().to_string(),
-                }
+                let Some((share, u0, width)) = self.second_material_values(get) else { return self.name().to_string() };
+                // The fit balances the electrodes' lithium afresh with the material: a change
+                // of the cyclable lithium it found is part of what it says about the cell.
+                let lithium = match (get("negative.initial_concentration"), get("positive.initial_concentration")) {
+                    (Some(cn), Some(cp)) => {
+                        let change = lithium_change(cn, cp, base);
+                        let way = if change < 0.0 { "lost" } else { "gained" };
+                        (change.abs() >= LITHIUM_CHANGE_REPORTED).then(|| format!(", with {:.1} % of the cyclable lithium {way}", 100.0 * change.abs())).unwrap_or_default()
+                    }
+                    _ => String::new(),
+                };
+                format!("{}: {:.1} % of its sites filling around {u0:.3} V vs Li over about {:.0} mV{lithium}", self.name(), 100.0 * share, 1e3 * width)
             }
             Candidate::EntropicChange => {
                 let factor = |side: &str| get(&format!("{side}.ocp_entropic_change_factor")).map(|f| format!("{side} electrode {f:.2}"));
@@ -218,6 +226,14 @@ impl Candidate {
             _ => self.name().to_string(),
         }
     }
+}
+
+/// The change (-) of the cell's cyclable lithium, both electrodes' `eps L c` summed, when they
+/// start at concentrations `cn` and `cp` (mol/m^3) against the set's (the same at any state
+/// of charge: a charge moves lithium between them).
+fn lithium_change(cn: f64, cp: f64, base: &ParameterSet) -> f64 {
+    let lithium = |a: f64, b: f64| base.negative.active_fraction * base.negative.thickness * a + base.positive.active_fraction * base.positive.thickness * b;
+    lithium(cn, cp) / lithium(base.negative.initial_concentration, base.positive.initial_concentration) - 1.0
 }
 
 /// Samples after a current step over which [`step_sampling`] takes its median time step.
@@ -301,6 +317,26 @@ mod tests {
         assert!(at(empty).contains("negative electrode (7 % of its capacity, lost at stoichiometry 0.00)"), "{}", at(empty));
         let x0 = base.negative.initial_concentration / base.negative.max_concentration;
         assert!(at(start).contains(&format!("lost at stoichiometry {x0:.2}")), "{}", at(start));
+    }
+
+    /// A second material's width on its floor is a flat plateau (plausible); on its ceiling a
+    /// slope over the whole window (a stand-in). The cyclable lithium its rebalanced
+    /// electrodes hold is reported from 1 % of change, with its sign.
+    #[test]
+    fn a_second_material_is_a_plateau_at_its_width_floor_and_says_what_lithium_it_found() {
+        let base = crate::params::chen2020();
+        let c = Candidate::SecondMaterialNegative;
+        let names: Vec<String> = ["negative.second_phase_share", "negative.second_phase_potential", "negative.second_phase_width", "negative.initial_concentration", "positive.initial_concentration"].map(String::from).to_vec();
+        let (cn, cp) = (base.negative.initial_concentration, base.positive.initial_concentration);
+        let values = |width: f64, lithium: f64| [0.1, 0.23, width, lithium * cn, lithium * cp];
+        let load = Load::default();
+        assert_eq!(c.implausible(&names, &values(SECOND_WIDTH.1, 1.0), &base, &load), None);
+        assert!(c.implausible(&names, &values(SECOND_WIDTH.2, 1.0), &base, &load).is_some_and(|why| why.contains("500 mV")));
+        // Both electrodes' concentrations 5 % lower: 5 % of the cyclable lithium lost.
+        let named = c.named_by_values(&names, &values(0.02, 0.95), &base, &load);
+        assert!(named.contains("over about 20 mV, with 5.0 % of the cyclable lithium lost"), "{named}");
+        assert!(c.named_by_values(&names, &values(0.02, 1.02), &base, &load).contains("2.0 % of the cyclable lithium gained"));
+        assert!(!c.named_by_values(&names, &values(0.02, 0.995), &base, &load).contains("cyclable lithium"));
     }
 
     /// A delay shorter than the sampling after current steps is unresolved; one longer is not.

@@ -75,12 +75,20 @@ pub(super) const ENTROPIC_SEARCH: (f64, f64) = (-2.0, 4.0);
 pub(super) const ENTROPIC_PLAUSIBLE: (f64, f64) = (0.0, 3.0);
 
 /// The second-material candidates' searches: the share of the electrode's sites (-), where
-/// the material fills (V vs Li, per electrode) and how broadly (V); plausible shares.
+/// the material fills (V vs Li, per electrode) and how broadly (V); plausible shares. The
+/// width's floor, 1 mV, is narrower than a recording's noise resolves: a fit that ends there
+/// describes a flat two-phase plateau (graphite's stages, LFP, crystalline silicon's first
+/// lithiation), a physical limit of the logistic, not a stand-in; a fit at its 0.5 V ceiling
+/// describes a slope spread over the whole window, which any OCP mismatch gives.
 pub(super) const SECOND_SHARE: (f64, f64, f64) = (0.15, 0.0, 0.5);
 pub(super) const SECOND_SHARE_PLAUSIBLE: (f64, f64) = (0.005, 0.4);
 pub(super) const SECOND_POTENTIAL_NEGATIVE: (f64, f64, f64) = (0.3, 0.02, 1.2);
 pub(super) const SECOND_POTENTIAL_POSITIVE: (f64, f64, f64) = (3.8, 3.0, 4.5);
-pub(super) const SECOND_WIDTH: (f64, f64, f64) = (0.1, 0.005, 0.5);
+pub(super) const SECOND_WIDTH: (f64, f64, f64) = (0.1, 0.001, 0.5);
+
+/// The least change of the cyclable lithium (-) a fit that rebalances the electrodes reports
+/// beside its own effect: below 1 % it is within a cell-to-cell spread of the balance.
+pub(super) const LITHIUM_CHANGE_REPORTED: f64 = 0.01;
 
 /// The voltage-offset candidate's search range and plausible size (V).
 pub(super) const VOLTAGE_OFFSET_SEARCH: f64 = 0.05;
