@@ -8322,7 +8322,473 @@ def batch_ar(root):
     replay_rmse(root, name, lion.SPM(), stall_cell(False, 0.93), steps, 0.9, "spm_inventory_only_rmse_mV", period=15)
 
 
-BATCHES = {"u": batch_u, "v": batch_v, "w": batch_w, "x": batch_x, "y": batch_y, "z": batch_z, "q": batch_q, "r": batch_r, "s": batch_s, "t": batch_t, "p": batch_p, "o": batch_o, "n": batch_n, "m": batch_m, "l": batch_l, "k": batch_k, "j": batch_j, "i": batch_i, "h": batch_h, "f": batch_f, "e": batch_e, "g": batch_g, "d": batch_d, "c": batch_c, "a": batch_a, "b": batch_b, "ab": batch_ab, "ac": batch_ac, "ad": batch_ad, "ae": batch_ae, "af": batch_af, "ag": batch_ag, "ah": batch_ah, "ai": batch_ai, "aj": batch_aj, "ak": batch_ak, "ak7d": remake_ak7, "al": batch_al, "am": batch_am, "an": batch_an, "ao": batch_ao, "ap": batch_ap, "aq": batch_aq, "ar": batch_ar}
+def quadruped_patrol_current(seed, waypoints, capacity_A_h=5.0, dt=0.5):
+    """A legged (quadruped) inspection robot's patrol of a chemical plant as a cell current at `dt` s
+    knots (A, discharge positive; ramps between knots, no current step): it stands up from its dock
+    (0.3C for 2 s), then for each of `waypoints` waypoints walks there (0.7-1.0C for 20-90 s, with a
+    gait ripple of 0.08C from knot to knot), in 30 % of them climbing a steel staircase to a platform
+    (1.8-2.4C for 8-20 s, ripple 0.15C), stands scanning the gauges with its camera and gas sensor
+    (0.10-0.15C for 20-60 s), and in 25 % of them turns a valve handle with its arm (0.35-0.5C for 5-12
+    s); last it lies down (0.02C for 30 s)."""
+    rng = np.random.default_rng(seed)
+    c = capacity_A_h
+    n = lambda seconds: max(1, int(round(seconds / dt)))
+    cur = [0.0]
+
+    def ramp(to, seconds):
+        start, k_n = cur[-1], n(seconds)
+        cur.extend(start + (to - start) * (k + 1) / k_n for k in range(k_n))
+
+    def hold(level, seconds, ripple=0.0):
+        cur.extend(level + (rng.normal(0.0, ripple) if ripple else 0.0) for _ in range(n(seconds)))
+
+    ramp(0.3 * c, 1.0)
+    hold(0.3 * c, 2.0)
+    for _ in range(waypoints):
+        walk = rng.uniform(0.7, 1.0) * c
+        ramp(walk, 1.0)
+        hold(walk, rng.integers(20, 91), 0.08 * c)
+        if rng.uniform() < 0.3:
+            climb = rng.uniform(1.8, 2.4) * c
+            ramp(climb, 1.0)
+            hold(climb, rng.integers(8, 21), 0.15 * c)
+        stand = rng.uniform(0.10, 0.15) * c
+        ramp(stand, 1.0)
+        hold(stand, rng.integers(20, 61), 0.01 * c)
+        if rng.uniform() < 0.25:
+            arm = rng.uniform(0.35, 0.5) * c
+            ramp(arm, 0.5)
+            hold(arm, rng.integers(5, 13))
+            ramp(stand, 0.5)
+    ramp(0.02 * c, 1.0)
+    hold(0.02 * c, 30.0)
+    ramp(0.0, 0.5)
+    i = np.array(cur)
+    return np.column_stack([dt * np.arange(len(i)), i])
+
+
+def leo_orbit_steps(seed, orbits, charge_C=0.5):
+    """A low-Earth-orbit satellite's battery in a ground life test (per cell, discharge positive), for
+    each of `orbits` 95 min orbits: the eclipse on the battery (the bus with the heaters on, 0.32-0.40C
+    for 33-36 min), then in sunlight, in 30 % of orbits a payload pass beyond what the arrays give
+    (imaging or a downlink over a ground station, 0.25-0.45C for 4-8 min), the charge at `charge_C`
+    that puts back what the eclipse and the pass took (time-limited, whole seconds), and the battery
+    idle on the shunt regulator (no current) for the rest of the orbit."""
+    rng = np.random.default_rng(seed)
+    steps = []
+    for _ in range(orbits):
+        eclipse_C, eclipse_s = rng.uniform(0.32, 0.40), 60 * int(rng.integers(33, 37))
+        steps.append(f"Discharge at {eclipse_C:.3f}C for {eclipse_s} seconds")
+        taken = eclipse_C * eclipse_s
+        used = eclipse_s
+        if rng.uniform() < 0.3:
+            pass_C, pass_s = rng.uniform(0.25, 0.45), 60 * int(rng.integers(4, 9))
+            steps.append(f"Discharge at {pass_C:.3f}C for {pass_s} seconds")
+            taken += pass_C * pass_s
+            used += pass_s
+        charge_s = int(round(taken / charge_C))
+        steps.append(f"Charge at {charge_C}C for {charge_s} seconds")
+        steps.append(f"Rest for {95 * 60 - used - charge_s} seconds")
+    return steps
+
+
+def harbour_tug_job_steps(seed, ships):
+    """A battery-electric harbour tug's work per cell (discharge positive), for each of `ships` ships
+    it helps to berth: the transit out to meet the ship (0.5-0.8C for 4-8 min), escorting it in at
+    its speed (0.2-0.3C for 2-5 min), 3-5 pushes against its hull (1.6-2.3C for 40-110 s) with
+    holding on the rope between them (0.15-0.3C for 30-90 s), the transit back (0.5-0.7C for 4-7 min)
+    and waiting at the tug berth (the wheelhouse, 0.02C for 3-5 min)."""
+    rng = np.random.default_rng(seed)
+    steps = []
+    for _ in range(ships):
+        steps += [f"Discharge at {rng.uniform(0.5, 0.8):.2f}C for {60 * int(rng.integers(4, 9))} seconds",
+                  f"Discharge at {rng.uniform(0.2, 0.3):.3f}C for {60 * int(rng.integers(2, 6))} seconds"]
+        for _ in range(int(rng.integers(3, 6))):
+            steps += [f"Discharge at {rng.uniform(1.6, 2.3):.2f}C for {int(rng.integers(40, 111))} seconds",
+                      f"Discharge at {rng.uniform(0.15, 0.3):.3f}C for {int(rng.integers(30, 91))} seconds"]
+        steps += [f"Discharge at {rng.uniform(0.5, 0.7):.2f}C for {60 * int(rng.integers(4, 8))} seconds",
+                  f"Discharge at 0.02C for {60 * int(rng.integers(3, 6))} seconds"]
+    return steps
+
+
+def mountain_hut_steps(seed, sun_blocks, evening_blocks):
+    """An off-grid mountain hut's battery bank per cell (discharge positive) from the early afternoon
+    into the evening: `sun_blocks` blocks of 6-12 min with the solar array charging through passing
+    clouds (sun: 0.25-0.45C charge; cloud: 0.03-0.08C charge, or in 30 % of clouds the kitchen's
+    dishwasher outrunning the array, 0.15-0.3C discharge), then `evening_blocks` blocks of 8-15 min of
+    the evening on the battery: the lights, the fridge and the wardens' radio (0.05-0.08C) with, in
+    60 % of blocks, the induction hob or the kettle for the guests' dinner (0.6-0.9C for 2-6 min) and,
+    in 30 %, the water pump (0.35-0.45C for 1-2 min)."""
+    rng = np.random.default_rng(seed)
+    steps = []
+    for _ in range(sun_blocks):
+        u = rng.uniform()
+        seconds = 60 * int(rng.integers(6, 13))
+        if u < 0.5:
+            steps.append(f"Charge at {rng.uniform(0.25, 0.45):.3f}C for {seconds} seconds")
+        elif u < 0.85:
+            steps.append(f"Charge at {rng.uniform(0.03, 0.08):.3f}C for {seconds} seconds")
+        else:
+            steps.append(f"Discharge at {rng.uniform(0.15, 0.3):.3f}C for {seconds} seconds")
+    for _ in range(evening_blocks):
+        left = 60 * int(rng.integers(8, 16))
+        if rng.uniform() < 0.6:
+            hob = 60 * int(rng.integers(2, 7))
+            steps.append(f"Discharge at {rng.uniform(0.6, 0.9):.2f}C for {hob} seconds")
+            left -= hob
+        if rng.uniform() < 0.3:
+            pump = 60 * int(rng.integers(1, 3))
+            steps.append(f"Discharge at {rng.uniform(0.35, 0.45):.2f}C for {pump} seconds")
+            left -= pump
+        if left > 0:
+            steps.append(f"Discharge at {rng.uniform(0.05, 0.08):.3f}C for {left} seconds")
+    return steps
+
+
+def pipeline_welder_steps(seed, joints):
+    """A battery-powered welding power source on a pipeline spread per cell (discharge positive), for
+    each of `joints` girth welds: the root pass in 3-5 arcs (1.3-1.7C for 40-100 s) with the welder
+    idling between them while the bead is ground (0.03C for 15-40 s), the hot and fill passes in 2-3
+    longer arcs (1.4-1.8C for 60-120 s, same pauses), then the crew moving the shelter to the next
+    joint with the machine on standby (0.01C for 4-8 min)."""
+    rng = np.random.default_rng(seed)
+    steps = []
+    for _ in range(joints):
+        for _ in range(int(rng.integers(3, 6))):
+            steps += [f"Discharge at {rng.uniform(1.3, 1.7):.2f}C for {int(rng.integers(40, 101))} seconds",
+                      f"Discharge at 0.03C for {int(rng.integers(15, 41))} seconds"]
+        for _ in range(int(rng.integers(2, 4))):
+            steps += [f"Discharge at {rng.uniform(1.4, 1.8):.2f}C for {int(rng.integers(60, 121))} seconds",
+                      f"Discharge at 0.03C for {int(rng.integers(15, 41))} seconds"]
+        steps.append(f"Discharge at 0.01C for {60 * int(rng.integers(4, 9))} seconds")
+    return steps
+
+
+def ambulance_shift_steps(seed, calls):
+    """An electric ambulance's shift per cell (discharge positive), for each of `calls` calls after the
+    first: the patient handed over in the hospital's bay with the compartment's air conditioning and the
+    medical equipment on (0.08-0.12C for 10-20 min), the drive back to the station (4-7 stretches, each
+    a pull-away at 1.1-1.5C for 6-12 s, town driving at 0.4-0.7C for 40-120 s and regenerative braking at
+    0.3-0.6C charge for 4-8 s), standby at the station (0.03C for 10-25 min), then the next emergency run
+    with the blue lights (6-10 stretches, each an acceleration at 1.4-1.9C for 8-15 s, driving at
+    0.8-1.2C for 30-90 s and braking with regeneration at 0.5-0.8C charge for 4-8 s)."""
+    rng = np.random.default_rng(seed)
+    steps = []
+    for k in range(calls):
+        steps.append(f"Discharge at {rng.uniform(0.08, 0.12):.3f}C for {60 * int(rng.integers(10, 21))} seconds")
+        for _ in range(int(rng.integers(4, 8))):
+            steps += [f"Discharge at {rng.uniform(1.1, 1.5):.2f}C for {int(rng.integers(6, 13))} seconds",
+                      f"Discharge at {rng.uniform(0.4, 0.7):.2f}C for {int(rng.integers(40, 121))} seconds",
+                      f"Charge at {rng.uniform(0.3, 0.6):.2f}C for {int(rng.integers(4, 9))} seconds"]
+        steps.append(f"Discharge at 0.03C for {60 * int(rng.integers(10, 26))} seconds")
+        if k < calls - 1:
+            for _ in range(int(rng.integers(6, 11))):
+                steps += [f"Discharge at {rng.uniform(1.4, 1.9):.2f}C for {int(rng.integers(8, 16))} seconds",
+                          f"Discharge at {rng.uniform(0.8, 1.2):.2f}C for {int(rng.integers(30, 91))} seconds",
+                          f"Charge at {rng.uniform(0.5, 0.8):.2f}C for {int(rng.integers(4, 9))} seconds"]
+    return steps
+
+
+def street_sweeper_route_steps(seed, streets):
+    """An electric compact street sweeper's early-morning route per cell (discharge positive), for each
+    of `streets` streets: sweeping along the kerb with the brushes and the suction fan (0.6-0.9C for
+    3-6 min) with, in 50 % of streets, the fan boosted through a drift of leaves (1.1-1.4C for 20-40
+    s); the transit to the next street (0.4-0.6C for 60-120 s); every fourth street the hopper emptied
+    into a skip by its hydraulic lift (1.3-1.7C for 15-25 s) and the sweeper stopped while the driver
+    refills the water tank (0.02C for 3-5 min)."""
+    rng = np.random.default_rng(seed)
+    steps = []
+    for k in range(streets):
+        sweep = 60 * int(rng.integers(3, 7))
+        if rng.uniform() < 0.5:
+            first = int(rng.integers(30, sweep - 60))
+            boost = int(rng.integers(20, 41))
+            level = rng.uniform(0.6, 0.9)
+            steps += [f"Discharge at {level:.2f}C for {first} seconds",
+                      f"Discharge at {rng.uniform(1.1, 1.4):.2f}C for {boost} seconds",
+                      f"Discharge at {level:.2f}C for {sweep - first - boost} seconds"]
+        else:
+            steps.append(f"Discharge at {rng.uniform(0.6, 0.9):.2f}C for {sweep} seconds")
+        steps.append(f"Discharge at {rng.uniform(0.4, 0.6):.2f}C for {int(rng.integers(60, 121))} seconds")
+        if k % 4 == 3:
+            steps += [f"Discharge at {rng.uniform(1.3, 1.7):.2f}C for {int(rng.integers(15, 26))} seconds",
+                      f"Discharge at 0.02C for {60 * int(rng.integers(3, 6))} seconds"]
+    return steps
+
+
+def jetski_rental_steps(seed, rides):
+    """A rental electric personal watercraft's (jet ski's) afternoon per cell (discharge positive), for
+    each of `rides` customers' rides: idling out through the harbour's no-wake zone (0.15-0.25C for 2-4
+    min), 5-9 runs in the open bay, each a full-throttle sprint (2.0-2.7C for 15-45 s), cruising
+    (0.8-1.2C for 30-80 s) and a turn (0.3-0.5C for 5-15 s), idling back in (0.15-0.25C for 2-4 min),
+    and the craft tied at the dock while the next customer is briefed (no current, 5-10 min)."""
+    rng = np.random.default_rng(seed)
+    steps = []
+    for _ in range(rides):
+        steps.append(f"Discharge at {rng.uniform(0.15, 0.25):.3f}C for {60 * int(rng.integers(2, 5))} seconds")
+        for _ in range(int(rng.integers(5, 10))):
+            steps += [f"Discharge at {rng.uniform(2.0, 2.7):.2f}C for {int(rng.integers(15, 46))} seconds",
+                      f"Discharge at {rng.uniform(0.8, 1.2):.2f}C for {int(rng.integers(30, 81))} seconds",
+                      f"Discharge at {rng.uniform(0.3, 0.5):.2f}C for {int(rng.integers(5, 16))} seconds"]
+        steps += [f"Discharge at {rng.uniform(0.15, 0.25):.3f}C for {60 * int(rng.integers(2, 5))} seconds",
+                  f"Rest for {60 * int(rng.integers(5, 11))} seconds"]
+    return steps
+
+
+def batch_as(root, only=None):
+    """Forty-fourth batch (key "as"), made blind (a helper session that did not read the diagnosis code).
+    The Chen 2020 cell throughout, ambients -8, 0, 8, 15, 18, 26, 31 and 43 degC, each of the three models
+    (the candidate the data's model without the concealed physics), sampling from 0.5 to 30 s, noise
+    from 0.4 to 2 mV, and duties no earlier batch used: a legged (quadruped) inspection robot's patrol of a
+    chemical plant (a programmed current at 0.5 s knots, sampled every 0.5 s), a low-Earth-orbit
+    satellite battery's ground life test over 80 orbits (126.7 h), a battery-electric harbour tug with a
+    rapid charge at the quay in winter, an off-grid mountain hut's battery bank through a winter
+    afternoon and evening, a battery-powered welding power source on a desert pipeline, an electric
+    ambulance's shift logged from the hospital bay, an electric street sweeper's early-morning route, and
+    a rental electric jet ski's afternoon. An SPMe control; four single effects (SEI growth limited by
+    lithium-interstitial diffusion over 80 orbits, a growth law concealed once before; one-state
+    hysteresis of the negative OCP, +-15 mV, at -8 degC; the electrolyte's cation transference number
+    0.38 instead of the set's 0.2594, never concealed before; the positive's exchange current x0.5 alone)
+    and three pairs no earlier batch concealed together (8 % negative active-material loss with partially
+    reversible lithium plating in a cold rapid charge; an unrelaxed start, the log begun right after an
+    unrecorded run, with a 3 mOhm contact resistance; lumped self-heating, h = 12, temperature recorded,
+    with the current channel's 50 mA zero offset). Words as in batches ah-ar; the SEI by "SEI" or the
+    lithium words, as a1; the plating by "plating", as ar2; the transference number by "electrolyte" or
+    its own name; the hysteresis by "hysteresis", as ap4; the unrelaxed start by ar6's words; the current
+    offset by ar3's words. Each effect's size on its own (the nominal candidate, or a replay, against the
+    noise-free voltage or the recording) is in truth.json (effect_rmse_mV and the replay keys); every step
+    is time-limited (no voltage cut-off reached: the charges stay below 4.2 V), so the experiment-aligned
+    comparison needs no replay on the recorded current. `only` (a set of case keys, "as1" ...) makes
+    only those cases."""
+    at = at_temperature
+    run = lambda case: only is None or case in only
+    lithium_words = ["inventory", "lithium loss", "lithium lost", "cyclable"]
+    kinetic_words = ["kinetic", "exchange", "charge-transfer", "charge transfer", "reaction rate"]
+    contact_words = ["contact", "series resistance", "ohmic"]
+    thermal_words = ["thermal", "self-heating", "heat"]
+    unrelaxed_words = ["unrelaxed", "not relaxed", "recording condition", "history", "relaxing", "part-way", "partway", "not at rest"]
+    offset_words = ["current offset", "current bias", "current sensor", "current channel", "current measurement", "current zero",
+                    "zero offset", "leak", "self-discharge", "self discharge"]
+    # as1: control, a legged inspection robot's patrol, 18 degC, 0.5 s, 0.6 mV, SPMe
+    if run("as1"):
+        p = at(chen(), 18)
+        steps = ["Rest for 2 minutes", pybamm.step.current(quadruped_patrol_current(4401, 34)), "Rest for 15 minutes"]
+        write_case(root, "as1_control_quadruped_inspection_robot_patrol_18C_0p5s_0p6mV_spme", lion.SPMe(), p, steps,
+                   {"effect": "none", "candidate_model": "spme", "accept": ["no missing"], "ambient_temperature_K": 291.15,
+                    "note": "negative control at 18 degC (a chemical plant's process hall; isothermal, not recorded): SPMe data "
+                            "and model, nothing concealed. A legged (quadruped) inspection robot's patrol per cell from 95 % SOC: 2 "
+                            "min rest on its dock, the patrol as a programmed current at 0.5 s knots with ramps, no current step "
+                            "(quadruped_patrol_current seed 4401, 34 waypoints: standing up at 0.3C, walking at 0.7-1.0C for 20-90 s "
+                            "with a gait ripple of 0.08C from knot to knot, in 30 % of waypoints a steel staircase at 1.8-2.4C for "
+                            "8-20 s, standing to scan gauges at 0.10-0.15C for 20-60 s, in 25 % a valve turned by the arm at "
+                            "0.35-0.5C for 5-12 s; lying down at 0.02C), 15 min rest; 1.2 h, down to about 39 % (counted in the "
+                            "set's 5 A h); sampled every 0.5 s (the robot's own log), 0.6 mV noise; SPMe data and model"},
+                   initial_soc=0.95, seed=4401, period=0.5, noise=6e-4, compare=lion.SPMe())
+    # as2: SEI growth limited by lithium-interstitial diffusion (x8000) over 80 orbits, a LEO satellite battery's ground life
+    # test, 15 degC, 30 s, 0.8 mV, SPMe
+    if run("as2"):
+        p = at(scaled(chen(), "SEI lithium interstitial diffusivity [m2.s-1]", 8000.0), 15)
+        steps = leo_orbit_steps(4402, 80, charge_C=0.4)
+        write_case(root, "as2_sei_interstitial_diffusion_x8000_80_leo_orbits_life_test_15C_30s_0p8mV_spme",
+                   lion.SPMe(options={"SEI": "interstitial-diffusion limited"}), p, steps,
+                   {"effect": "sei_growth", "candidate_model": "spme", "accept": ["SEI"] + lithium_words, "ambient_temperature_K": 288.15,
+                    "note": "SEI growth limited by the diffusion of lithium interstitials through the film (PyBaMM "
+                            "'interstitial-diffusion limited', distributed film resistance; SEI lithium interstitial diffusivity "
+                            "x8000, 8e-17 m2/s instead of Chen 2020's 1e-20: a cell from a lot whose formation left a poorly "
+                            "passivating SEI; the film's other parameters Chen 2020's): 0.0038 mol of lithium (0.103 A h, 2.1 % of the "
+                            "set's 5 A h) lost to the SEI over the 80 orbits, fastest at first (parabolic growth: 0.031 A h after 10 "
+                            "orbits, 0.046 after 20, 0.070 after 40). A lithium-inventory loss growing through the recording is "
+                            "the SEI's nearest stand-in and is accepted. A low-Earth-orbit satellite's battery in a ground life "
+                            "test in a thermal chamber at 15 degC (isothermal, not recorded), per cell from 75 % SOC, 80 orbits of "
+                            "95 min with no rest before (leo_orbit_steps seed 4402: the eclipse on the battery at 0.32-0.40C for "
+                            "33-36 min, in 30 % of orbits a payload pass in sunlight at 0.25-0.45C for 4-8 min, the charge at 0.4C "
+                            "for as long as puts back what the eclipse and the pass took, time-limited, then idle on the shunt "
+                            "regulator, no current, for the rest of the orbit), the state of charge swinging between about 75 and "
+                            "47-54 % (counted in the set's 5 A h; the SEI takes its lithium out of that); 126.7 h; sampled every 30 s "
+                            "(the test rig's housekeeping rate), 0.8 mV noise; the charges end at 4.14 V at most; SPMe (with SEI) data "
+                            "handed to the plain SPMe. "
+                            "effect_rmse_mV is what the SEI (its lithium loss and its film) does"},
+                   initial_soc=0.75, seed=4402, period=30, noise=8e-4, compare=lion.SPMe())
+    # as3: pair, 8 % negative active-material loss and partially reversible lithium plating in a cold rapid charge, a harbour
+    # tug, 0 degC, 5 s, 1.2 mV, DFN
+    if run("as3"):
+        def tug_cell(lam):
+            q = with_okane2022(scaled(chen(), "Negative electrode active material volume fraction", lam), PLATING_KEYS)
+            return at(q, 0)
+        plating_model = lambda: lion.DFN(options={"lithium plating": "partially reversible"})
+        rapid = ["Charge at 2C for 360 seconds", "Charge at 1.5C for 300 seconds", "Charge at 0.8C for 300 seconds"]
+        steps = (["Rest for 5 minutes"] + harbour_tug_job_steps(4403, 2) + ["Rest for 3 minutes"] + rapid + ["Rest for 3 minutes"]
+                 + harbour_tug_job_steps(44030, 1) + ["Rest for 20 minutes"])
+        name = "as3_lam_negative_8pct_and_plating_harbour_tug_cold_rapid_charge_0C_5s_1p2mV_dfn"
+        write_case(root, name, plating_model(), tug_cell(0.92), steps,
+                   {"effect": "active_material_loss+lithium_plating", "candidate_model": "dfn", "accept": ["active material", "plating"],
+                    "ambient_temperature_K": 273.15,
+                    "note": "two effects, as an aged graphite gives: 8 % loss of negative active material (volume fraction 0.75 -> "
+                            "0.69, the set's initial concentrations, so the lithium of the lost material goes with it; the initial "
+                            "state set as 80 % SOC of the aged cell) and partially reversible lithium plating (PyBaMM 'partially "
+                            "reversible', OKane2022's plating parameters as they are: rate constant 1e-9 m/s, transfer coefficient "
+                            "0.65, dead-lithium decay constant 1e-6 1/s) in a cold rapid charge at 0 degC (a harbour in winter, the "
+                            "pack not preconditioned; isothermal, not recorded), the lost graphite making the rest plate sooner: "
+                            "the rapid charge plates up to 0.0028 mol (0.075 A h), "
+                            "nearly all of it stripped again in the rest and the work after it (3e-6 mol left at the end). A "
+                            "battery-electric harbour tug per cell from 80 % SOC: 5 min rest, 2 ships berthed "
+                            "(harbour_tug_job_steps seed 4403: the transit out at 0.5-0.8C for 4-8 min, escorting the ship in at "
+                            "0.2-0.3C for 2-5 min, 3-5 pushes against its hull at 1.6-2.3C for 40-110 s with holding on the rope at "
+                            "0.15-0.3C for 30-90 s between them, the transit back at 0.5-0.7C for 4-7 min, waiting at the berth at "
+                            "0.02C for 3-5 min), 3 min rest (plugging in), the shore charger's rapid charge stepping down (2C for 6 "
+                            "min, 1.5C for 5 min, 0.8C for 5 min, time-limited, up to 4.19 V at most), 3 min rest, 1 ship more "
+                            "(seed 44030), 20 min rest; 2.2 h, down to about 16 %, up to about 56 %, down to about 25 % (counted "
+                            "in the set's 5 A h); sampled every 5 s, 1.2 mV noise; DFN data and model. dfn_lam_only_rmse_mV: the DFN with "
+                            "the loss alone against the recording (what the plating leaves); dfn_plating_only_rmse_mV: the plating "
+                            "DFN with the set's graphite (what the loss leaves)"},
+                   initial_soc=0.8, seed=4403, period=5, noise=1.2e-3, compare=lion.DFN())
+        replay_rmse(root, name, lion.DFN(), tug_cell(0.92), steps, 0.8, "dfn_lam_only_rmse_mV", period=5)
+        replay_rmse(root, name, plating_model(), tug_cell(1.0), steps, 0.8, "dfn_plating_only_rmse_mV", period=5)
+    # as4: one-state hysteresis of the negative OCP, +-15 mV, an off-grid mountain hut's battery bank, -8 degC, 20 s, 1.2 mV, SPM
+    if run("as4"):
+        p = at(chen(), -8)
+        with_negative_hysteresis(p, 0.015)
+        steps = ["Rest for 10 minutes"] + mountain_hut_steps(4404, 9, 7) + ["Rest for 20 minutes"]
+        write_case(root, "as4_hysteresis_negative_15mV_off_grid_mountain_hut_minus8C_20s_1p2mV_spm",
+                   lion.SPM(options={"open-circuit potential": ("one-state hysteresis", "single")}), p, steps,
+                   {"effect": "hysteresis", "candidate_model": "spm", "accept": ["hysteresis"], "ambient_temperature_K": 265.15,
+                    "note": "one-state OCV hysteresis of the negative electrode, lithiation and delithiation OCPs 15 mV "
+                            "either side of the set's (decay rate 10, initial state 0, the middle; the SiOx in the LG M50's "
+                            "graphite), the positive without, at -8 degC (the hut's unheated battery room in winter; isothermal, "
+                            "not recorded). An off-grid mountain hut's battery bank per cell from 55 % SOC: 10 min rest, the "
+                            "afternoon in 9 blocks of 6-12 min (mountain_hut_steps seed 4404: the solar array charging through "
+                            "passing clouds, sun at 0.25-0.45C charge, cloud at 0.03-0.08C charge or, in 30 % of clouds, the "
+                            "kitchen's dishwasher outrunning the array at 0.15-0.3C discharge), then the evening in 7 blocks of "
+                            "8-15 min (the lights, the fridge and the wardens' radio at 0.05-0.08C, in 60 % of blocks the "
+                            "induction hob or the kettle for the guests' dinner at 0.6-0.9C for 2-6 min, in 30 % the water pump at "
+                            "0.35-0.45C for 1-2 min), 20 min rest; 3.05 h, up to about 69 % in the afternoon and down to "
+                            "about 47 % in the evening (counted in the set's 5 A h); sampled every 20 s (the charge controller's "
+                            "log), 1.2 mV noise; SPM (one-state hysteresis) data handed to the plain SPM. effect_rmse_mV is what "
+                            "the hysteresis alone does"},
+                   initial_soc=0.55, seed=4404, period=20, noise=1.2e-3, compare=lion.SPM())
+    # as5: cation transference number 0.38 instead of 0.2594 (another electrolyte), a pipeline welding power source, 43 degC,
+    # 2 s, 0.4 mV, DFN
+    if run("as5"):
+        p = at(chen(), 43)
+        p.update({"Cation transference number": 0.38})
+        steps = ["Rest for 5 minutes"] + pipeline_welder_steps(4405, 3) + ["Rest for 20 minutes"]
+        write_case(root, "as5_electrolyte_transference_number_0p38_pipeline_welder_43C_2s_0p4mV_dfn", lion.DFN(), p, steps,
+                   {"effect": "electrolyte_transport", "candidate_model": "dfn", "accept": ["electrolyte", "transference"],
+                    "ambient_temperature_K": 316.15,
+                    "note": "the electrolyte's cation transference number 0.38 instead of the set's 0.2594 (the cell filled "
+                            "with a second-source electrolyte), so the salt's concentration gradients under load, and their "
+                            "relaxation after it, differ from the set's; the electrolyte's conductivity and diffusivity are the "
+                            "set's. Judged by the electrolyte words (or 'transference'). At 43 degC (a pipeline spread in a desert "
+                            "in summer, the machine in the sun; isothermal, not recorded). A battery-powered welding power source "
+                            "per cell from 95 % SOC: 5 min rest, 3 girth welds (pipeline_welder_steps seed 4405: the root pass in "
+                            "3-5 arcs at 1.3-1.7C for 40-100 s, the hot and fill passes in 2-3 arcs at 1.4-1.8C for 60-120 s, the "
+                            "welder idling at 0.03C for 15-40 s between arcs while the bead is ground, then standby at 0.01C for 4-8 "
+                            "min while the shelter is moved to the next joint), 20 min rest; 1.3 h, down to about 33 % (counted "
+                            "in the set's 5 A h); sampled every 2 s, "
+                            "0.4 mV noise (a quiet channel); DFN data and model. effect_rmse_mV is what the transference number "
+                            "alone does"},
+                   initial_soc=0.95, seed=4405, period=2, noise=4e-4, compare=lion.DFN())
+    # as6: pair, the log starts right after an unrecorded emergency run (the cell not relaxed) and a 3 mOhm contact resistance,
+    # an electric ambulance's shift, 31 degC, 4 s, 1 mV, SPMe
+    if run("as6"):
+        def ambulance_cell(contact):
+            q = at(chen(), 31)
+            q.update({"Contact resistance [Ohm]": contact}, check_already_exists=False)
+            return q
+        contact_model = lambda: lion.SPMe(options={"contact resistance": "true"})
+        steps = ["Discharge at 1.3C for 12 minutes"] + ambulance_shift_steps(4406, 2) + ["Rest for 20 minutes"]
+        name = "as6_unrelaxed_start_and_contact_3mOhm_ambulance_shift_31C_4s_spme"
+        write_case(root, name, contact_model(), ambulance_cell(0.003), steps,
+                   {"effect": "unrelaxed_start+contact_resistance", "candidate_model": "spme",
+                    "accept": ["|".join(unrelaxed_words), "|".join(contact_words)], "ambient_temperature_K": 304.15,
+                    "note": "two effects: a recording condition, the log (the ambulance's data recorder, read out after the "
+                            "shift) starts as the ambulance stops in the hospital's bay, 1e-13 s after an unrecorded emergency run "
+                            "(1.3C for 12 min, 90 -> 64 % SOC), so the cell starts the recording with the run's concentration "
+                            "gradients, the voltage relaxing by tens of mV in the first minutes; and a 3 mOhm contact "
+                            "resistance (a loose, corroded module busbar bolt: about 23 mV at 1.5C). At 31 degC (a "
+                            "summer day; isothermal, not recorded). Recorded (an electric ambulance's shift per cell): 2 calls "
+                            "(ambulance_shift_steps seed 4406: the patient handed over in the bay with the compartment's air "
+                            "conditioning and the medical equipment at 0.08-0.12C for 10-20 min, the drive back in 4-7 stretches "
+                            "of a pull-away at 1.1-1.5C for 6-12 s, town driving at 0.4-0.7C for 40-120 s and regenerative braking at "
+                            "0.3-0.6C charge for 4-8 s, standby at the station at 0.03C for 10-25 min, then, after the first call "
+                            "only, the next emergency run in 6-10 stretches of an acceleration at 1.4-1.9C for 8-15 s, driving at "
+                            "0.8-1.2C for 30-90 s and braking at 0.5-0.8C charge for 4-8 s), 20 min rest; 1.9 h recorded, down to about "
+                            "26 % (counted in the set's 5 A h); sampled every 4 s, 1 mV noise; SPMe (with contact resistance) data "
+                            "handed to the plain SPMe. candidate_rmse_mV "
+                            "runs the same unrecorded run on the plain SPMe (what the contact resistance leaves); "
+                            "spme_contact_only_rmse_mV is the contact-resistance SPMe started at rest, its initial SOC the best of "
+                            "62.75-65.75 % in 0.25 % steps (what the unrelaxed start leaves when the initial SOC is fitted)"},
+                   initial_soc=0.9, seed=4406, period=4, compare=lion.SPMe(), skip_steps=1)
+        best = None
+        for soc in np.arange(0.6275, 0.65751, 0.0025):
+            replay_rmse(root, name, contact_model(), ambulance_cell(0.003), steps[1:], float(soc), "spme_contact_only_rmse_mV", period=4)
+            with open(os.path.join(root, name, "truth.json")) as f:
+                truth = json.load(f)
+            if best is None or truth["spme_contact_only_rmse_mV"] < best[0]:
+                best = (truth["spme_contact_only_rmse_mV"], round(float(soc), 4))
+        truth["spme_contact_only_rmse_mV"], truth["spme_contact_only_best_initial_soc"] = best
+        with open(os.path.join(root, name, "truth.json"), "w") as f:
+            json.dump(truth, f, indent=1)
+        print(f"  {name}: spme_contact_only_rmse_mV (best) = {best[0]} mV at SOC {best[1]}")
+    # as7: positive exchange current x0.5 (a resistive surface layer on the NMC), an electric street sweeper's early route,
+    # 8 degC, 1 s, 1.8 mV, SPM
+    if run("as7"):
+        p = at(scaled(chen(), "Positive electrode exchange-current density [A.m-2]", 0.5), 8)
+        steps = ["Rest for 5 minutes"] + street_sweeper_route_steps(4407, 10) + ["Rest for 15 minutes"]
+        write_case(root, "as7_exchange_current_positive_x0p5_street_sweeper_early_route_8C_1s_1p8mV_spm", lion.SPM(), p, steps,
+                   {"effect": "kinetics", "candidate_model": "spm", "accept": kinetic_words, "ambient_temperature_K": 281.15,
+                    "note": "the positive electrode's exchange-current density x0.5 (a rock-salt surface layer grown on the "
+                            "NMC 811 particles in storage at high SOC slowing its charge transfer), the negative's the set's, at 8 "
+                            "degC (a town centre before dawn in spring; isothermal, not recorded). An electric compact street "
+                            "sweeper's early-morning route per cell from 90 % SOC: 5 min rest, 10 streets "
+                            "(street_sweeper_route_steps seed 4407: sweeping along the kerb with the brushes and the suction fan at "
+                            "0.6-0.9C for 3-6 min, in 50 % of streets the fan boosted through a drift of leaves at 1.1-1.4C for "
+                            "20-40 s, the transit to the next street at 0.4-0.6C for 60-120 s, every fourth street the hopper "
+                            "emptied by its hydraulic lift at 1.3-1.7C for 15-25 s and the water tank refilled at 0.02C for 3-5 "
+                            "min), 15 min rest; 1.6 h, down to about 15 % (counted in the set's 5 A h); "
+                            "sampled every 1 s, 1.8 mV noise (a noisy channel beside the "
+                            "brush motors' drives); SPM data and model. effect_rmse_mV is what the slower positive charge "
+                            "transfer alone does"},
+                   initial_soc=0.9, seed=4407, period=1, noise=1.8e-3, compare=lion.SPM())
+    # as8: pair, lumped self-heating (h = 12, temperature recorded) and the current channel's zero offset, 50 mA, a rental
+    # electric jet ski, 26 degC, 10 s, 2 mV, SPMe
+    if run("as8"):
+        off = 0.05
+        def jetski_cell():
+            q = at(chen(), 26)
+            q.update({"Total heat transfer coefficient [W.m-2.K-1]": 12.0})
+            return q
+        duty = ["Rest for 600 seconds"] + jetski_rental_steps(4408, 3) + ["Rest for 1200 seconds"]
+        true, seen = with_leak(duty, 0.0), with_leak(duty, off)
+        name = "as8_thermal_h12_recorded_and_current_offset_50mA_rental_jet_ski_26C_10s_2mV_spme"
+        write_case(root, name, lion.SPMe(options={"thermal": "lumped"}), jetski_cell(), true,
+                   {"effect": "thermal+current_offset", "candidate_model": "spme",
+                    "accept": ["|".join(thermal_words), "|".join(offset_words)], "ambient_temperature_K": 299.15,
+                    "note": "two effects: lumped self-heating, h = 12 W/(m2 K) (the cells in a sealed box in the hull; "
+                            "ambient and initial 26 degC, a bay in summer), the temperature recorded (the craft's battery "
+                            "management, 0.05 K noise): the cell warms from 26 to about 41 degC in the sprints; and the battery "
+                            "management reading the current 50 mA "
+                            "high (a Hall-effect sensor's zero offset: the recorded current is the cell's plus 50 mA of "
+                            "discharge, at rest too, where it records that while none flows; not a cell property; over the "
+                            "afternoon the logger counts 0.09 A h, 1.8 %, more charge out than the cell gave). A current "
+                            "offset is a leak of the opposite sign, so the leak words are accepted beside the current-channel "
+                            "words, as ar3. A rental electric personal watercraft's (jet ski's) afternoon per cell from 95 % "
+                            "SOC: 10 min rest, 3 customers' rides (jetski_rental_steps seed 4408: idling out through the no-wake "
+                            "zone at 0.15-0.25C for 2-4 min, 5-9 runs in the open bay, each a full-throttle sprint at 2.0-2.7C for "
+                            "15-45 s, cruising at 0.8-1.2C for 30-80 s and a turn at 0.3-0.5C for 5-15 s, idling back in at "
+                            "0.15-0.25C for 2-4 min, tied at the dock while the next customer is briefed, no current, 5-10 min), "
+                            "20 min rest; 1.8 h, down to about 15 % (the cell's own current, counted in the set's 5 A h); sampled every 10 s "
+                            "(the craft's telematics), 2 mV noise; SPMe (lumped thermal) data handed to the isothermal SPMe. "
+                            "spme_thermal_only_rmse_mV: the lumped SPMe on the recorded current's protocol against the recording "
+                            "(what the offset leaves); spme_offset_only_rmse_mV: the isothermal SPMe carrying the cell's own "
+                            "current (what the self-heating leaves)"},
+                   initial_soc=0.95, seed=4408, period=10, noise=2e-3, compare=lion.SPMe(), leak_A=-off, compare_steps=seen,
+                   temperature=True)
+        replay_rmse(root, name, lion.SPMe(options={"thermal": "lumped"}), jetski_cell(), seen, 0.95, "spme_thermal_only_rmse_mV", period=10)
+        replay_rmse(root, name, lion.SPMe(), at(chen(), 26), true, 0.95, "spme_offset_only_rmse_mV", period=10)
+
+
+BATCHES = {"u": batch_u, "v": batch_v, "w": batch_w, "x": batch_x, "y": batch_y, "z": batch_z, "q": batch_q, "r": batch_r, "s": batch_s, "t": batch_t, "p": batch_p, "o": batch_o, "n": batch_n, "m": batch_m, "l": batch_l, "k": batch_k, "j": batch_j, "i": batch_i, "h": batch_h, "f": batch_f, "e": batch_e, "g": batch_g, "d": batch_d, "c": batch_c, "a": batch_a, "b": batch_b, "ab": batch_ab, "ac": batch_ac, "ad": batch_ad, "ae": batch_ae, "af": batch_af, "ag": batch_ag, "ah": batch_ah, "ai": batch_ai, "aj": batch_aj, "ak": batch_ak, "ak7d": remake_ak7, "al": batch_al, "am": batch_am, "an": batch_an, "ao": batch_ao, "ap": batch_ap, "aq": batch_aq, "ar": batch_ar, "as": batch_as}
 
 if __name__ == "__main__":
     root = sys.argv[1] if len(sys.argv) > 1 else "out/unseen-cases"
