@@ -1785,7 +1785,67 @@ fn ar7_positive_active_material_loss_and_conductivity_on_a_tow_boat_dfn() {
 }
 
 #[test]
-#[ignore = "fails (open): a graphite + 1.1 % silicon negative beside 7 % lithium lost, SPM, 2 mV noise; round 1 names the lithium loss (24.45 -> 5.01 mV), round 2 a 6 % negative active-material loss (-> 3.11 mV), round 3 stops below the 2.08 mV a named effect must remove; the second negative material ranked third in round 1 and was never named"]
+#[ignore = "blind batch ar: CI skips it; run with --include-ignored"]
 fn ar8_silicon_composite_negative_and_lithium_loss_at_a_market_stall_spm() {
-    run_case("diagnosis-extra/ar8_silicon_composite_negative_and_inventory_7pct_christmas_market_stall_4C_15s_2mV_spm");
+    // Missed at first sight (thirty-seventh session): the second material fitted best but its
+    // width ran to the 5 mV floor of its search and was refused. On its floor (now 1 mV) a
+    // width is a flat plateau; the fit settles at 2.4 +- 1.3 mV and says the lithium lost.
+    // Truth: 1.1 % silicon (c_max 278000) beside graphite at 0.66 (33133) holds 12.3 % of
+    // the sites; 7 % of the lithium lost from the composite cell's.
+    let rounds = run_case("diagnosis-extra/ar8_silicon_composite_negative_and_inventory_7pct_christmas_market_stall_4C_15s_2mV_spm");
+    assert_eq!(rounds[0].best().map(|c| c.candidate), Some(Candidate::SecondMaterialNegative), "{}", rounds[0].summary);
+    let share = first_fitted(&rounds, "negative.second_phase_share");
+    assert!((share - 0.123).abs() < 0.03, "share {share:.3}");
+}
+
+// Blind batch as (thirty-eighth session, helper-made with `scripts/make_unseen_cases.py`, judged
+// once by `../shared/tools/diagnosis-bench` on the binary of e16dd40 before the truths were
+// read): 7 of 8 at first sight; as3 is open (see its reason and `docs/diagnosis-cases.md`).
+
+#[test]
+#[ignore = "blind batch as: CI skips it; run with --include-ignored"]
+fn as1_negative_control_of_an_inspection_robot_patrol_spme() {
+    run_case("diagnosis-extra/as1_control_quadruped_inspection_robot_patrol_18C_0p5s_0p6mV_spme");
+}
+
+#[test]
+#[ignore = "blind batch as: CI skips it; run with --include-ignored"]
+fn as2_sei_growth_over_eighty_satellite_orbits_spme() {
+    run_case("diagnosis-extra/as2_sei_interstitial_diffusion_x8000_80_leo_orbits_life_test_15C_30s_0p8mV_spme");
+}
+
+#[test]
+#[ignore = "fails (open): 8 % negative active-material loss + partially reversible plating in a cold stepped rapid charge of a harbour tug, DFN; round 1 names a tie of lithium loss and a 7 % negative LAM (18.70 -> 6.01 mV, noise 1.29), then unexplained: off by -38 mV at rest after charges (the plated lithium stripping). The plating candidates are offered only over three cycles, as in ar2"]
+fn as3_negative_lam_and_plating_in_a_cold_harbour_tug_charge_dfn() {
+    run_case("diagnosis-extra/as3_lam_negative_8pct_and_plating_harbour_tug_cold_rapid_charge_0C_5s_1p2mV_dfn");
+}
+
+#[test]
+#[ignore = "blind batch as: CI skips it; run with --include-ignored"]
+fn as4_negative_hysteresis_in_a_mountain_hut_spm() {
+    run_case("diagnosis-extra/as4_hysteresis_negative_15mV_off_grid_mountain_hut_minus8C_20s_1p2mV_spm");
+}
+
+#[test]
+#[ignore = "blind batch as: CI skips it; run with --include-ignored"]
+fn as5_a_transference_number_in_a_pipeline_welder_dfn() {
+    run_case("diagnosis-extra/as5_electrolyte_transference_number_0p38_pipeline_welder_43C_2s_0p4mV_dfn");
+}
+
+#[test]
+#[ignore = "blind batch as: CI skips it; run with --include-ignored"]
+fn as6_unrelaxed_start_and_contact_on_an_ambulance_shift_spme() {
+    run_case("diagnosis-extra/as6_unrelaxed_start_and_contact_3mOhm_ambulance_shift_31C_4s_spme");
+}
+
+#[test]
+#[ignore = "blind batch as: CI skips it; run with --include-ignored"]
+fn as7_positive_kinetics_on_a_street_sweeper_route_spm() {
+    run_case("diagnosis-extra/as7_exchange_current_positive_x0p5_street_sweeper_early_route_8C_1s_1p8mV_spm");
+}
+
+#[test]
+#[ignore = "blind batch as: CI skips it; run with --include-ignored"]
+fn as8_self_heating_and_current_offset_on_a_rental_jet_ski_spme() {
+    run_case("diagnosis-extra/as8_thermal_h12_recorded_and_current_offset_50mA_rental_jet_ski_26C_10s_2mV_spme");
 }
