@@ -75,11 +75,10 @@ pub(super) const ENTROPIC_SEARCH: (f64, f64) = (-2.0, 4.0);
 pub(super) const ENTROPIC_PLAUSIBLE: (f64, f64) = (0.0, 3.0);
 
 /// The second-material candidates' searches: the share of the electrode's sites (-), where
-/// the material fills (V vs Li, per electrode) and how broadly (V); plausible shares. The
-/// width's floor, 1 mV, is narrower than a recording's noise resolves: a fit that ends there
-/// describes a flat two-phase plateau (graphite's stages, LFP, crystalline silicon's first
-/// lithiation), a physical limit of the logistic, not a stand-in; a fit at its 0.5 V ceiling
-/// describes a slope spread over the whole window, which any OCP mismatch gives.
+/// the material fills (V vs Li, per electrode) and how broadly (V); plausible shares. A width
+/// of a few mV is a flat two-phase plateau (graphite's stages, LFP, crystalline silicon's
+/// first lithiation; blind ar8 fits 2.4 mV): the floor, 1 mV, lies below it, and a fit that
+/// runs to either end of the search has not estimated the width (refused).
 pub(super) const SECOND_SHARE: (f64, f64, f64) = (0.15, 0.0, 0.5);
 pub(super) const SECOND_SHARE_PLAUSIBLE: (f64, f64) = (0.005, 0.4);
 pub(super) const SECOND_POTENTIAL_NEGATIVE: (f64, f64, f64) = (0.3, 0.02, 1.2);
