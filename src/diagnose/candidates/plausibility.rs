@@ -2,6 +2,7 @@
 //! sampling, and the name they give it (which electrode, how much, which way).
 
 use super::*;
+use crate::params::soc::LithiumLine;
 
 impl Candidate {
     /// The pairs of `names` and `values` that are this candidate's own (a pair of effects
@@ -183,14 +184,10 @@ impl Candidate {
                 let Some((share, u0, width)) = self.second_material_values(get) else { return self.name().to_string() };
                 // The fit balances the electrodes' lithium afresh with the material: a change
                 // of the cyclable lithium it found is part of what it says about the cell.
-                let lithium = match (get("negative.initial_concentration"), get("positive.initial_concentration")) {
-                    (Some(cn), Some(cp)) => {
-                        let change = lithium_change(cn, cp, base);
-                        let way = if change < 0.0 { "lost" } else { "gained" };
-                        (change.abs() >= LITHIUM_CHANGE_REPORTED).then(|| format!(", with {:.1} % of the cyclable lithium {way}", 100.0 * change.abs())).unwrap_or_default()
-                    }
-                    _ => String::new(),
-                };
+                let change = get("negative.initial_concentration").zip(get("positive.initial_concentration")).map(|(cn, cp)| lithium_change(cn, cp, base));
+                let lithium = change.filter(|c| c.abs() >= LITHIUM_CHANGE_REPORTED).map_or(String::new(), |c| {
+                    format!(", with {:.1} % of the cyclable lithium {}", 100.0 * c.abs(), if c < 0.0 { "lost" } else { "gained" })
+                });
                 format!("{}: {:.1} % of its sites filling around {u0:.3} V vs Li over about {:.0} mV{lithium}", self.name(), 100.0 * share, 1e3 * width)
             }
             Candidate::EntropicChange => {
@@ -227,12 +224,13 @@ impl Candidate {
     }
 }
 
-/// The change (-) of the cell's cyclable lithium, both electrodes' `eps L c` summed, when they
+/// The change (-) of the cell's cyclable lithium ([`LithiumLine::lithium`]) when its electrodes
 /// start at concentrations `cn` and `cp` (mol/m^3) against the set's (the same at any state
 /// of charge: a charge moves lithium between them).
 fn lithium_change(cn: f64, cp: f64, base: &ParameterSet) -> f64 {
-    let lithium = |a: f64, b: f64| base.negative.active_fraction * base.negative.thickness * a + base.positive.active_fraction * base.positive.thickness * b;
-    lithium(cn, cp) / lithium(base.negative.initial_concentration, base.positive.initial_concentration) - 1.0
+    let mut fitted = base.clone();
+    (fitted.negative.initial_concentration, fitted.positive.initial_concentration) = (cn, cp);
+    LithiumLine::of(&fitted).lithium() / LithiumLine::of(base).lithium() - 1.0
 }
 
 /// Samples after a current step over which [`step_sampling`] takes its median time step.
