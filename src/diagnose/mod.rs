@@ -31,6 +31,7 @@ pub mod candidates;
 pub mod features;
 pub mod locate;
 mod pairs;
+mod plating_gate;
 mod refine;
 mod refit_candidate;
 pub mod refit;
@@ -326,11 +327,18 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
             return Ok(d);
         }
     }
+    // Plating within one charge, where the fitted model itself plates (few cycles otherwise
+    // identify no plating).
+    let plating_seen = ageing::too_few_cycles(&features)
+        .and_then(|_| plating_gate::plating_in_a_charge(options.spec, base, &warm, &baseline.values, &data, &options.fit));
+    if let Some(seen) = &plating_seen {
+        notes.push(seen.note());
+    }
     let plan: Vec<(Candidate, Result<candidates::Augmentation, String>)> = Candidate::ALL
         .iter()
         .take(options.max_refits)
         .map(|&c| {
-            let aug = match c.not_identifiable(&data, &features, q) {
+            let aug = match c.not_identifiable(&data, &features, q).filter(|_| !(c.plates() && plating_seen.is_some())) {
                 _ if c == Candidate::UnrelaxedStart && options.fit.start_at_rest => Err("not refitted: the recording is taken to start at rest (--start-at-rest)".to_string()),
                 _ if no_room => Err(format!("not refitted: the user's model leaves {} RMS above the noise, less than the {} a named effect must remove", report::mv(room), report::mv(options.margins.size_floor(noise)))),
                 Some(why) => Err(format!("not identifiable from this recording: {why}")),

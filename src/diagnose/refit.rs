@@ -310,6 +310,19 @@ fn indicator(n: usize, keep: impl Fn(usize) -> bool) -> Vec<f64> {
     (0..n).map(|i| if keep(i) { 1.0 } else { 0.0 }).collect()
 }
 
+/// The problem that replays `data` with the model `spec` at `parameters`, solved and started
+/// as `settings` say.
+pub fn replay_problem(spec: ModelSpec, base: ParameterSet, parameters: Vec<FitParameter>, data: &Recording, settings: &FitSettings) -> Result<FittingProblem, Error> {
+    let mut problem = FittingProblem::new(spec, base, parameters, data.clone())?;
+    if let Some(tol) = settings.tolerance {
+        problem.solver.set_tolerance(tol);
+    }
+    if settings.start_at_rest {
+        problem = problem.starting_at_rest()?;
+    }
+    Ok(problem)
+}
+
 /// Fits `parameters` of the model `spec` on the training points of `data` from each of
 /// `starts` and scores the best. `structural` counts fixed parameters a structural change
 /// brought in.
@@ -327,13 +340,7 @@ pub fn fit_and_score(
 ) -> Result<FitOutcome, Error> {
     let start = std::time::Instant::now();
     let k = parameters.len();
-    let mut problem = FittingProblem::new(spec, base, parameters, data.clone())?.with_weights(split.train.clone())?;
-    if let Some(tol) = settings.tolerance {
-        problem.solver.set_tolerance(tol);
-    }
-    if settings.start_at_rest {
-        problem = problem.starting_at_rest()?;
-    }
+    let mut problem = replay_problem(spec, base, parameters, data, settings)?.with_weights(split.train.clone())?;
     // A heat balance is fitted to the recorded temperature too; a model that reads it has
     // nothing to fit there.
     let temperature_fitted = problem.spec.submodels.thermal && !problem.spec.recorded_temperature;

@@ -378,20 +378,33 @@ impl FittingProblem {
             builders: (0..=self.dim()).map(|_| self.spec.builder()).collect(),
             sensitivity_workspace: None,
         });
-        let result = if sensitivities { self.run_sensitivities(&mut worker, x, &p) } else { self.run_plain(&mut worker, x, &p) };
+        let result = if sensitivities { self.run_sensitivities(&mut worker, x, &p) } else { self.run_plain(&mut worker, x, &p, None) };
         self.pool.lock().expect("builder pool").push(worker);
         result
     }
 
-    fn run_plain(&self, worker: &mut Worker, x: &[f64], p: &ParameterSet) -> Result<Simulated, Error> {
+    /// The replay at `x`, handing `watch` the model, its whole state and the current (A) at
+    /// every output time: what the model does beyond its voltage (e.g. its plating margin).
+    pub fn replay_watching(&self, x: &[f64], watch: &mut dyn FnMut(&dyn Model, &[f64], f64)) -> Result<Simulated, Error> {
+        let p = self.parameters_at(x)?;
+        let mut worker = Worker { builders: vec![self.spec.builder()], sensitivity_workspace: None };
+        self.run_plain(&mut worker, x, &p, Some(watch))
+    }
+
+    /// The replay at `x`; with `watch`, every state is kept and handed to it.
+    fn run_plain(&self, worker: &mut Worker, x: &[f64], p: &ParameterSet, watch: Option<&mut dyn FnMut(&dyn Model, &[f64], f64)>) -> Result<Simulated, Error> {
         let built = worker.builders[0].build(p)?;
         let delayed = self.delayed(x);
-        let opts = self.options_with(p, delayed.as_ref());
+        let opts = SimOptions { keep_states: watch.is_some(), ..self.options_with(p, delayed.as_ref()) };
         let y0 = match self.history(x)? {
             Some(step) => Some(state_after(built.model.as_ref(), &mut built.workspace, &step, &opts)?),
             None => None,
         };
-        let sol = simulate(built.model.as_ref(), &mut built.workspace, &self.protocol, &opts, y0)?;
+        let model = built.model.as_ref();
+        let sol = match watch {
+            Some(watch) => simulate_observed(model, &mut built.workspace, &self.protocol, &opts, y0, &mut |y, i| watch(model, y, i))?,
+            None => simulate(model, &mut built.workspace, &self.protocol, &opts, y0)?,
+        };
         let voltage = self.at_points(&sol, delayed.as_ref())?;
         let temperature = match self.temperature_weight {
             Some(_) => self.output_of_point.iter().map(|&k| sol.temperature[delayed.as_ref().map_or(k, |d| d.plain_at[k])]).collect(),

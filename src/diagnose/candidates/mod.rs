@@ -349,6 +349,11 @@ impl Candidate {
         (matches!(self, Candidate::ElectrolyteTransport | Candidate::ElectrolyteConcentration) && kind == ModelKind::Spm).then_some(Candidate::Electrolyte)
     }
 
+    /// Whether this candidate is lithium plating (either law).
+    pub fn plates(self) -> bool {
+        matches!(self, Candidate::LithiumPlating | Candidate::LithiumPlatingPartial)
+    }
+
     /// Why the recording cannot identify this candidate, or `None` when it can; `q_nominal`
     /// is the cell's capacity (A h).
     pub fn not_identifiable(self, rec: &Recording, f: &Features, q_nominal: f64) -> Option<String> {
