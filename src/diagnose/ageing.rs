@@ -97,6 +97,12 @@ pub(super) fn too_few_cycles(f: &Features) -> Option<String> {
     (cycles < MIN_AGEING_CYCLES).then(|| format!("needs a recording over {MIN_AGEING_CYCLES} or more cycles (this one spans {cycles:.1} full swings of its charge)"))
 }
 
+/// Why the recording spans too few cycles for plating and the user's model does not plate
+/// within one of its charges ([`super::plating_gate`], which overrides it), or `None`.
+pub(super) fn too_few_cycles_to_plate(f: &Features) -> Option<String> {
+    too_few_cycles(f).map(|why| format!("{why}, or a charge with a rest or a discharge after it in which the user's fitted model plates (its plating margin at or below 0)"))
+}
+
 /// Why the recording can show neither cycle ageing nor calendar ageing (SEI growth), or
 /// `None`: SEI grows at rest too, so a storage rest of at least [`MIN_STORAGE_S`] with a load
 /// after it (the capacity check that shows the lithium lost) identifies it without cycles.

@@ -392,7 +392,7 @@ impl Candidate {
                 Some("needs current steps or loads at two or more rates".into())
             }
             Candidate::SeiGrowth | Candidate::SeiGrowthSeries => ageing::too_short_for_sei(f),
-            Candidate::LithiumPlating | Candidate::LithiumPlatingPartial => ageing::too_few_cycles(f),
+            Candidate::LithiumPlating | Candidate::LithiumPlatingPartial => ageing::too_few_cycles_to_plate(f),
             Candidate::ActiveMaterialGrowth | Candidate::ActiveMaterialThroughput => ageing::too_few_cycles(f).or_else(|| too_narrow(f, q_nominal)),
             // In one uninterrupted run a leak only rescales the charge passed (a capacity or
             // stoichiometry change); a rest, or charge and discharge both, sets it apart.
