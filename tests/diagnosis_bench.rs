@@ -1849,3 +1849,51 @@ fn as7_positive_kinetics_on_a_street_sweeper_route_spm() {
 fn as8_self_heating_and_current_offset_on_a_rental_jet_ski_spme() {
     run_case("diagnosis-extra/as8_thermal_h12_recorded_and_current_offset_50mA_rental_jet_ski_26C_10s_2mV_spme");
 }
+
+#[test]
+#[ignore = "blind batch at: CI skips it; run with --include-ignored"]
+fn at1_negative_control_of_wind_turbine_pitch_backup_drills_dfn() {
+    run_case("diagnosis-extra/at1_control_wind_turbine_pitch_backup_grid_loss_drills_minus4C_2s_dfn");
+}
+
+#[test]
+#[ignore = "blind batch at: CI skips it; run with --include-ignored"]
+fn at2_slow_negative_diffusion_in_a_bascule_bridge_backup_drive_spme() {
+    run_case("diagnosis-extra/at2_diffusivity_negative_x0p1_bascule_bridge_backup_drive_outage_6C_5s_spme");
+}
+
+#[test]
+#[ignore = "blind batch at: CI skips it; run with --include-ignored"]
+fn at3_electrolyte_diffusivity_in_a_cave_diver_propulsion_vehicle_dfn() {
+    run_case("diagnosis-extra/at3_electrolyte_diffusivity_x0p4_diver_propulsion_vehicle_cave_dive_14C_1s_0p8mV_dfn");
+}
+
+#[test]
+#[ignore = "blind batch at: CI skips it; run with --include-ignored"]
+fn at4_current_channel_gain_on_stadium_cable_camera_winches_spm() {
+    run_case("diagnosis-extra/at4_current_gain_3p5pct_high_stadium_cable_camera_winches_20C_2s_0p6mV_spm");
+}
+
+#[test]
+#[ignore = "blind batch at: CI skips it; run with --include-ignored"]
+fn at5_self_heating_of_a_self_launching_sailplane_spme() {
+    run_case("diagnosis-extra/at5_thermal_h7_recorded_self_launching_sailplane_two_flights_24C_1s_spme");
+}
+
+#[test]
+#[ignore = "blind batch at: CI skips it; run with --include-ignored"]
+fn at6_silicon_negative_and_contact_on_a_planetary_rover_spm() {
+    run_case("diagnosis-extra/at6_silicon_composite_negative_and_contact_5mOhm_planetary_rover_field_trial_35C_8s_2mV_spm");
+}
+
+#[test]
+#[ignore = "blind batch at: CI skips it; run with --include-ignored"]
+fn at7_unrelaxed_start_and_lithium_loss_on_a_sailing_yacht_dfn() {
+    run_case("diagnosis-extra/at7_unrelaxed_start_and_inventory_6pct_sailing_yacht_hydrogenerator_passage_17C_4s_1p2mV_dfn");
+}
+
+#[test]
+#[ignore = "fails (open): SEI growth (solvent diffusion x900) with positive diffusivity x0.5 over 12 delivery rounds in 16.7 h, SPMe, 10 s logging: no verdict within the blind judge's 900 s"]
+fn at8_sei_growth_and_slow_positive_diffusion_of_a_hospital_robot_spme() {
+    run_case("diagnosis-extra/at8_sei_solvent_diffusion_x900_and_diffusivity_positive_x0p5_hospital_delivery_robot_12_rounds_22C_10s_0p5mV_spme");
+}
