@@ -12,7 +12,7 @@ use crate::models::ModelBuilder;
 use crate::models::{ModelKind, Submodels};
 use crate::params::ParameterSet;
 use crate::protocol::{Demand, Protocol, Step};
-use crate::simulation::{SimOptions, simulate};
+use crate::simulation::{SimOptions, States, simulate};
 
 /// How to generate a recording.
 #[derive(Clone, Debug)]
@@ -89,7 +89,7 @@ pub fn synthetic_recording(spec: &SyntheticSpec) -> Result<Recording, Error> {
     let built = builder.build(p)?;
     let mut distinct = time.clone();
     distinct.dedup();
-    let opts = SimOptions { t_eval: Some(distinct.clone()), keep_states: true, cutoffs: (0.0, 100.0), ..SimOptions::for_cell(p) };
+    let opts = SimOptions { t_eval: Some(distinct.clone()), states: States::Kept, cutoffs: (0.0, 100.0), ..SimOptions::for_cell(p) };
     let sol = simulate(built.model.as_ref(), &mut built.workspace, &spec.protocol, &opts, None)?;
     if sol.time.len() != distinct.len() {
         return Err(Error::Solver { t: sol.time.last().copied().unwrap_or(0.0), reason: "simulation stopped early".into() });

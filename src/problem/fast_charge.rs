@@ -10,7 +10,7 @@ use crate::error::Error;
 use crate::models::ModelBuilder;
 use crate::params::{ParameterSet, StoichiometryWindow};
 use crate::protocol::{Protocol, Step};
-use crate::simulation::{SimOptions, simulate_observed};
+use crate::simulation::{SimOptions, States, simulate_observed};
 
 /// The charge whose plating-free rate is measured.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -80,8 +80,8 @@ impl FastChargeSpec {
         window.place(&mut p, self.from_soc);
         let capacity = window.capacity(&p);
         let span = self.to_soc - self.from_soc;
-        // Every state at every output: the margin reads potentials the voltage does not.
-        let opts = SimOptions { keep_states: true, ..SimOptions::for_cell(&p) };
+        // Every state at every output (not stored): the margin reads potentials the voltage does not.
+        let opts = SimOptions { states: States::Observed, ..SimOptions::for_cell(&p) };
         let built = builder.build(&p)?;
         let mut feasible = |rate: f64| -> Result<bool, Error> {
             let protocol = Protocol { steps: vec![Step::Current { current: -rate * capacity, duration: span / rate * 3600.0, until_voltage: None }] };

@@ -14,7 +14,7 @@ use crate::error::Error;
 use crate::models::{Model, ModelBuilder};
 use crate::params::ParameterSet;
 use crate::protocol::Protocol;
-use crate::simulation::{Integrals, SimOptions, Solution, simulate, simulate_observed};
+use crate::simulation::{Integrals, SimOptions, Solution, States, simulate, simulate_observed};
 use crate::solver::{SolverOptions, Workspace};
 
 /// Voltage window (V) of a replayed recording: no cell cut-off ends a replay, but a model
@@ -342,7 +342,7 @@ impl FittingProblem {
         SimOptions {
             solver: self.solver.clone(),
             t_eval: Some(self.t_eval.clone()),
-            keep_states: false,
+            states: States::ForOutputs,
             // Recordings are replayed whole: cut-offs do not end them.
             cutoffs: REPLAY_WINDOW,
             capacity: p.cell.nominal_capacity,
@@ -391,11 +391,11 @@ impl FittingProblem {
         self.run_plain(&mut worker, x, &p, Some(watch))
     }
 
-    /// The replay at `x`; with `watch`, every state is kept and handed to it.
+    /// The replay at `x`; with `watch`, every state is handed to it (not stored).
     fn run_plain(&self, worker: &mut Worker, x: &[f64], p: &ParameterSet, watch: Option<&mut dyn FnMut(&dyn Model, &[f64], f64)>) -> Result<Simulated, Error> {
         let built = worker.builders[0].build(p)?;
         let delayed = self.delayed(x);
-        let opts = SimOptions { keep_states: watch.is_some(), ..self.options_with(p, delayed.as_ref()) };
+        let opts = SimOptions { states: if watch.is_some() { States::Observed } else { States::ForOutputs }, ..self.options_with(p, delayed.as_ref()) };
         let y0 = match self.history(x)? {
             Some(step) => Some(state_after(built.model.as_ref(), &mut built.workspace, &step, &opts)?),
             None => None,

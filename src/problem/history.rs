@@ -8,7 +8,7 @@ use super::fitting::FitParameter;
 use crate::error::Error;
 use crate::models::Model;
 use crate::protocol::{Protocol, Step};
-use crate::simulation::{SimOptions, simulate};
+use crate::simulation::{SimOptions, States, simulate};
 use crate::solver::Workspace;
 
 /// Fit path of the history's current (A, discharge positive): not a field of the parameter set.
@@ -41,7 +41,7 @@ pub fn history_step(parameters: &[FitParameter], values: &[f64], pinned: &[(FitP
 /// The state of `model` (from its own initial state) at the end of `step`, run as the replay
 /// runs (`opts`, its output times dropped).
 pub fn state_after(model: &dyn Model, ws: &mut Workspace, step: &Step, opts: &SimOptions) -> Result<Vec<f64>, Error> {
-    let opts = SimOptions { t_eval: None, keep_states: false, ..opts.clone() };
+    let opts = SimOptions { t_eval: None, states: States::ForOutputs, ..opts.clone() };
     Ok(simulate(model, ws, &Protocol { steps: vec![step.clone()] }, &opts, None)?.final_state)
 }
 

@@ -29,7 +29,7 @@ pub fn snapshot_indices(time: &[f64]) -> Vec<usize> {
 /// states must have been kept. Returns the files written.
 pub fn write_fields(model: &dyn Model, sol: &Solution, dir: &Path, stem: &str) -> Result<Vec<PathBuf>, Error> {
     if sol.states.len() != sol.time.len() {
-        return Err(Error::invalid("keep_states", 0.0, "spatial fields need the states kept at every output"));
+        return Err(Error::invalid("states", 0.0, "spatial fields need the states kept at every output"));
     }
     let snapshots: Vec<(f64, Vec<crate::models::Field>)> =
         snapshot_indices(&sol.time).into_iter().map(|k| (sol.time[k], model.fields(&sol.states[k]))).collect();

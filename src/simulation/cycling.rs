@@ -5,7 +5,7 @@
 
 use serde::Serialize;
 
-use super::{Integrals, SimOptions, simulate};
+use super::{Integrals, SimOptions, States, simulate};
 use crate::error::Error;
 use crate::models::Model;
 use crate::protocol::Protocol;
@@ -52,7 +52,7 @@ pub struct CycleSummary {
 }
 
 /// Runs `cycle` `n` times from the model's initial state under `opts` (its `t_eval`,
-/// `keep_states` and `integrals` are ignored: every solver step is recorded for the cycle's
+/// `states` and `integrals` are ignored: every solver step is recorded for the cycle's
 /// charge throughput, then dropped; the energy is not integrated), calling `on_cycle` after
 /// each cycle. The ageing states are held to `1 / n` of the tolerance
 /// (`SolverOptions::accumulator_tolerance`): their errors add up from cycle to cycle where
@@ -68,7 +68,7 @@ pub fn run_cycles(
     if n == 0 {
         return Err(Error::invalid("cycling.cycles", 0.0, "must be at least 1"));
     }
-    let mut opts = SimOptions { t_eval: None, keep_states: false, integrals: Integrals::ChargeAtStepEnds, ..opts.clone() };
+    let mut opts = SimOptions { t_eval: None, states: States::ForOutputs, integrals: Integrals::ChargeAtStepEnds, ..opts.clone() };
     opts.solver.accumulator_tolerance /= n as f64;
     let mut y = model.initial_state();
     let (li0, sei0) = (model.solid_lithium(&y), model.sei_lithium(&y));

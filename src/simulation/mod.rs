@@ -25,8 +25,8 @@ pub struct SimOptions {
     pub solver: SolverOptions,
     /// Output times (s), increasing. `None` records every solver step.
     pub t_eval: Option<Vec<f64>>,
-    /// Keep the full state at every output (for spatial fields and conservation checks).
-    pub keep_states: bool,
+    /// Which states are evaluated at each output, and whether they are stored.
+    pub states: States,
     /// Lower and upper voltage cut-offs (V).
     pub cutoffs: (f64, f64),
     /// Nominal capacity (A h) that converts C-rates to amperes.
@@ -45,13 +45,25 @@ impl SimOptions {
         Self {
             solver: SolverOptions::default(),
             t_eval: None,
-            keep_states: false,
+            states: States::ForOutputs,
             cutoffs: (p.cell.lower_cutoff, p.cell.upper_cutoff),
             capacity: p.cell.nominal_capacity,
             integrals: Integrals::AtEveryOutput,
             temperature_input: None,
         }
     }
+}
+
+/// Which states a simulation evaluates at each output, and whether it stores them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum States {
+    /// Only those the voltage and temperature read ([`Model::output_states`]); none stored.
+    ForOutputs,
+    /// Every state, handed to the observer of [`simulate_observed`] but not stored: memory
+    /// stays flat however many outputs there are.
+    Observed,
+    /// Every state, stored in [`Solution::states`] (spatial fields, conservation checks).
+    Kept,
 }
 
 /// How a simulation integrates the charge (A h) and energy (W h) it records.
@@ -208,7 +220,7 @@ pub fn simulate(
 }
 
 /// [`simulate`], calling `on_output(y, current)` at every recorded output, in time order.
-/// Unless `opts.keep_states`, only the model's [`Model::output_states`] of `y` are current
+/// Unless `opts.states` is [`States::Observed`] or [`States::Kept`], only the model's [`Model::output_states`] of `y` are current
 /// (the others hold stale values): derive from `y` only what the voltage reads. Keeps memory
 /// flat for dense outputs (a 10^6-point recording) where kept states would not fit.
 pub fn simulate_observed(
@@ -236,7 +248,7 @@ pub fn simulate_observed(
         model,
         on_output,
         outputs: index_runs(model.output_states()),
-        keep_states: opts.keep_states,
+        states: opts.states,
         rtol: opts.solver.rtol,
         energy,
         sol: Solution::default(),

@@ -3,7 +3,7 @@
 //! ends when it predicts the step's midpoint, else by adaptive Simpson quadrature on the
 //! integrator's interpolant.
 
-use super::Solution;
+use super::{Solution, States};
 use super::drive::Driven;
 use crate::models::Model;
 use crate::solver::DenseOutput;
@@ -16,7 +16,7 @@ pub(super) struct Recorder<'a> {
     /// The states that voltage and temperature read ([`Model::output_states`]), as runs of
     /// consecutive indices.
     pub outputs: Vec<std::ops::Range<usize>>,
-    pub keep_states: bool,
+    pub states: States,
     /// Relative tolerance of the quadrature: the solver's.
     pub rtol: f64,
     /// The energy is integrated beside the charge (else it stays NaN, and the voltage is not
@@ -81,7 +81,7 @@ impl Recorder<'_> {
         s.capacity.push(q);
         s.energy.push(e);
         s.temperature.push(self.model.temperature(y));
-        if self.keep_states {
+        if self.states == States::Kept {
             s.states.push(y.to_vec());
         }
         (self.on_output)(y, i);
@@ -109,9 +109,9 @@ impl Recorder<'_> {
         IntervalEnd { dq: f64::NAN, de: f64::NAN, current, voltage }
     }
 
-    /// `y(t)` in `buf`: every state when all are kept, else the output states.
+    /// `y(t)` in `buf`: every state when all are observed or kept, else the output states.
     fn state_at(&self, dense: &DenseOutput, t: f64, buf: &mut [f64]) {
-        if self.keep_states {
+        if self.states != States::ForOutputs {
             dense.eval(t, buf);
         } else {
             dense.eval_ranges(t, &self.outputs, buf);
@@ -119,7 +119,7 @@ impl Recorder<'_> {
     }
 
     /// Charge and energy over `[a, b]`, `a` the last step end (current and power `self.i`,
-    /// `self.p`); leaves `y(b)` in `buf` (only the output states unless every state is kept).
+    /// `self.p`); leaves `y(b)` in `buf` (only the output states unless every state is observed or kept).
     /// `at_b`, when known, is the current and voltage at `b` (the cut-off event evaluated them).
     /// Both integrals are held to `rtol` (the solver's: the integral need not be more accurate
     /// than the trajectory it integrates) of their scale over the interval, so long solver
@@ -164,7 +164,7 @@ impl Recorder<'_> {
             None => adaptive_simpson(&mut sample, buf, (a, b), [(self.i, self.p), mid, end], self.rtol, 12),
         };
         // Unless only `b` was sampled (and its state read), restore y(b) in `buf`.
-        if from_history.is_none() || at_b.is_some() || self.keep_states || !energy {
+        if from_history.is_none() || at_b.is_some() || self.states != States::ForOutputs || !energy {
             self.state_at(dense, b, buf);
         }
         let voltage = voltage.unwrap_or_else(|| self.model.voltage(&buf[..self.model.len()], end.0));

@@ -12,7 +12,7 @@ use crate::output::OutputDir;
 use crate::params::ParameterSet;
 use crate::protocol::Protocol;
 use crate::report::plot::{Series, line_plot};
-use crate::simulation::{SimOptions, Solution, simulate};
+use crate::simulation::{SimOptions, Solution, States, simulate};
 
 /// Where the protocol comes from; errors name it as the user wrote it.
 pub enum ProtocolSource {
@@ -151,7 +151,7 @@ pub fn run_simulate(run: &SimulateRun) -> Result<SimulateOutcome, Error> {
     line_plot(&svg, "Terminal voltage", "Time (s)", "Voltage (V)", &[Series { label, x: &solution.time, y: &solution.voltage }])?;
     // Concentration and potential profiles, from one more run that keeps the states (the
     // timed runs do not pay for the copies).
-    let kept = SimOptions { keep_states: true, ..opts.clone() };
+    let kept = SimOptions { states: States::Kept, ..opts.clone() };
     let with_states = simulate(built.model.as_ref(), &mut built.workspace, &protocol, &kept, None)?;
     let fields = crate::report::fields::write_fields(built.model.as_ref(), &with_states, dir, &stem)?;
     let mut written = staged.commit(&[vec![csv, svg], fields].concat())?;

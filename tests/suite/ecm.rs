@@ -5,7 +5,7 @@ use cellstudio::models::Model;
 use cellstudio::models::ecm::{Ecm, EcmParameters, EcmThermal, RcPair};
 use cellstudio::params::Function1D;
 use cellstudio::protocol::{Protocol, Step};
-use cellstudio::simulation::{Integrals, SimOptions, Solution, simulate};
+use cellstudio::simulation::{Integrals, SimOptions, States, Solution, simulate};
 use cellstudio::solver::Workspace;
 
 const CAPACITY: f64 = 2.0; // A h
@@ -36,7 +36,7 @@ fn run(model: &Ecm, protocol: &Protocol, t_eval: Vec<f64>, keep_states: bool) ->
     let opts = SimOptions {
         solver: Default::default(),
         t_eval: Some(t_eval),
-        keep_states,
+        states: if keep_states { States::Kept } else { States::ForOutputs },
         cutoffs: (2.5, 4.3),
         capacity: model.params().capacity,
         integrals: Integrals::AtEveryOutput,
@@ -245,7 +245,7 @@ fn dfn_pulse_at_half_soc() -> (Solution, Vec<f64>) {
     p.positive.initial_concentration += p.positive.max_concentration * q / (p.positive.areal_capacity() * area);
     let mut b = ModelBuilder::new(ModelKind::Dfn, Submodels::default(), MeshSizes::default());
     let built = b.build(&p).unwrap();
-    let opts = SimOptions { t_eval: Some(grid(PULSE + REST, 1.0)), keep_states: true, ..SimOptions::for_cell(&p) };
+    let opts = SimOptions { t_eval: Some(grid(PULSE + REST, 1.0)), states: States::Kept, ..SimOptions::for_cell(&p) };
     let sol = simulate(built.model.as_ref(), &mut built.workspace, &pulse_protocol(), &opts, None).unwrap();
     let eta = sol.states.iter().zip(&sol.voltage).map(|(y, v)| built.model.open_circuit_voltage(y) - v).collect();
     (sol, eta)

@@ -10,7 +10,7 @@ use cellstudio::models::{ModelKind, Submodels};
 use cellstudio::params::{StoichiometryWindow, chen2020};
 use cellstudio::problem::fast_charge::FastChargeSpec;
 use cellstudio::protocol::{Protocol, Step};
-use cellstudio::simulation::{SimOptions, simulate_observed};
+use cellstudio::simulation::{SimOptions, States, simulate_observed};
 
 fn data(file: &str) -> String {
     std::fs::read_to_string(std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/plating").join(file)).unwrap()
@@ -34,7 +34,7 @@ fn margin_gap(kind: ModelKind) -> (f64, f64) {
     let protocol = Protocol { steps: vec![Step::Current { current: -current, duration: 0.7 * 3600.0, until_voltage: None }] };
     let mut b = ModelBuilder::new(kind, Submodels::default(), MeshSizes::default());
     let built = b.build(&p).unwrap();
-    let mut opts = SimOptions { t_eval: Some(rows.iter().map(|r| r.0).collect()), keep_states: true, ..SimOptions::for_cell(&p) };
+    let mut opts = SimOptions { t_eval: Some(rows.iter().map(|r| r.0).collect()), states: States::Kept, ..SimOptions::for_cell(&p) };
     opts.solver.set_tolerance(1e-8);
     // PyBaMM's timed experiment step would run past the 4.2 V cut-off: so does this comparison.
     opts.cutoffs.1 = 6.0;

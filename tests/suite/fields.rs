@@ -6,12 +6,12 @@ use cellstudio::models::ModelBuilder;
 use cellstudio::models::{Field, ModelKind, Submodels};
 use cellstudio::params::{ParameterSet, chen2020};
 use cellstudio::protocol::Protocol;
-use cellstudio::simulation::{SimOptions, Solution, simulate};
+use cellstudio::simulation::{SimOptions, States, Solution, simulate};
 
 fn run(kind: ModelKind, p: &ParameterSet) -> (Vec<Vec<Field>>, Solution) {
     let mut b = ModelBuilder::new(kind, Submodels::default(), MeshSizes::default());
     let built = b.build(p).unwrap();
-    let opts = SimOptions { keep_states: true, ..SimOptions::for_cell(p) };
+    let opts = SimOptions { states: States::Kept, ..SimOptions::for_cell(p) };
     let sol = simulate(built.model.as_ref(), &mut built.workspace, &Protocol::discharge(1.0), &opts, None).unwrap();
     let fields = sol.states.iter().map(|y| built.model.fields(y)).collect();
     (fields, sol)
@@ -77,5 +77,5 @@ fn simulate_writes_the_fields_csv_and_one_plot_per_field() {
     // Without kept states the error names the option.
     let bare = Solution { states: Vec::new(), ..sol };
     let err = cellstudio::report::fields::write_fields(built.model.as_ref(), &bare, &dir, "spm").unwrap_err().to_string();
-    assert!(err.contains("keep_states"), "{err}");
+    assert!(err.contains("states"), "{err}");
 }

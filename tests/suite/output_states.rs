@@ -10,7 +10,7 @@ use cellstudio::models::submodels::{LamModel, ParticleSize, SeiModel};
 use cellstudio::models::{Model, ModelKind, Submodels};
 use cellstudio::params::chen2020;
 use cellstudio::protocol::Protocol;
-use cellstudio::simulation::{SimOptions, simulate};
+use cellstudio::simulation::{SimOptions, States, simulate};
 
 /// Calls `check(kind, submodels, model, y)` for each model with each submodel variant it
 /// builds, at the state half-way through a 1C discharge.
@@ -36,7 +36,7 @@ fn for_each_variant(mut check: impl FnMut(ModelKind, Submodels, &dyn Model, &[f6
             let mut b = ModelBuilder::new(kind, sub, MeshSizes::default());
             let built = b.build(&p).unwrap();
             let model = built.model.as_ref();
-            let opts = SimOptions { keep_states: true, ..SimOptions::for_cell(&p) };
+            let opts = SimOptions { states: States::Kept, ..SimOptions::for_cell(&p) };
             let sol = simulate(model, &mut built.workspace, &Protocol::discharge(1.0), &opts, None).unwrap();
             check(kind, sub, model, &sol.states[sol.states.len() / 2]);
         }
@@ -85,4 +85,31 @@ fn only_the_listed_rows_read_the_current() {
         }
     });
     assert_eq!(sparse, 4, "DFN variants without loss of active material");
+}
+
+/// `States::Observed` hands the observer every state, identical to those `States::Kept`
+/// stores, and stores none itself (memory flat on long recordings).
+#[test]
+fn observed_states_are_the_kept_ones_but_not_stored() {
+    let p = chen2020();
+    for kind in [ModelKind::Spm, ModelKind::Dfn] {
+        let mut b = ModelBuilder::new(kind, Submodels::default(), MeshSizes::default());
+        let built = b.build(&p).unwrap();
+        let model = built.model.as_ref();
+        let run = |states: States, ws: &mut _| {
+            let mut seen = Vec::new();
+            let opts = SimOptions { states, t_eval: Some((0..=30).map(|k| 100.0 * k as f64).collect()), ..SimOptions::for_cell(&p) };
+            let sol = cellstudio::simulation::simulate_observed(model, ws, &Protocol::discharge(1.0), &opts, None, &mut |y, _| seen.push(y.to_vec())).unwrap();
+            (sol, seen)
+        };
+        let (kept, seen_kept) = run(States::Kept, &mut built.workspace);
+        let (observed, seen) = run(States::Observed, &mut built.workspace);
+        assert_eq!(kept.states.len(), 31, "{kind}");
+        assert!(observed.states.is_empty(), "{kind}: observed states were stored");
+        assert_eq!(seen, kept.states, "{kind}: the observer saw other states than those kept");
+        assert_eq!(seen_kept, kept.states, "{kind}");
+        // Only the output states are current otherwise: some other state differs.
+        let (_, partial) = run(States::ForOutputs, &mut built.workspace);
+        assert_ne!(partial, kept.states, "{kind}: ForOutputs evaluated every state");
+    }
 }

@@ -8,7 +8,7 @@ use cellstudio::models::ModelBuilder;
 use cellstudio::models::{ModelKind, Submodels};
 use cellstudio::params::chen2020;
 use cellstudio::protocol::{Protocol, Step};
-use cellstudio::simulation::{SimOptions, simulate};
+use cellstudio::simulation::{SimOptions, States, simulate};
 use common::{pulse, run};
 
 const KINDS: [ModelKind; 3] = [ModelKind::Spm, ModelKind::Spme, ModelKind::Dfn];
@@ -31,7 +31,7 @@ fn solid_lithium_is_conserved() {
             let sub = Submodels { thermal, ..Default::default() };
             let mut b = ModelBuilder::new(kind, sub, MeshSizes::default());
             let built = b.build(&p).unwrap();
-            let opts = SimOptions { keep_states: true, ..SimOptions::for_cell(&p) };
+            let opts = SimOptions { states: States::Kept, ..SimOptions::for_cell(&p) };
             let sol = simulate(built.model.as_ref(), &mut built.workspace, &protocol, &opts, None).unwrap();
             let li0 = built.model.solid_lithium(&sol.states[0]);
             let worst = sol
@@ -58,7 +58,7 @@ fn low_current_voltage_tends_to_ocv() {
                 let protocol = Protocol { steps: vec![Step::CRate { rate, duration: 600.0, until_voltage: None }] };
                 let mut b = ModelBuilder::new(kind, Submodels::default(), MeshSizes::default());
                 let built = b.build(&p).unwrap();
-                let opts = SimOptions { keep_states: true, ..SimOptions::for_cell(&p) };
+                let opts = SimOptions { states: States::Kept, ..SimOptions::for_cell(&p) };
                 let sol = simulate(built.model.as_ref(), &mut built.workspace, &protocol, &opts, None).unwrap();
                 let y = sol.states.last().unwrap();
                 (sol.final_voltage() - built.model.open_circuit_voltage(y)).abs()
@@ -125,7 +125,7 @@ fn a_second_material_sets_the_open_circuit_limit() {
     let protocol = Protocol { steps: vec![Step::CRate { rate: 0.001, duration: 600.0, until_voltage: None }] };
     let mut b = ModelBuilder::new(ModelKind::Spm, Submodels::default(), MeshSizes::default());
     let built = b.build(&p).unwrap();
-    let opts = SimOptions { keep_states: true, ..SimOptions::for_cell(&p) };
+    let opts = SimOptions { states: States::Kept, ..SimOptions::for_cell(&p) };
     let sol = simulate(built.model.as_ref(), &mut built.workspace, &protocol, &opts, None).unwrap();
     let y = sol.states.last().unwrap();
     let (nn, np) = (built.model.electrochem().disc.sphere_n.len(), built.model.electrochem().disc.sphere_p.len());

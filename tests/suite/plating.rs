@@ -13,7 +13,7 @@ use cellstudio::models::submodels::{PlatingModel, SeiModel};
 use cellstudio::models::{ModelBuilder, ModelKind, Submodels};
 use cellstudio::params::chen2020;
 use cellstudio::protocol::{Protocol, Step, experiment};
-use cellstudio::simulation::{SimOptions, simulate};
+use cellstudio::simulation::{SimOptions, States, simulate};
 
 const CYCLE: [&str; 5] = ["Discharge at 1C until 3.0 V", "Rest for 10 minutes", "Charge at 2C until 4.1 V", "Hold at 4.1 V until C/20", "Rest for 10 minutes"];
 const CYCLES: usize = 3;
@@ -155,7 +155,7 @@ fn zero_rate_constant_is_the_model_without_plating() {
         let run = |plating| {
             let mut b = builder(kind, plating, SeiModel::None);
             let built = b.build(&p).unwrap();
-            let opts = SimOptions { keep_states: true, ..common::tight_options(&p) };
+            let opts = SimOptions { states: States::Kept, ..common::tight_options(&p) };
             let sol = simulate(built.model.as_ref(), &mut built.workspace, &protocol, &opts, None).unwrap();
             let plated = sol.states.iter().map(|y| built.model.plated_lithium(y).map_or(0.0, |l| l.total_mol())).fold(0.0f64, |m, x| m.max(x.abs()));
             (sol, plated)
@@ -202,7 +202,7 @@ fn plating_rejects_bad_parameters() {
 #[test]
 fn reversible_plating_discharges_to_the_cut_off_without_negative_lithium() {
     let p = chen2020();
-    let opts = SimOptions { keep_states: true, ..SimOptions::for_cell(&p) };
+    let opts = SimOptions { states: States::Kept, ..SimOptions::for_cell(&p) };
     for kind in [ModelKind::Spm, ModelKind::Spme, ModelKind::Dfn] {
         for plating in [PlatingModel::Reversible, PlatingModel::PartiallyReversible] {
             let mut b = builder(kind, plating, SeiModel::None);

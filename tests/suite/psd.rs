@@ -9,7 +9,7 @@ use cellstudio::models::submodels::{ParticleSize, SeiModel};
 use cellstudio::models::{ModelBuilder, ModelKind, Submodels};
 use cellstudio::params::{ParameterSet, chen2020};
 use cellstudio::protocol::{Protocol, Step};
-use cellstudio::simulation::{SimOptions, Solution, simulate};
+use cellstudio::simulation::{SimOptions, States, Solution, simulate};
 
 const DISTRIBUTION: Submodels = Submodels {
     contact_resistance: false,
@@ -37,7 +37,7 @@ fn with_std(std: f64) -> ParameterSet {
 fn run(submodels: Submodels, p: &ParameterSet, protocol: &Protocol, t_eval: Option<Vec<f64>>) -> Solution {
     let mut b = ModelBuilder::new(ModelKind::Spm, submodels, MeshSizes::default());
     let built = b.build(p).unwrap();
-    let opts = SimOptions { t_eval, keep_states: true, ..crate::common::tight_options(p) };
+    let opts = SimOptions { t_eval, states: States::Kept, ..crate::common::tight_options(p) };
     simulate(built.model.as_ref(), &mut built.workspace, protocol, &opts, None).unwrap()
 }
 

@@ -15,7 +15,7 @@ use cellstudio::models::{ModelBuilder, ModelKind, Submodels};
 use cellstudio::params::chen2020;
 use cellstudio::protocol::{Protocol, Step, experiment};
 use cellstudio::simulation::cycling::run_cycles;
-use cellstudio::simulation::{SimOptions, simulate};
+use cellstudio::simulation::{SimOptions, States, simulate};
 
 const CYCLE: [&str; 5] = ["Discharge at 1C until 3.0 V", "Rest for 10 minutes", "Charge at 1C until 4.1 V", "Hold at 4.1 V until C/20", "Rest for 10 minutes"];
 const CYCLES: usize = 10;
@@ -196,7 +196,7 @@ fn lithium_in_particles_and_sei_is_conserved() {
         for (sei, name) in OPTIONS {
             let mut b = builder(kind, sei);
             let built = b.build(&p).unwrap();
-            let opts = SimOptions { keep_states: true, ..options() };
+            let opts = SimOptions { states: States::Kept, ..options() };
             let sol = simulate(built.model.as_ref(), &mut built.workspace, &cycle(), &opts, None).unwrap();
             let m = built.model.as_ref();
             let total = |y: &[f64]| m.solid_lithium(y) + m.sei_lithium(y);

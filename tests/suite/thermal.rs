@@ -6,7 +6,7 @@ use cellstudio::geometry::{Discretisation, Geometry, MeshSizes};
 use cellstudio::models::electrochem::Side;
 use cellstudio::models::spm::Spm;
 use cellstudio::models::{Electrochem, Model};
-use cellstudio::simulation::{SimOptions, simulate};
+use cellstudio::simulation::{SimOptions, States, simulate};
 use cellstudio::solver::Workspace;
 use cellstudio::models::{ModelKind, Submodels};
 use cellstudio::models::submodels::LumpedThermal;
@@ -28,7 +28,7 @@ fn adiabatic_temperature_rise_matches_integrated_heat() {
     let model = Spm::new(ec);
     let mut ws = Workspace::new(model.len(), model.jacobian_pattern()).unwrap();
     let t_eval: Vec<f64> = (0..=3400).map(|k| k as f64 * 0.5).collect();
-    let opts = SimOptions { keep_states: true, t_eval: Some(t_eval), ..SimOptions::for_cell(&p) };
+    let opts = SimOptions { states: States::Kept, t_eval: Some(t_eval), ..SimOptions::for_cell(&p) };
     let sol = simulate(&model, &mut ws, &Protocol::discharge(2.0), &opts, None).unwrap();
     let (mut heat, mut lost) = (0.0, 0.0);
     let rate = |k: usize| {

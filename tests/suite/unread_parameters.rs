@@ -9,7 +9,7 @@ use cellstudio::models::submodels::{LamModel, ParticleSize, PlatingModel, SeiMod
 use cellstudio::models::{ModelBuilder, ModelKind, Submodels};
 use cellstudio::params::{ParameterSet, chen2020};
 use cellstudio::protocol::Protocol;
-use cellstudio::simulation::{SimOptions, simulate};
+use cellstudio::simulation::{SimOptions, States, simulate};
 
 /// The cell with every submodel parameter away from zero, so that a read shows.
 fn cell() -> ParameterSet {
@@ -102,7 +102,7 @@ fn a_parameter_called_unread_changes_nothing_and_a_laws_own_parameter_changes_th
                 assert!(kind != ModelKind::Spm, "the SPM builds every variant: {sub:?}");
                 continue; // e.g. the size distribution, built on the SPM only
             };
-            let opts = SimOptions { keep_states: true, ..SimOptions::for_cell(&p) };
+            let opts = SimOptions { states: States::Kept, ..SimOptions::for_cell(&p) };
             let sol = simulate(built.model.as_ref(), &mut built.workspace, &Protocol::discharge(1.0), &opts, None)
                 .unwrap_or_else(|e| panic!("{kind} {sub:?}: {e}"));
             let states = vec![sol.states[0].clone(), sol.states[sol.states.len() / 2].clone()];

@@ -7,7 +7,7 @@ use cellstudio::models::ModelBuilder;
 use cellstudio::models::{ModelKind, Submodels};
 use cellstudio::params::ParameterSet;
 use cellstudio::protocol::Protocol;
-use cellstudio::simulation::{SimOptions, Solution, simulate};
+use cellstudio::simulation::{SimOptions, States, Solution, simulate};
 
 /// Reference curve shipped in tests/data (copied from ../shared/reference, PyBaMM 26.10).
 pub fn reference(name: &str) -> Recording {
@@ -32,7 +32,7 @@ pub fn run(
 ) -> Solution {
     let mut b = ModelBuilder::new(kind, submodels, mesh);
     let built = b.build(p).expect("build");
-    let opts = SimOptions { t_eval, keep_states, ..SimOptions::for_cell(p) };
+    let opts = SimOptions { t_eval, states: if keep_states { States::Kept } else { States::ForOutputs }, ..SimOptions::for_cell(p) };
     simulate(built.model.as_ref(), &mut built.workspace, protocol, &opts, None).expect("simulate")
 }
 
@@ -97,7 +97,7 @@ pub fn step_by_step(
         let t0 = ref_rows[0][0];
         let mut times: Vec<f64> = ref_rows.iter().map(|r| r[0] - t0).collect();
         times.dedup();
-        let opts = SimOptions { t_eval: Some(times), keep_states: true, ..opts.clone() };
+        let opts = SimOptions { t_eval: Some(times), states: States::Kept, ..opts.clone() };
         let sol = simulate(model, ws, &Protocol { steps: vec![step.clone()] }, &opts, Some(y)).unwrap();
         y = sol.final_state.clone();
         let ours_end = sol.cutoff_times.first().copied().unwrap_or(step.duration());
