@@ -289,6 +289,8 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
     });
     let temperature_weight = options.fit.temperature_weight.or_else(|| refit::temperature_weight(&data));
     let options = &DiagnoseOptions { fit: FitSettings { tolerance: Some(tolerance), temperature_weight, ..options.fit.clone() }, ..options.clone() };
+    // Where the round's time goes (wall seconds), for the report.
+    let mut timing: Vec<String> = Vec::new();
     let (baseline, split, warm, restarts, cut_here) = match &options.fitted_baseline {
         Some(b) if b.voltage.len() == data.time.len() && b.names.len() == options.fitted.len() => {
             let features = Features::of(&data);
@@ -296,6 +298,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
         }
         _ => {
             let b = baseline::fit_baseline(&mut data, base, options, &mut notes)?;
+            timing.push(format!("the user's model's fit {:.0} s", b.fit.seconds));
             (b.fit, b.split, b.fitted, b.starts, b.broke_down)
         }
     };
@@ -318,9 +321,14 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
     // the size floor, nothing can be named and no candidate is refitted.
     let room = (baseline.rmse_holdout.powi(2) - noise * noise).max(0.0).sqrt();
     let no_room = room < options.margins.size_floor(noise);
-    if no_room && options.fitted_baseline.is_none() && options.holdout_phase.is_none() {
+    // So in a later round (its baseline the last round's fit, refitted here on the moved
+    // blocks): the effect found may leave the rest of the misfit where the blocks do not look.
+    // Once per round: the refit on the moved blocks has a phase and no baseline given.
+    let later_round = options.fitted_baseline.is_some();
+    if no_room && (later_round || options.holdout_phase.is_none()) {
         if let Some((phase, why)) = holdout::representative_phase(options, &features.valid, &residual, noise, options.margins.size_floor(noise)) {
-            let mut d = diagnose(data_given, base_given, &DiagnoseOptions { holdout_phase: Some(phase), ..options.clone() })?;
+            let moved = DiagnoseOptions { holdout_phase: Some(phase), fitted_baseline: None, ..options.clone() };
+            let mut d = diagnose(data_given, base_given, &moved)?;
             d.notes.insert(0, why);
             d.summary = report::plain_words(&d);
             d.seconds = start.elapsed().as_secs_f64();
@@ -348,6 +356,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
         })
         .collect();
     let round = Round { options, base, data: &data, split: &split, baseline: &baseline, fitted_paths: &fitted_paths, warm: &warm, restarts: &restarts, noise, load };
+    let singles_start = std::time::Instant::now();
     let progress = crate::progress::bar("diagnose", plan.len() as u64, "{msg} {bar:30} {pos}/{len} [{elapsed}]");
     progress.set_message(format!("refitting candidates on {}", options.spec));
     let mut outcomes: Vec<CandidateOutcome> = plan
@@ -359,6 +368,8 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
         })
         .collect();
     progress.finish_and_clear();
+    let refitted = outcomes.iter().filter(|c| c.fit.is_some()).count();
+    timing.push(format!("{refitted} candidates refitted {:.0} s", singles_start.elapsed().as_secs_f64()));
     heat_balance::read_only_if_unpredicted(&mut outcomes, &[], &baseline, &data);
     // Named candidates first, compared with one another at common effective points; the
     // others by their gain over the user's model.
@@ -385,6 +396,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
     // before any pair is tried, so that a pair must beat the effect at its best description
     // (an asymmetric charge transfer is the kinetics candidate with its transfer coefficients
     // free, not kinetics plus a stand-in).
+    notes.extend(lead_tie_by_holdout(&mut verdict, &mut outcomes, &options.margins, noise));
     let structure = if verdict.found() { after(&outcomes) } else { None };
     if let (Some(structure), Some(first)) = (structure, outcomes.first_mut()) {
         if let Some((false, record)) = refine::refine(first, &structure, &round) {
@@ -405,7 +417,9 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
         };
         // Pairs that fit alike are a tie, as singles are: one pair's parameter may stand in
         // for the other's (in the SPMe a conductivity factor acts as a series resistance).
-        let mut named = pairs::named_pairs(&outcomes, &round);
+        let pairs_start = std::time::Instant::now();
+        let (mut named, work) = pairs::named_pairs(&outcomes, &round);
+        timing.push(format!("{} {:.0} s", work.in_words(), pairs_start.elapsed().as_secs_f64()));
         heat_balance::read_only_if_unpredicted(&mut named, &outcomes, &baseline, &data);
         named.retain(|pair| pair.named && beats_single(pair));
         if !named.is_empty() {
@@ -413,6 +427,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
             named.sort_by(|a, b| a.comparison.bic_at(n_pairs).total_cmp(&b.comparison.bic_at(n_pairs)));
             verdict = select::verdict(&standings(&named), true, options.margins.min_delta_bic, separate);
             outcomes.splice(0..0, named);
+            notes.extend(lead_tie_by_holdout(&mut verdict, &mut outcomes, &options.margins, noise));
         }
     }
     // A model that broke down here and nothing named before: the candidate that lets it
@@ -442,6 +457,7 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
     if data.temperature.is_some() {
         notes.push(format!("The model runs at (or starts from) the recording's first temperature, {:.2} K.", base.thermal.ambient_temperature));
     }
+    notes.push(format!("Time: {}; {:.0} s in all.", timing.join(", "), start.elapsed().as_secs_f64()));
     let mut diagnosis = Diagnosis {
         model: options.spec.to_string(),
         spec: options.spec,
@@ -473,6 +489,28 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
     diagnosis.summary = report::plain_words(&diagnosis);
     diagnosis.seconds = start.elapsed().as_secs_f64();
     Ok(diagnosis)
+}
+
+/// A tie between `outcomes[0]` and `outcomes[1]` whose second predicts the held-out points
+/// clearly better ([`select::leads_on_holdout`]) put in the other order, and a note saying why.
+fn lead_tie_by_holdout(verdict: &mut Verdict, outcomes: &mut [CandidateOutcome], margins: &select::Margins, noise: f64) -> Option<String> {
+    let Verdict::Tie { .. } = verdict else { return None };
+    let [a, b, ..] = outcomes else { return None };
+    let (Some(fa), Some(fb)) = (a.fit.as_ref(), b.fit.as_ref()) else { return None };
+    if !select::leads_on_holdout(fa, fb, margins, noise) {
+        return None;
+    }
+    let why = format!(
+        "{} and {} fit the training points alike; {} is named first, and the next round builds on it, as it predicts the held-out points clearly better ({} against {} RMS).",
+        a.name,
+        b.name,
+        b.name,
+        report::mv(fb.rmse_holdout),
+        report::mv(fa.rmse_holdout)
+    );
+    verdict.swap_tie(b.class);
+    outcomes.swap(0, 1);
+    Some(why)
 }
 
 /// Whether every one of `paths` (at least one) is fitted within two standard errors of its
@@ -529,7 +567,9 @@ pub fn diagnose_rounds_with(data: &Recording, base: &ParameterSet, options: &Dia
         options.spec = next.spec;
         options.fitted = next.fitted;
         options.fitted_baseline = Some(fit);
-        options.holdout_phase = Some(rounds[0].holdout_phase);
+        // The blocks the last round held out (moved there, or in round 1, when the default
+        // ones missed the misfit): the fit handed on was scored on them.
+        options.holdout_phase = Some(rounds.last().expect("a round").holdout_phase);
         options.broke_down = if rescued { None } else { rounds[0].broke_down.clone() };
         options.pairs = false;
         options.fit.tolerance = Some(rounds[0].tolerance);

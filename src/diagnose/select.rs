@@ -148,6 +148,24 @@ impl Verdict {
     pub fn found(&self) -> bool {
         matches!(self, Verdict::Found { .. } | Verdict::Tie { .. })
     }
+
+    /// A tie with its two members in the other order (its class the new first's).
+    pub fn swap_tie(&mut self, second_class: Class) {
+        if let Verdict::Tie { first, first_partner, second, second_partner, class, .. } = self {
+            std::mem::swap(first, second);
+            std::mem::swap(first_partner, second_partner);
+            *class = second_class;
+        }
+    }
+}
+
+/// Whether `second`, tied with `first` on the training points, predicts the held-out points
+/// clearly better: by the margins that name an effect against the user's model (a hold-out cut
+/// of `min_holdout_gain` and at least the size floor of RMS removed at `noise`, V). Such a
+/// member leads the tie: the next round builds on it.
+pub fn leads_on_holdout(first: &FitOutcome, second: &FitOutcome, margins: &Margins, noise: f64) -> bool {
+    let (a, b) = (first.rmse_holdout, second.rmse_holdout);
+    1.0 - b / a >= margins.min_holdout_gain && (a * a - b * b).max(0.0).sqrt() >= margins.size_floor(noise)
 }
 
 /// One candidate's standing for the verdict.
@@ -220,6 +238,20 @@ mod tests {
         // A clearly better fit (10 % lower RMSE) is found, not tied.
         let ranked = [standing(Candidate::Kinetics, 0.9e-3, 3.0, 3700.0), standing(Candidate::SeriesResistance, 1.0e-3, 2.0, 3700.0)];
         assert!(matches!(verdict(&ranked, true, 10.0, |_, _| String::new()), Verdict::Found { candidate: Candidate::Kinetics, .. }));
+    }
+
+    #[test]
+    fn a_tie_member_leads_only_when_it_predicts_the_held_out_points_clearly_better() {
+        let held = |rmse_holdout: f64| FitOutcome { rmse_holdout, ..Default::default() };
+        let (margins, noise) = (Margins::default(), 1.29e-3);
+        // Blind as3: the lithium loss first on the training points, the 7 % LAM better held out.
+        assert!(leads_on_holdout(&held(2.90e-3), &held(1.43e-3), &margins, noise));
+        // 8 % lower, or 20 % lower but removing less than the noise: the training order stands.
+        assert!(!leads_on_holdout(&held(2.00e-3), &held(1.84e-3), &margins, noise));
+        assert!(!leads_on_holdout(&held(1.50e-3), &held(1.20e-3), &margins, noise));
+        let mut tie = Verdict::Tie { first: Candidate::LithiumInventory, first_partner: None, second: Candidate::Kinetics, second_partner: None, class: Class::ParameterMismatch, experiment: String::new() };
+        tie.swap_tie(Class::MissingPhysics);
+        assert!(matches!(tie, Verdict::Tie { first: Candidate::Kinetics, second: Candidate::LithiumInventory, class: Class::MissingPhysics, .. }));
     }
 
     #[test]
