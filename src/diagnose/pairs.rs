@@ -19,10 +19,24 @@ use crate::problem::fitting::INITIAL_SOC;
 use crate::problem::lost_lithium::is_loss_soc;
 use crate::problem::least_squares::LmSettings;
 
+/// How many pairs were fitted, and how: where a round's time goes.
+#[derive(Clone, Copy, Debug, Default)]
+pub(super) struct PairWork {
+    pub screened: usize,
+    pub continued: usize,
+    pub refitted: usize,
+}
+
+impl PairWork {
+    pub fn in_words(&self) -> String {
+        format!("{} pairs screened ({} continued, {} refitted from every start)", self.screened, self.continued, self.refitted)
+    }
+}
+
 /// Every named pair of `singles` (refitted candidates), each as one candidate outcome named
 /// "A together with B" (its best fit when it was fitted twice); empty when no pair clears
-/// the margins with plausible values.
-pub(super) fn named_pairs(singles: &[CandidateOutcome], round: &Round) -> Vec<CandidateOutcome> {
+/// the margins with plausible values. Also how many pairs were fitted.
+pub(super) fn named_pairs(singles: &[CandidateOutcome], round: &Round) -> (Vec<CandidateOutcome>, PairWork) {
     // A thermal candidate fitted to a recorded temperature has evidence of its own even
     // when alone it does not lower the voltage's error (a second effect may hide it).
     let own_evidence = |c: &CandidateOutcome| matches!(c.candidate, Candidate::Thermal | Candidate::HeatBalance) && round.data.temperature.is_some();
@@ -42,8 +56,18 @@ pub(super) fn named_pairs(singles: &[CandidateOutcome], round: &Round) -> Vec<Ca
     // every start, as the singles are.
     let full = round.options.fit.lm;
     let screen = LmSettings { max_iterations: SCREEN_ITERATIONS.min(full.max_iterations), ..full };
-    let mut first: Vec<(usize, CandidateOutcome)> =
-        pairs.par_iter().enumerate().filter_map(|(k, (a, b))| Some((k, fit_pair(a, b, round, PairStart::Screen(screen))?))).collect();
+    let progress = crate::progress::bar("diagnose", pairs.len() as u64, "{msg} {bar:30} {pos}/{len} [{elapsed}]");
+    progress.set_message("screening pairs of candidates");
+    let mut first: Vec<(usize, CandidateOutcome)> = pairs
+        .par_iter()
+        .enumerate()
+        .filter_map(|(k, (a, b))| {
+            let screened = fit_pair(a, b, round, PairStart::Screen(screen));
+            progress.inc(1);
+            Some((k, screened?))
+        })
+        .collect();
+    progress.finish_and_clear();
     let mut best_first: Vec<usize> = (0..first.len()).collect();
     best_first.sort_by(|i, j| rmse_train(&first[*i].1).total_cmp(&rmse_train(&first[*j].1)));
     let unconverged_screen = |i: &usize| first[*i].1.fit.as_ref().is_some_and(|f| !f.converged);
@@ -78,6 +102,7 @@ pub(super) fn named_pairs(singles: &[CandidateOutcome], round: &Round) -> Vec<Ca
     let mut doubtful: Vec<&(usize, CandidateOutcome)> =
         first.iter().filter(|(_, p)| p.fit.as_ref().is_some_and(|f| !f.converged || f.on_bound.iter().any(|b| *b))).collect();
     doubtful.sort_by(|(_, p), (_, q)| rmse_train(p).total_cmp(&rmse_train(q)));
+    let work = PairWork { screened: pairs.len(), continued: unconverged.len(), refitted: doubtful.len().min(REFIT_DOUBTFUL_PAIRS) };
     let again: Vec<CandidateOutcome> = doubtful
         .into_iter()
         .take(REFIT_DOUBTFUL_PAIRS)
@@ -93,7 +118,7 @@ pub(super) fn named_pairs(singles: &[CandidateOutcome], round: &Round) -> Vec<Ca
             None => named.push(p),
         }
     }
-    named
+    (named, work)
 }
 
 /// Screened pairs, the best by training error first, that continue to convergence.
