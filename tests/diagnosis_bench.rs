@@ -1901,3 +1901,54 @@ fn at7_unrelaxed_start_and_lithium_loss_on_a_sailing_yacht_dfn() {
 fn at8_sei_growth_and_slow_positive_diffusion_of_a_hospital_robot_spme() {
     run_case("diagnosis-extra/at8_sei_solvent_diffusion_x900_and_diffusivity_positive_x0p5_hospital_delivery_robot_12_rounds_22C_10s_0p5mV_spme");
 }
+
+// Blind batch au (fortieth session, helper-made with `scripts/make_unseen_cases.py`, judged once
+// by `../shared/tools/diagnosis-bench` on the binary of 708b836 before the truths were read): 8 of 8.
+
+#[test]
+#[ignore = "blind batch au: CI skips it; run with --include-ignored"]
+fn au1_negative_control_of_a_laptop_working_day_spm() {
+    run_case("diagnosis-extra/au1_control_laptop_working_day_lunch_charge_27C_8s_0p5mV_spm");
+}
+
+#[test]
+#[ignore = "blind batch au: CI skips it; run with --include-ignored"]
+fn au2_positive_lam_of_heated_apparel_on_a_ski_day_spm() {
+    run_case("diagnosis-extra/au2_lam_positive_9pct_heated_apparel_ski_day_minus12C_6s_spm");
+}
+
+#[test]
+#[ignore = "blind batch au: CI skips it; run with --include-ignored"]
+fn au3_negative_lam_and_a_late_voltage_channel_on_a_quarry_dump_truck_spme() {
+    run_case("diagnosis-extra/au3_lam_negative_7pct_and_voltage_logged_2s_late_quarry_dump_truck_14C_1s_1p2mV_spme");
+}
+
+#[test]
+#[ignore = "blind batch au: CI skips it; run with --include-ignored"]
+fn au4_unrelaxed_start_and_slow_positive_kinetics_of_a_reefer_delivery_day_dfn() {
+    run_case("diagnosis-extra/au4_unrelaxed_start_and_exchange_current_positive_x0p35_reefer_delivery_day_37C_5s_0p8mV_dfn");
+}
+
+#[test]
+#[ignore = "blind batch au: CI skips it; run with --include-ignored"]
+fn au5_current_offset_of_a_sump_pump_backup_in_a_power_cut_spme() {
+    run_case("diagnosis-extra/au5_current_offset_30mA_low_sump_pump_backup_storm_power_cut_11C_10s_spme");
+}
+
+#[test]
+#[ignore = "blind batch au: CI skips it; run with --include-ignored"]
+fn au6_unrecorded_self_heating_of_an_electric_skateboard_ride_dfn() {
+    run_case("diagnosis-extra/au6_thermal_h9_unrecorded_electric_skateboard_ride_19C_3s_2mV_dfn");
+}
+
+#[test]
+#[ignore = "blind batch au: CI skips it; run with --include-ignored"]
+fn au7_plating_and_contact_of_an_ev_charging_robot_in_frost_spme() {
+    run_case("diagnosis-extra/au7_plating_partially_reversible_and_contact_4mOhm_ev_charging_robot_frost_minus6C_4s_0p5mV_spme");
+}
+
+#[test]
+#[ignore = "blind batch au: CI skips it; run with --include-ignored"]
+fn au8_sei_electron_migration_of_a_motorcycle_taxi_day_spm() {
+    run_case("diagnosis-extra/au8_sei_electron_migration_x5000_motorcycle_taxi_day_part_top_ups_33C_10s_0p7mV_spm");
+}
