@@ -369,7 +369,9 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
         .collect();
     progress.finish_and_clear();
     let refitted = outcomes.iter().filter(|c| c.fit.is_some()).count();
-    timing.push(format!("{refitted} candidates refitted {:.0} s", singles_start.elapsed().as_secs_f64()));
+    if refitted > 0 {
+        timing.push(format!("{refitted} candidates refitted {:.0} s", singles_start.elapsed().as_secs_f64()));
+    }
     heat_balance::read_only_if_unpredicted(&mut outcomes, &[], &baseline, &data);
     // Named candidates first, compared with one another at common effective points; the
     // others by their gain over the user's model.
@@ -457,7 +459,9 @@ pub fn diagnose(data: &Recording, base: &ParameterSet, options: &DiagnoseOptions
     if data.temperature.is_some() {
         notes.push(format!("The model runs at (or starts from) the recording's first temperature, {:.2} K.", base.thermal.ambient_temperature));
     }
-    notes.push(format!("Time: {}; {:.0} s in all.", timing.join(", "), start.elapsed().as_secs_f64()));
+    if !timing.is_empty() {
+        notes.push(format!("Time: {}; {:.0} s in all.", timing.join(", "), start.elapsed().as_secs_f64()));
+    }
     let mut diagnosis = Diagnosis {
         model: options.spec.to_string(),
         spec: options.spec,
