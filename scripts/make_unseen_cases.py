@@ -8555,6 +8555,22 @@ def jetski_rental_steps(seed, rides):
     return steps
 
 
+# Accept words shared by batches as, at and au (one effect, one list, as the judge reads them).
+composite_words = ["silicon", "composite", "blend", "second phase", "two-phase", "two phase", "open-circuit potential",
+                   "open circuit potential", "OCP"]
+contact_words = ["contact", "series resistance", "ohmic"]
+delay_words = ["delay", "latency", "misalign", "synchron", "time shift", "time offset", "timestamp", "time stamp", "time lag",
+               "time base", "time axis"]
+gain_words = ["current sensor", "current measurement", "current channel", "current gain", "current scale", "calibration", "gain"]
+kinetic_words = ["kinetic", "exchange", "charge-transfer", "charge transfer", "reaction rate"]
+lithium_words = ["inventory", "lithium loss", "lithium lost", "cyclable"]
+offset_words = ["current offset", "current bias", "current sensor", "current channel", "current measurement", "current zero",
+                "zero offset", "leak", "self-discharge", "self discharge"]
+particle_words = ["particle", "solid diffusiv", "solid-phase diffusiv"]
+thermal_words = ["thermal", "self-heating", "heat"]
+unrelaxed_words = ["unrelaxed", "not relaxed", "recording condition", "history", "relaxing", "part-way", "partway", "not at rest"]
+
+
 def batch_as(root, only=None):
     """Forty-fourth batch (key "as"), made blind (a helper session that did not read the diagnosis code).
     The Chen 2020 cell throughout, ambients -8, 0, 8, 15, 18, 26, 31 and 43 degC, each of the three models
@@ -8582,13 +8598,6 @@ def batch_as(root, only=None):
     only those cases."""
     at = at_temperature
     run = lambda case: only is None or case in only
-    lithium_words = ["inventory", "lithium loss", "lithium lost", "cyclable"]
-    kinetic_words = ["kinetic", "exchange", "charge-transfer", "charge transfer", "reaction rate"]
-    contact_words = ["contact", "series resistance", "ohmic"]
-    thermal_words = ["thermal", "self-heating", "heat"]
-    unrelaxed_words = ["unrelaxed", "not relaxed", "recording condition", "history", "relaxing", "part-way", "partway", "not at rest"]
-    offset_words = ["current offset", "current bias", "current sensor", "current channel", "current measurement", "current zero",
-                    "zero offset", "leak", "self-discharge", "self discharge"]
     # as1: control, a legged inspection robot's patrol, 18 degC, 0.5 s, 0.6 mV, SPMe
     if run("as1"):
         p = at(chen(), 18)
@@ -8997,14 +9006,6 @@ def batch_at(root, only=None):
     replay on the recorded current. `only` (a set of case keys, "at1" ...) makes only those cases."""
     at = at_temperature
     run = lambda case: only is None or case in only
-    lithium_words = ["inventory", "lithium loss", "lithium lost", "cyclable"]
-    particle_words = ["particle", "solid diffusiv", "solid-phase diffusiv"]
-    contact_words = ["contact", "series resistance", "ohmic"]
-    thermal_words = ["thermal", "self-heating", "heat"]
-    gain_words = ["current sensor", "current measurement", "current channel", "current gain", "current scale", "calibration", "gain"]
-    composite_words = ["silicon", "composite", "blend", "second phase", "two-phase", "two phase", "open-circuit potential",
-                       "open circuit potential", "OCP"]
-    unrelaxed_words = ["unrelaxed", "not relaxed", "recording condition", "history", "relaxing", "part-way", "partway", "not at rest"]
     # at1: control, a wind turbine's pitch-system backup battery through grid-loss drills, -4 degC, 2 s, 1 mV, DFN
     if run("at1"):
         p = at(chen(), -4)
@@ -9427,15 +9428,6 @@ def batch_au(root, only=None):
     only those cases."""
     at = at_temperature
     run = lambda case: only is None or case in only
-    lithium_words = ["inventory", "lithium loss", "lithium lost", "cyclable"]
-    kinetic_words = ["kinetic", "exchange", "charge-transfer", "charge transfer", "reaction rate"]
-    contact_words = ["contact", "series resistance", "ohmic"]
-    thermal_words = ["thermal", "self-heating", "heat"]
-    unrelaxed_words = ["unrelaxed", "not relaxed", "recording condition", "history", "relaxing", "part-way", "partway", "not at rest"]
-    offset_words = ["current offset", "current bias", "current sensor", "current channel", "current measurement", "current zero",
-                    "zero offset", "leak", "self-discharge", "self discharge"]
-    delay_words = ["delay", "latency", "misalign", "synchron", "time shift", "time offset", "timestamp", "time stamp", "time lag",
-                   "time base", "time axis"]
     # au1: control, a laptop's working day with a charge at lunch, 27 degC, 8 s, 0.5 mV, SPM
     if run("au1"):
         p = at(chen(), 27)
