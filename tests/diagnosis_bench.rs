@@ -1902,7 +1902,7 @@ fn at7_unrelaxed_start_and_lithium_loss_on_a_sailing_yacht_dfn() {
 }
 
 #[test]
-#[ignore = "fails (open): SEI growth (solvent diffusion x900) with positive diffusivity x0.5 over 12 delivery rounds in 16.7 h, SPMe, 10 s logging: no verdict within the blind judge's 900 s"]
+#[ignore = "open (slow): SEI growth (solvent diffusion x900) with positive diffusivity x0.5 over 12 delivery rounds in 16.7 h, SPMe, 10 s logging; alone on the machine round 1 names both within the judge's 900 s (fortieth session, judge yes), 79 % of it screening 313 pairs; the later rounds run past it and the whole diagnosis has not been run in the harness"]
 fn at8_sei_growth_and_slow_positive_diffusion_of_a_hospital_robot_spme() {
     run_case("diagnosis-extra/at8_sei_solvent_diffusion_x900_and_diffusivity_positive_x0p5_hospital_delivery_robot_12_rounds_22C_10s_0p5mV_spme");
 }
